@@ -1,0 +1,82 @@
+#pragma once
+/// The sensor side of one robot, as behaviors and events. A controller sees only this.
+
+#include "frob/event.hpp"
+#include "frob/robot_values.hpp"
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace frob {
+
+/// Gives the sensor readings at an instant. A simulator returns the frame it refreshed this step;
+/// a real robot's driver would return its latest readings; tests compute them from time.
+using FrameSource = std::function<const SensorFrame&(const Instant&)>;
+
+/// Sensors given as plain functions of time (seconds), for testing without a simulator.
+struct ScriptedSensors {
+  std::function<double(double t, int sonar)> sonar = [](double, int) { return 6.5; };
+  std::function<Pose2(double t)> odometry = [](double) { return Pose2{}; };
+  std::function<double(double t)> velocity = [](double) { return 0.0; };
+  std::function<std::vector<BumperHit>(double t)> bumps = [](double) { return std::vector<BumperHit>{}; };
+  std::function<std::vector<char>(double t)> keys = [](double) { return std::vector<char>{}; };
+};
+
+/// A ring of `count` sonars evenly spaced counter-clockwise from the front (16 on a Nomad 200).
+[[nodiscard]] RobotSpec nomadSpec(int count = 16);
+
+/// One robot's sensors. Cheap to copy; copies share the same sensor behaviors, which are read once
+/// per instant however many parts of a controller use them.
+class Robot {
+ public:
+  /// A robot of shape `spec` whose sensors read the frames `source` gives.
+  Robot(RobotSpec spec, FrameSource source);
+  /// A robot whose sensors follow `sensors` as functions of time.
+  Robot(RobotSpec spec, ScriptedSensors sensors);
+
+  /// Body radius and sonar layout.
+  [[nodiscard]] const RobotSpec& spec() const;
+  /// Range of sonar `i` (0 = front, counter-clockwise), metres. Index taken modulo the ring size.
+  [[nodiscard]] Behavior<double> sonar(int i) const;
+  /// All sonar ranges, metres.
+  [[nodiscard]] Behavior<std::vector<double>> sonars() const;
+  /// The index of the sonar pointing nearest to `angle` (radians from the heading).
+  [[nodiscard]] int sonarNearest(double angle) const;
+  /// Position as the robot believes it (odometry), metres.
+  [[nodiscard]] Behavior<Point2> place() const;
+  /// Heading as the robot believes it, radians.
+  [[nodiscard]] Behavior<double> orientation() const;
+  /// Measured forward speed, m/s.
+  [[nodiscard]] Behavior<double> velocity() const;
+  /// Bumper contacts as they begin.
+  [[nodiscard]] Event<BumperHit> bumper() const;
+  /// Key presses (scripted in headless runs).
+  [[nodiscard]] Event<char> keyboard() const;
+
+ private:
+  struct Sensors;
+  std::shared_ptr<const Sensors> sensors_;
+};
+
+/// The paper's sensor functions, in C++.
+[[nodiscard]] inline Behavior<double> sonar(const Robot& r, int i) { return r.sonar(i); }
+[[nodiscard]] inline Behavior<std::vector<double>> sonars(const Robot& r) { return r.sonars(); }
+[[nodiscard]] Behavior<double> frontSonar(const Robot& r);
+[[nodiscard]] Behavior<double> leftSonar(const Robot& r);
+[[nodiscard]] Behavior<double> rightSonar(const Robot& r);
+[[nodiscard]] Behavior<double> backSonar(const Robot& r);
+[[nodiscard]] inline Behavior<Point2> place(const Robot& r) { return r.place(); }
+[[nodiscard]] inline Behavior<double> orientation(const Robot& r) { return r.orientation(); }
+[[nodiscard]] inline Behavior<double> velocity(const Robot& r) { return r.velocity(); }
+[[nodiscard]] inline Event<BumperHit> bumper(const Robot& r) { return r.bumper(); }
+[[nodiscard]] inline Event<char> keyboard(const Robot& r) { return r.keyboard(); }
+
+/// The paper's `pairB`: a wheel command from a forward speed (m/s) and a turn rate (rad/s).
+template <class F, class T>
+  requires std::convertible_to<ValueOf<F>, double> && std::convertible_to<ValueOf<T>, double>
+[[nodiscard]] Behavior<Wheels> wheels(const F& forward, const T& turn) {
+  return lift([](double f, double t) { return Wheels{f, t}; }, Behavior<double>(forward), Behavior<double>(turn));
+}
+
+}  // namespace frob
