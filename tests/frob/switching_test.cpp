@@ -1,4 +1,5 @@
 #include "frob/calculus.hpp"
+#include "frob/errors.hpp"
 #include "frob/sampling.hpp"
 #include "frob/switching.hpp"
 
@@ -57,6 +58,27 @@ TEST(Switching, ABehaviorThatSwitchesForeverRunsInBoundedMemory) {
   EXPECT_LE(most, 20);
   EXPECT_GE(last, 0.0);
   EXPECT_LE(last, 0.1 + 1e-9);
+}
+
+// Switches to a copy of itself whose event occurs at once: an endless chain within one instant.
+Behavior<double> runaway() {
+  return untilB(constant(0.0), predicate(constant(true)).map([] { return runaway(); }));
+}
+
+TEST(Switching, AnEndlessSwitchChainAtOneInstantIsReportedNotAStackOverflow) {
+  Behavior<double> b = runaway();
+  Clock clock(0.01);
+  try {
+    (void)b.at(clock.now());
+    FAIL() << "the runaway switch went unnoticed";
+  } catch (const FrobError& e) {
+    EXPECT_NE(std::string(e.what()).find("switched more than 1000 times at one instant"), std::string::npos) << e.what();
+  }
+  // A finite chain at one instant is fine: three switches, then a value.
+  Behavior<double> chain = untilB(constant(0.0), predicate(constant(true)).map([] {
+    return untilB(constant(1.0), predicate(constant(true)).map([] { return constant(2.0); }));
+  }));
+  EXPECT_EQ(chain.at(clock.advance()), 2.0);
 }
 
 }  // namespace

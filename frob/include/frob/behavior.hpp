@@ -16,6 +16,8 @@ namespace frob {
 
 template <class T>
 class Behavior;
+template <class R, class F, class... Args>
+class Pointwise;
 
 namespace detail {
 
@@ -23,6 +25,8 @@ template <class T>
 struct IsBehavior : std::false_type {};
 template <class T>
 struct IsBehavior<Behavior<T>> : std::true_type {};
+template <class R, class F, class... Args>
+struct IsBehavior<Pointwise<R, F, Args...>> : std::true_type {};
 
 template <class T>
 struct ValueOf {
@@ -32,20 +36,33 @@ template <class T>
 struct ValueOf<Behavior<T>> {
   using type = T;
 };
+template <class R, class F, class... Args>
+struct ValueOf<Pointwise<R, F, Args...>> {
+  using type = R;
+};
 
-// Eigen arithmetic returns lazy expression objects; a behavior stores the evaluated plain value.
+template <class T>
+struct IsPointwise : std::false_type {};
+template <class R, class F, class... Args>
+struct IsPointwise<Pointwise<R, F, Args...>> : std::true_type {};
+
+// What a computed value is kept as: Eigen's lazy expressions become plain vectors, pointwise
+// behavior expressions become behaviors (e.g. a behavior returned from an event's map function).
 template <class R>
 auto plain(R&& r) {
-  if constexpr (std::is_base_of_v<Eigen::EigenBase<std::remove_cvref_t<R>>, std::remove_cvref_t<R>>) {
+  using D = std::remove_cvref_t<R>;
+  if constexpr (std::is_base_of_v<Eigen::EigenBase<D>, D>) {
     return r.eval();
+  } else if constexpr (IsPointwise<D>::value) {
+    return r.behavior();
   } else {
-    return std::remove_cvref_t<R>(std::forward<R>(r));
+    return D(std::forward<R>(r));
   }
 }
 
 }  // namespace detail
 
-/// True for `Behavior<T>` (after removing references and const).
+/// True for behaviors: `Behavior<T>` and the pointwise expressions built from them.
 template <class T>
 concept BehaviorType = detail::IsBehavior<std::remove_cvref_t<T>>::value;
 
@@ -114,7 +131,8 @@ class ConstantNode final : public BehaviorNode<T> {
   T value_;
 };
 
-// One argument of a lifted function: a behavior sampled at the instant, or a plain value.
+// One argument of a lifted function: a behavior sampled at the instant, a pointwise expression
+// evaluated in place, or a plain value.
 template <class A>
 struct Arg {
   A value;
@@ -125,29 +143,32 @@ struct Arg<Behavior<T>> {
   std::shared_ptr<BehaviorNode<T>> node;
   const T& get(const Instant& now) const { return node->at(now); }
 };
+template <class R, class F, class... Args>
+struct Arg<Pointwise<R, F, Args...>> {
+  Pointwise<R, F, Args...> expr;
+  R get(const Instant& now) const { return expr.eval(now); }
+};
 
 template <class A>
 Arg<std::remove_cvref_t<A>> makeArg(A&& a) {
-  if constexpr (BehaviorType<A>) {
+  if constexpr (IsBehavior<std::remove_cvref_t<A>>::value && !IsPointwise<std::remove_cvref_t<A>>::value) {
     return {a.node()};
   } else {
     return {std::forward<A>(a)};
   }
 }
 
-template <class R, class F, class... Args>
-class LiftNode final : public BehaviorNode<R> {
+// The node a pointwise expression becomes: one node for the whole expression tree.
+template <class R, class Expr>
+class PointwiseNode final : public BehaviorNode<R> {
  public:
-  LiftNode(F f, Args... args) : f_(std::move(f)), args_(std::move(args)...) {}
+  explicit PointwiseNode(Expr e) : expr_(std::move(e)) {}
 
  protected:
-  R compute(const Instant& now) override {
-    return std::apply([&](const auto&... a) { return R(plain(std::invoke(f_, a.get(now)...))); }, args_);
-  }
+  R compute(const Instant& now) override { return expr_.eval(now); }
 
  private:
-  F f_;
-  std::tuple<Args...> args_;
+  Expr expr_;
 };
 
 class TimeNode final : public BehaviorNode<double> {
@@ -159,6 +180,43 @@ class TimeNode final : public BehaviorNode<double> {
 };
 
 }  // namespace detail
+
+/// A pointwise expression over behaviors (the result of `lift` and of operators on behaviors),
+/// not yet a node of the graph: it becomes one node, for the whole expression, when stored in a
+/// Behavior<R>. Name a Behavior to share a value between several expressions.
+template <class R, class F, class... Args>
+class Pointwise {
+ public:
+  using value_type = R;
+
+  Pointwise(F f, Args... args) : f_(std::move(f)), args_(std::move(args)...) {}
+  /// The value at instant `now` (evaluated afresh each call; a Behavior memoises it).
+  R eval(const Instant& now) const {
+    return std::apply([&](const auto&... a) { return R(detail::plain(std::invoke(f_, a.get(now)...))); }, args_);
+  }
+  /// This expression as one node of the graph.
+  [[nodiscard]] Behavior<R> behavior() const {
+    return Behavior<R>(std::make_shared<detail::PointwiseNode<R, Pointwise>>(*this));
+  }
+  /// Implicit conversion, so that `Behavior<double> b = x + y;` reads naturally.
+  operator Behavior<R>() const { return behavior(); }  // NOLINT(google-explicit-constructor)
+  /// The value at instant `now`, as for a Behavior.
+  R at(const Instant& now) const { return eval(now); }
+
+ private:
+  F f_;
+  std::tuple<Args...> args_;
+};
+
+/// The behavior a behavior-like value stands for: itself, or its pointwise expression as one node.
+template <BehaviorType B>
+[[nodiscard]] Behavior<ValueOf<B>> toBehavior(const B& b) {
+  if constexpr (detail::IsPointwise<std::remove_cvref_t<B>>::value) {
+    return b.behavior();
+  } else {
+    return b;
+  }
+}
 
 template <class T>
 template <class U>
@@ -175,12 +233,13 @@ template <class T>
 [[nodiscard]] inline Behavior<double> time() { return Behavior<double>(std::make_shared<detail::TimeNode>()); }
 
 /// Pointwise application of `f` to behaviors and plain values: lift(f, b1, 2.0, b3).
+/// The result is a Pointwise expression; it becomes a node when stored in a Behavior.
 template <class F, class... Args>
   requires std::invocable<F&, const ValueOf<Args>&...>
 [[nodiscard]] auto lift(F f, Args&&... args) {
   using R = Stored<std::invoke_result_t<F&, const ValueOf<Args>&...>>;
-  using Node = detail::LiftNode<R, F, detail::Arg<std::remove_cvref_t<Args>>...>;
-  return Behavior<R>(std::make_shared<Node>(std::move(f), detail::makeArg(std::forward<Args>(args))...));
+  return Pointwise<R, F, detail::Arg<std::remove_cvref_t<Args>>...>(std::move(f),
+                                                                     detail::makeArg(std::forward<Args>(args))...);
 }
 
 // Pointwise operators mixing Behavior<T> and plain values. Each is constrained on its value types,
@@ -280,24 +339,27 @@ template <class A, class B>
 }
 
 /// Pointwise length of a vector behavior.
-[[nodiscard]] inline Behavior<double> norm(const Behavior<Vec2>& v) {
+template <BehaviorType V>
+[[nodiscard]] auto norm(const V& v) {
   return lift([](const Vec2& x) { return x.norm(); }, v);
 }
 
 /// Pointwise distance between two points (behaviors or values).
 template <class A, class B>
   requires BehaviorOperands<A, B>
-[[nodiscard]] Behavior<double> distance(const A& a, const B& b) {
+[[nodiscard]] auto distance(const A& a, const B& b) {
   return lift([](const Point2& p, const Point2& q) { return (p - q).norm(); }, a, b);
 }
 
 /// Pointwise direction of a vector behavior, radians in (-pi, pi].
-[[nodiscard]] inline Behavior<double> heading(const Behavior<Vec2>& v) {
+template <BehaviorType V>
+[[nodiscard]] auto heading(const V& v) {
   return lift([](const Vec2& x) { return std::atan2(x.y(), x.x()); }, v);
 }
 
 /// Pointwise angle wrapped to (-pi, pi].
-[[nodiscard]] inline Behavior<double> wrapAngle(const Behavior<double>& a) {
+template <BehaviorType A>
+[[nodiscard]] auto wrapAngle(const A& a) {
   return lift([](double x) { return wrapAngle(x); }, a);
 }
 

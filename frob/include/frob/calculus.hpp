@@ -83,27 +83,31 @@ class AtExtremumNode final : public BehaviorNode<T> {
 }  // namespace detail
 
 /// The integral of `b` over time since this behavior started (trapezoidal rule); numbers and Vec2.
-template <class T>
-[[nodiscard]] Behavior<T> integral(const Behavior<T>& b) {
-  return Behavior<T>(std::make_shared<detail::IntegralNode<T>>(b.node()));
+template <BehaviorType B>
+[[nodiscard]] Behavior<ValueOf<B>> integral(const B& b) {
+  using T = ValueOf<B>;
+  return Behavior<T>(std::make_shared<detail::IntegralNode<T>>(toBehavior(b).node()));
 }
 
 /// The rate of change of `b` (backward difference over one step); zero at the first sample.
-template <class T>
-[[nodiscard]] Behavior<T> derivative(const Behavior<T>& b) {
-  return Behavior<T>(std::make_shared<detail::DerivativeNode<T>>(b.node()));
+template <BehaviorType B>
+[[nodiscard]] Behavior<ValueOf<B>> derivative(const B& b) {
+  using T = ValueOf<B>;
+  return Behavior<T>(std::make_shared<detail::DerivativeNode<T>>(toBehavior(b).node()));
 }
 
 /// The value of `b` at the instant `key` was smallest since this behavior started.
-template <class K, class T>
-[[nodiscard]] Behavior<T> atMin(const Behavior<K>& key, const Behavior<T>& b) {
-  return Behavior<T>(std::make_shared<detail::AtExtremumNode<K, T>>(key.node(), b.node(), false));
+template <BehaviorType K, BehaviorType B>
+[[nodiscard]] Behavior<ValueOf<B>> atMin(const K& key, const B& b) {
+  using Node = detail::AtExtremumNode<ValueOf<K>, ValueOf<B>>;
+  return Behavior<ValueOf<B>>(std::make_shared<Node>(toBehavior(key).node(), toBehavior(b).node(), false));
 }
 
 /// The value of `b` at the instant `key` was largest since this behavior started.
-template <class K, class T>
-[[nodiscard]] Behavior<T> atMax(const Behavior<K>& key, const Behavior<T>& b) {
-  return Behavior<T>(std::make_shared<detail::AtExtremumNode<K, T>>(key.node(), b.node(), true));
+template <BehaviorType K, BehaviorType B>
+[[nodiscard]] Behavior<ValueOf<B>> atMax(const K& key, const B& b) {
+  using Node = detail::AtExtremumNode<ValueOf<K>, ValueOf<B>>;
+  return Behavior<ValueOf<B>>(std::make_shared<Node>(toBehavior(key).node(), toBehavior(b).node(), true));
 }
 
 }  // namespace frob

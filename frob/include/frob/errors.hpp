@@ -59,10 +59,10 @@ class CheckFiniteNode final : public BehaviorNode<T> {
 
 /// `b`, except that sampling a non-finite value (NaN, infinity) throws FrobError naming `what`
 /// and the simulated time, so that a NaN is never hidden.
-template <class T>
+template <BehaviorType B, class T = ValueOf<B>>
   requires requires(const T& v) { isFinite(v); }
-[[nodiscard]] Behavior<T> checkFinite(const Behavior<T>& b, std::string what) {
-  return Behavior<T>(std::make_shared<detail::CheckFiniteNode<T>>(b.node(), std::move(what)));
+[[nodiscard]] Behavior<T> checkFinite(const B& b, std::string what) {
+  return Behavior<T>(std::make_shared<detail::CheckFiniteNode<T>>(toBehavior(b).node(), std::move(what)));
 }
 
 }  // namespace frob

@@ -255,7 +255,7 @@ template <class T, class B>
   requires BehaviorType<B>
 [[nodiscard]] Event<std::pair<T, ValueOf<B>>> snapshot(const Event<T>& e, const B& b) {
   using U = ValueOf<B>;
-  return Event<std::pair<T, U>>(std::make_shared<detail::SnapshotNode<T, U>>(e.node(), b.node()));
+  return Event<std::pair<T, U>>(std::make_shared<detail::SnapshotNode<T, U>>(e.node(), toBehavior(b).node()));
 }
 
 /// Occurs once, `seconds` after it starts (its first sample).

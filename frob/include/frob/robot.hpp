@@ -75,8 +75,8 @@ class Robot {
 /// The paper's `pairB`: a wheel command from a forward speed (m/s) and a turn rate (rad/s).
 template <class F, class T>
   requires std::convertible_to<ValueOf<F>, double> && std::convertible_to<ValueOf<T>, double>
-[[nodiscard]] Behavior<Wheels> wheels(const F& forward, const T& turn) {
-  return lift([](double f, double t) { return Wheels{f, t}; }, Behavior<double>(forward), Behavior<double>(turn));
+[[nodiscard]] auto wheels(const F& forward, const T& turn) {
+  return lift([](double f, double t) { return Wheels{f, t}; }, forward, turn);
 }
 
 }  // namespace frob

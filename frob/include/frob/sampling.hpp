@@ -10,8 +10,9 @@
 namespace frob {
 
 /// `b` sampled at t = 0, dt, 2 dt, ... for `steps` instants, on a fresh clock.
-template <class T>
-[[nodiscard]] std::vector<T> sample(const Behavior<T>& b, double dt, std::int64_t steps) {
+template <BehaviorType B, class T = ValueOf<B>>
+[[nodiscard]] std::vector<T> sample(const B& behavior, double dt, std::int64_t steps) {
+  Behavior<T> b = toBehavior(behavior);
   Clock clock(dt);
   std::vector<T> out;
   out.reserve(static_cast<std::size_t>(steps));

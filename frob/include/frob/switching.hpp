@@ -6,6 +6,17 @@
 namespace frob {
 namespace detail {
 
+// Counts switches nested within one instant on this thread; throws FrobError when a behavior
+// switches endlessly at one instant (each switch immediately firing the next) instead of
+// overflowing the stack.
+class SwitchChainGuard {
+ public:
+  SwitchChainGuard();
+  ~SwitchChainGuard();
+  SwitchChainGuard(const SwitchChainGuard&) = delete;
+  SwitchChainGuard& operator=(const SwitchChainGuard&) = delete;
+};
+
 // Follows `b` until `e` first occurs, then the behavior it carries, started at that instant.
 // With `repeat`, switches again at every occurrence (switcher).
 template <class T>
@@ -18,15 +29,17 @@ class SwitchNode final : public BehaviorNode<T> {
 
  protected:
   T compute(const Instant& now) override {
+    // A finished untilB inside only forwards: skip it, so a behavior that switches forever
+    // (untilB of untilB of ...) stays a short chain and old nodes are freed.
+    while (inner_ != nullptr && !inner_->e_) follow(inner_->b_);
     if (e_) {
       if (const std::optional<Behavior<T>>& next = e_->at(now)) {
         follow(next->node());
         if (!repeat_) e_.reset();  // release the event so that its graph can be freed
+        SwitchChainGuard guard;    // the new behavior may switch again at this instant, but not forever
+        return b_->at(now);
       }
     }
-    // A finished untilB inside only forwards: skip it, so a behavior that switches forever
-    // (untilB of untilB of ...) stays a short chain and old nodes are freed.
-    while (inner_ != nullptr && !inner_->e_) follow(inner_->b_);
     return b_->at(now);
   }
 
@@ -62,15 +75,15 @@ class HoldNode final : public BehaviorNode<T> {
 
 /// The paper's `b 'untilB' e`: follows `b` until `e` first occurs, then the behavior it carries,
 /// which starts at that instant (its integrals and timers begin there).
-template <class T>
-[[nodiscard]] Behavior<T> untilB(const Behavior<T>& b, const Event<Behavior<T>>& e) {
-  return Behavior<T>(std::make_shared<detail::SwitchNode<T>>(b.node(), e.node(), false));
+template <BehaviorType B, class T = ValueOf<B>>
+[[nodiscard]] Behavior<T> untilB(const B& b, const Event<Behavior<T>>& e) {
+  return Behavior<T>(std::make_shared<detail::SwitchNode<T>>(toBehavior(b).node(), e.node(), false));
 }
 
 /// Follows `b`, then at every occurrence of `e` the behavior it carries, started at that instant.
-template <class T>
-[[nodiscard]] Behavior<T> switcher(const Behavior<T>& b, const Event<Behavior<T>>& e) {
-  return Behavior<T>(std::make_shared<detail::SwitchNode<T>>(b.node(), e.node(), true));
+template <BehaviorType B, class T = ValueOf<B>>
+[[nodiscard]] Behavior<T> switcher(const B& b, const Event<Behavior<T>>& e) {
+  return Behavior<T>(std::make_shared<detail::SwitchNode<T>>(toBehavior(b).node(), e.node(), true));
 }
 
 /// The paper's `stepper`: `init` until `e` occurs, then the value of its latest occurrence.

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <memory>
 #include <optional>
+#include <type_traits>
 
 namespace frob {
 
@@ -31,18 +32,28 @@ class BehaviorNode : public NodeBase {
  public:
   const T& at(const Instant& now) {
     if (stamp_ != now.id) {
-      value_.emplace(compute(now));
+      if constexpr (kPlain) {
+        value_ = compute(now);
+      } else {
+        value_.emplace(compute(now));
+      }
       stamp_ = now.id;
     }
-    return *value_;
+    if constexpr (kPlain) {
+      return value_;
+    } else {
+      return *value_;
+    }
   }
 
  protected:
   virtual T compute(const Instant& now) = 0;
 
  private:
+  // Values that can be default-constructed and assigned are kept directly (cheaper per step).
+  static constexpr bool kPlain = std::is_default_constructible_v<T> && std::is_move_assignable_v<T>;
   std::uint64_t stamp_ = 0;
-  std::optional<T> value_;
+  std::conditional_t<kPlain, T, std::optional<T>> value_{};
 };
 
 // An event node: at each instant, at most one occurrence carrying a T.
