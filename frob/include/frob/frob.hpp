@@ -12,3 +12,6 @@
 #include "frob/robot_values.hpp"
 #include "frob/sampling.hpp"
 #include "frob/switching.hpp"
+#include "frob/task.hpp"
+#include "frob/task_transformers.hpp"
+#include "frob/parallel.hpp"

@@ -1,6 +1,7 @@
 #pragma once
 /// The sensor side of one robot, as behaviors and events. A controller sees only this.
 
+#include "frob/debug.hpp"
 #include "frob/event.hpp"
 #include "frob/robot_values.hpp"
 
@@ -53,10 +54,13 @@ class Robot {
   [[nodiscard]] Event<BumperHit> bumper() const;
   /// Key presses (scripted in headless runs).
   [[nodiscard]] Event<char> keyboard() const;
+  /// Where this robot's tasks publish pictures and their timeline (shared by all copies).
+  [[nodiscard]] const std::shared_ptr<DebugChannel>& debugChannel() const { return debug_; }
 
  private:
   struct Sensors;
   std::shared_ptr<const Sensors> sensors_;
+  std::shared_ptr<DebugChannel> debug_ = std::make_shared<DebugChannel>();
 };
 
 /// The paper's sensor functions, in C++.
