@@ -178,10 +178,14 @@ template <class F, class A, class B>
 [[nodiscard]] Task<A, B> withFilter(F f, Task<A, B> t, std::source_location loc = std::source_location::current()) {
   std::string name = "withFilter(" + t.name() + ")";
   std::function<Behavior<A>(Behavior<A>)> filter;
-  if constexpr (std::invocable<F&, const A&>) {
-    filter = [f](Behavior<A> b) { return Behavior<A>(lift(f, b)); };
-  } else {
+  // A function of behaviors is tried first: a function of values would also accept a Behavior
+  // argument's implicit lifting the other way round.
+  if constexpr (requires(F& g, Behavior<A> b) {
+                  { std::invoke(g, b) } -> BehaviorType;
+                }) {
     filter = [f](Behavior<A> b) { return toBehavior(std::invoke(f, std::move(b))); };
+  } else {
+    filter = [f](Behavior<A> b) { return Behavior<A>(lift(f, b)); };
   }
   return detail::scoped(std::move(t), [filter](detail::RunContext<A>& ctx) {
            return std::make_unique<detail::ScopeEntry<std::function<Behavior<A>(Behavior<A>)>>>(ctx.filters, filter);
