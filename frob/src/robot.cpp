@@ -21,11 +21,10 @@ class FrameNode final : public detail::BehaviorNode<const SensorFrame*> {
   FrameSource source_;
 };
 
-// Reads one field of the frame.
-template <class T, class F>
-Behavior<T> field(const Behavior<const SensorFrame*>& frame, F f) {
-  return lift([f](const SensorFrame* s) { return T(f(*s)); }, frame);
-}
+double sonarAt(const SensorFrame& f, std::size_t i) { return f.sonar.at(i); }
+Point2 placeOf(const SensorFrame& f, std::size_t) { return f.odometry.position; }
+double headingOf(const SensorFrame& f, std::size_t) { return f.odometry.heading; }
+double velocityOf(const SensorFrame& f, std::size_t) { return f.velocity; }
 
 // The first item of a per-step list in the frame, as an event.
 template <class T>
@@ -67,13 +66,15 @@ FrameSource scriptedSource(const RobotSpec& spec, ScriptedSensors s) {
 
 struct Robot::Sensors {
   RobotSpec spec;
-  std::vector<Behavior<double>> sonar;
+  Behavior<const SensorFrame*> frame;
   Behavior<std::vector<double>> sonars;
-  Behavior<Point2> place;
-  Behavior<double> orientation;
-  Behavior<double> velocity;
   Event<BumperHit> bumper;
   Event<char> keyboard;
+
+  template <class T>
+  Reading<T> read(T (*field)(const SensorFrame&, std::size_t), std::size_t index = 0) const {
+    return Reading<T>(detail::FrameField<T>{field, index}, detail::Arg<Behavior<const SensorFrame*>>{frame.node()});
+  }
 };
 
 RobotSpec nomadSpec(int count) {
@@ -87,18 +88,11 @@ Robot::Robot(RobotSpec spec, FrameSource source) {
   FROB_ASSERT(!spec.sonarAngles.empty(), "Robot: the spec has no sonars");
   FROB_ASSERT(static_cast<bool>(source), "Robot: the frame source is empty");
   Behavior<const SensorFrame*> frame(std::make_shared<FrameNode>(std::move(source)));
-  std::vector<Behavior<double>> sonar;
-  for (std::size_t i = 0; i < spec.sonarAngles.size(); ++i) {
-    sonar.push_back(field<double>(frame, [i](const SensorFrame& s) { return s.sonar.at(i); }));
-  }
   auto frameNode = frame.node();
   sensors_ = std::make_shared<const Sensors>(Sensors{
       .spec = std::move(spec),
-      .sonar = std::move(sonar),
-      .sonars = field<std::vector<double>>(frame, [](const SensorFrame& s) { return s.sonar; }),
-      .place = field<Point2>(frame, [](const SensorFrame& s) { return s.odometry.position; }),
-      .orientation = field<double>(frame, [](const SensorFrame& s) { return s.odometry.heading; }),
-      .velocity = field<double>(frame, [](const SensorFrame& s) { return s.velocity; }),
+      .frame = frame,
+      .sonars = lift([](const SensorFrame* s) { return s->sonar; }, frame),
       .bumper = Event<BumperHit>(std::make_shared<FrameListEvent<BumperHit>>(frameNode, &SensorFrame::bumps)),
       .keyboard = Event<char>(std::make_shared<FrameListEvent<char>>(frameNode, &SensorFrame::keys)),
   });
@@ -108,9 +102,9 @@ Robot::Robot(RobotSpec spec, ScriptedSensors sensors) : Robot(spec, scriptedSour
 
 const RobotSpec& Robot::spec() const { return sensors_->spec; }
 
-Behavior<double> Robot::sonar(int i) const {
-  int n = static_cast<int>(sensors_->sonar.size());
-  return sensors_->sonar[static_cast<std::size_t>(((i % n) + n) % n)];
+Reading<double> Robot::sonar(int i) const {
+  int n = static_cast<int>(sensors_->spec.sonarAngles.size());
+  return sensors_->read(&sonarAt, static_cast<std::size_t>(((i % n) + n) % n));
 }
 
 Behavior<std::vector<double>> Robot::sonars() const { return sensors_->sonars; }
@@ -127,15 +121,15 @@ int Robot::sonarNearest(double angle) const {
   return best;
 }
 
-Behavior<Point2> Robot::place() const { return sensors_->place; }
-Behavior<double> Robot::orientation() const { return sensors_->orientation; }
-Behavior<double> Robot::velocity() const { return sensors_->velocity; }
+Reading<Point2> Robot::place() const { return sensors_->read(&placeOf); }
+Reading<double> Robot::orientation() const { return sensors_->read(&headingOf); }
+Reading<double> Robot::velocity() const { return sensors_->read(&velocityOf); }
 Event<BumperHit> Robot::bumper() const { return sensors_->bumper; }
 Event<char> Robot::keyboard() const { return sensors_->keyboard; }
 
-Behavior<double> frontSonar(const Robot& r) { return r.sonar(r.sonarNearest(0.0)); }
-Behavior<double> leftSonar(const Robot& r) { return r.sonar(r.sonarNearest(pi / 2)); }
-Behavior<double> rightSonar(const Robot& r) { return r.sonar(r.sonarNearest(-pi / 2)); }
-Behavior<double> backSonar(const Robot& r) { return r.sonar(r.sonarNearest(pi)); }
+Reading<double> frontSonar(const Robot& r) { return r.sonar(r.sonarNearest(0.0)); }
+Reading<double> leftSonar(const Robot& r) { return r.sonar(r.sonarNearest(pi / 2)); }
+Reading<double> rightSonar(const Robot& r) { return r.sonar(r.sonarNearest(-pi / 2)); }
+Reading<double> backSonar(const Robot& r) { return r.sonar(r.sonarNearest(pi)); }
 
 }  // namespace frob

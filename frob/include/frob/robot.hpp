@@ -24,6 +24,21 @@ struct ScriptedSensors {
   std::function<std::vector<char>(double t)> keys = [](double) { return std::vector<char>{}; };
 };
 
+namespace detail {
+// Reads one field of the robot's frame of the instant (for sonar `index` where it matters).
+template <class T>
+struct FrameField {
+  T (*read)(const SensorFrame&, std::size_t index);
+  std::size_t index = 0;
+  T operator()(const SensorFrame* frame) const { return read(*frame, index); }
+};
+}  // namespace detail
+
+/// A sensor reading: a behavior read straight from the robot's frame of the instant, which is
+/// fetched once per instant however many readings use it. Converts to Behavior<T>.
+template <class T>
+using Reading = Pointwise<T, detail::FrameField<T>, detail::Arg<Behavior<const SensorFrame*>>>;
+
 /// A ring of `count` sonars evenly spaced counter-clockwise from the front (16 on a Nomad 200).
 [[nodiscard]] RobotSpec nomadSpec(int count = 16);
 
@@ -39,17 +54,17 @@ class Robot {
   /// Body radius and sonar layout.
   [[nodiscard]] const RobotSpec& spec() const;
   /// Range of sonar `i` (0 = front, counter-clockwise), metres. Index taken modulo the ring size.
-  [[nodiscard]] Behavior<double> sonar(int i) const;
+  [[nodiscard]] Reading<double> sonar(int i) const;
   /// All sonar ranges, metres.
   [[nodiscard]] Behavior<std::vector<double>> sonars() const;
   /// The index of the sonar pointing nearest to `angle` (radians from the heading).
   [[nodiscard]] int sonarNearest(double angle) const;
   /// Position as the robot believes it (odometry), metres.
-  [[nodiscard]] Behavior<Point2> place() const;
+  [[nodiscard]] Reading<Point2> place() const;
   /// Heading as the robot believes it, radians.
-  [[nodiscard]] Behavior<double> orientation() const;
+  [[nodiscard]] Reading<double> orientation() const;
   /// Measured forward speed, m/s.
-  [[nodiscard]] Behavior<double> velocity() const;
+  [[nodiscard]] Reading<double> velocity() const;
   /// Bumper contacts as they begin.
   [[nodiscard]] Event<BumperHit> bumper() const;
   /// Key presses (scripted in headless runs).
@@ -64,15 +79,15 @@ class Robot {
 };
 
 /// The paper's sensor functions, in C++.
-[[nodiscard]] inline Behavior<double> sonar(const Robot& r, int i) { return r.sonar(i); }
+[[nodiscard]] inline Reading<double> sonar(const Robot& r, int i) { return r.sonar(i); }
 [[nodiscard]] inline Behavior<std::vector<double>> sonars(const Robot& r) { return r.sonars(); }
-[[nodiscard]] Behavior<double> frontSonar(const Robot& r);
-[[nodiscard]] Behavior<double> leftSonar(const Robot& r);
-[[nodiscard]] Behavior<double> rightSonar(const Robot& r);
-[[nodiscard]] Behavior<double> backSonar(const Robot& r);
-[[nodiscard]] inline Behavior<Point2> place(const Robot& r) { return r.place(); }
-[[nodiscard]] inline Behavior<double> orientation(const Robot& r) { return r.orientation(); }
-[[nodiscard]] inline Behavior<double> velocity(const Robot& r) { return r.velocity(); }
+[[nodiscard]] Reading<double> frontSonar(const Robot& r);
+[[nodiscard]] Reading<double> leftSonar(const Robot& r);
+[[nodiscard]] Reading<double> rightSonar(const Robot& r);
+[[nodiscard]] Reading<double> backSonar(const Robot& r);
+[[nodiscard]] inline Reading<Point2> place(const Robot& r) { return r.place(); }
+[[nodiscard]] inline Reading<double> orientation(const Robot& r) { return r.orientation(); }
+[[nodiscard]] inline Reading<double> velocity(const Robot& r) { return r.velocity(); }
 [[nodiscard]] inline Event<BumperHit> bumper(const Robot& r) { return r.bumper(); }
 [[nodiscard]] inline Event<char> keyboard(const Robot& r) { return r.keyboard(); }
 
