@@ -76,9 +76,9 @@ std::uint64_t trajectoryHash(const WorldDef& world, int steps, int threads = 1) 
 // check the trajectories by eye (frob render) before updating the constants.
 TEST(Registry, GoldenTrajectoryHashPerReferenceWorld) {
   const std::map<std::string, std::uint64_t> golden = {
-      {"empty", 0xb4d8e86b377bbfa8ULL},     {"corridor", 0x0e16f03e3ba9dc30ULL}, {"maze", 0x6b54c2c7f2319dc8ULL},
-      {"office", 0x66438899377916c7ULL},    {"obstacles", 0x7cfaabfdb5f59ba9ULL}, {"mesh", 0xa84a04508b5b7fc3ULL},
-      {"arena", 0x4ac2b4467b77e7cbULL},
+      {"empty", 0x62bbb3680c43e097ULL},     {"corridor", 0x0e16f03e3ba9dc30ULL}, {"maze", 0xa7376972f00b5d3aULL},
+      {"office", 0x66438899377916c7ULL},    {"obstacles", 0x9df2b9447fd67623ULL}, {"mesh", 0xa84a04508b5b7fc3ULL},
+      {"arena", 0xc7e5d28af12696cbULL},
   };
   for (const WorldEntry& e : referenceWorlds()) {
     const std::uint64_t h = trajectoryHash(*loadReferenceWorld(e.name), 1000);

@@ -44,15 +44,24 @@ class Rng {
   }
   // Uniform in (0, 1].
   double uniform() { return (static_cast<double>(next() >> 11) + 1.0) * 0x1.0p-53; }
-  // Standard normal (Box-Muller; one value per call, two uniforms consumed).
+  // Standard normal (Box-Muller: two uniforms give two values; the second is kept for the next call).
   double gaussian() {
+    if (hasSpare_) {
+      hasSpare_ = false;
+      return spare_;
+    }
     const double u1 = uniform(), u2 = uniform();
-    return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
+    const double r = std::sqrt(-2.0 * std::log(u1)), a = 2.0 * std::numbers::pi * u2;
+    spare_ = r * std::sin(a);
+    hasSpare_ = true;
+    return r * std::cos(a);
   }
 
  private:
   static std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
   std::uint64_t s_[4];
+  double spare_ = 0.0;
+  bool hasSpare_ = false;
 };
 
 }  // namespace frob::worlds::detail

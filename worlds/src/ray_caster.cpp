@@ -130,23 +130,25 @@ inline void hitCircle(double cx, double cy, double r, double ox, double oy, doub
 
 }  // namespace
 
-void RayCaster::testCell(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const {
+[[gnu::always_inline]] inline void RayCaster::testCell(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const {
   for (std::uint32_t k = static_.start[cell], end = static_.start[cell + 1]; k < end; ++k) {
     const std::uint32_t item = static_.items[k];
-    if (item & kPillar) {
+    if (item & kPillar) [[unlikely]] {
       const Circle& c = circles_[item & ~kPillar];
       hitCircle(c.cx, c.cy, c.r, ox, oy, ux, uy, best);
       continue;
     }
+    // Ray o + t u against segment a + v d: t = tn / denom, v = vn / denom. Compared without
+    // dividing (the sign of denom folded in) so that only an accepted hit costs a division.
     const Seg& s = segs_[item];
-    const double denom = ux * s.dy - uy * s.dx;  // cross(u, d)
-    if (denom == 0.0) continue;                  // parallel: a sonar cannot hear an edge-on wall
+    double denom = ux * s.dy - uy * s.dx;  // cross(u, d); 0 when parallel: an edge-on wall is never heard
     const double wx = s.ax - ox, wy = s.ay - oy;
-    const double t = (wx * s.dy - wy * s.dx) / denom;
-    if (!(t >= 0.0 && t < best.distance)) continue;
-    const double u = (wx * uy - wy * ux) / denom;
-    if (u < 0.0 || u > 1.0) continue;
-    best = {t, std::abs(ux * s.nx + uy * s.ny)};
+    double tn = wx * s.dy - wy * s.dx;
+    double vn = wx * uy - wy * ux;
+    const double sign = std::copysign(1.0, denom);  // exact: flips signs only, and avoids a branch
+    denom *= sign, tn *= sign, vn *= sign;
+    if (!((tn >= 0.0) & (vn >= 0.0) & (vn <= denom) & (tn < best.distance * denom))) continue;
+    best = {tn / denom, std::abs(ux * s.nx + uy * s.ny)};
   }
   for (int l = head_[cell]; l >= 0; l = links_[l].next)
     if (links_[l].robot != self) {
@@ -161,37 +163,43 @@ RayHit RayCaster::cast(const Point2& origin, const Vec2& dir, double range, int 
   for (int k : outside_)
     if (k != self) hitCircle(robots_[k].cx, robots_[k].cy, robots_[k].r, ox, oy, ux, uy, best);
 
-  // Clip [0, range] to the grid's box (slab method).
+  // Clip [0, range] to the grid's box (slab method), unless the ray starts inside it (the usual case).
+  const double ix = 1.0 / ux, iy = 1.0 / uy;  // +-inf along an axis; the slabs and steps handle it
+  const double x1 = x0_ + nx_ * cell_, y1 = y0_ + ny_ * cell_;
   double tmin = 0.0, tmax = range;
-  const double lo[2] = {x0_, y0_}, hi[2] = {x0_ + nx_ * cell_, y0_ + ny_ * cell_}, o[2] = {ox, oy}, u[2] = {ux, uy};
-  for (int a = 0; a < 2; ++a) {
-    if (u[a] == 0.0) {
-      if (o[a] < lo[a] || o[a] > hi[a]) tmax = -1;
-      continue;
+  if (!(ox >= x0_ && ox <= x1 && oy >= y0_ && oy <= y1)) [[unlikely]] {
+    if (ux != 0.0) {
+      const double a = (x0_ - ox) * ix, b = (x1 - ox) * ix;
+      tmin = std::max(tmin, std::min(a, b)), tmax = std::min(tmax, std::max(a, b));
+    } else if (ox < x0_ || ox > x1) {
+      tmax = -1.0;
     }
-    double t0 = (lo[a] - o[a]) / u[a], t1 = (hi[a] - o[a]) / u[a];
-    if (t0 > t1) std::swap(t0, t1);
-    tmin = std::max(tmin, t0), tmax = std::min(tmax, t1);
+    if (uy != 0.0) {
+      const double a = (y0_ - oy) * iy, b = (y1 - oy) * iy;
+      tmin = std::max(tmin, std::min(a, b)), tmax = std::min(tmax, std::max(a, b));
+    } else if (oy < y0_ || oy > y1) {
+      tmax = -1.0;
+    }
   }
   if (tmin <= tmax) {
     // Walk the cells the ray crosses, nearest first; stop once the best hit lies within the cell.
-    const double px = ox + tmin * ux, py = oy + tmin * uy;
-    int i = std::clamp(static_cast<int>(std::floor((px - x0_) * inv_)), 0, nx_ - 1);
-    int j = std::clamp(static_cast<int>(std::floor((py - y0_) * inv_)), 0, ny_ - 1);
+    const double px = (ox + tmin * ux - x0_) * inv_, py = (oy + tmin * uy - y0_) * inv_;  // >= 0 up to rounding
+    int i = std::min(std::max(static_cast<int>(px), 0), nx_ - 1);
+    int j = std::min(std::max(static_cast<int>(py), 0), ny_ - 1);
     const int si = ux > 0 ? 1 : -1, sj = uy > 0 ? 1 : -1;
-    const double dtx = ux != 0 ? cell_ / std::abs(ux) : INFINITY, dty = uy != 0 ? cell_ / std::abs(uy) : INFINITY;
-    double tx = ux > 0 ? (x0_ + (i + 1) * cell_ - ox) / ux : ux < 0 ? (x0_ + i * cell_ - ox) / ux : INFINITY;
-    double ty = uy > 0 ? (y0_ + (j + 1) * cell_ - oy) / uy : uy < 0 ? (y0_ + j * cell_ - oy) / uy : INFINITY;
+    const double dtx = cell_ * std::abs(ix), dty = cell_ * std::abs(iy);
+    double tx = ux > 0 ? (x0_ + (i + 1) * cell_ - ox) * ix : ux < 0 ? (x0_ + i * cell_ - ox) * ix : INFINITY;
+    double ty = uy > 0 ? (y0_ + (j + 1) * cell_ - oy) * iy : uy < 0 ? (y0_ + j * cell_ - oy) * iy : INFINITY;
     for (;;) {
       testCell(j * nx_ + i, ox, oy, ux, uy, self, best);
       const double exit = std::min(tx, ty);
       if (best.distance <= exit || exit >= tmax) break;
       if (tx < ty) {
         i += si, tx += dtx;
-        if (i < 0 || i >= nx_) break;
+        if (static_cast<unsigned>(i) >= static_cast<unsigned>(nx_)) break;
       } else {
         j += sj, ty += dty;
-        if (j < 0 || j >= ny_) break;
+        if (static_cast<unsigned>(j) >= static_cast<unsigned>(ny_)) break;
       }
     }
   }

@@ -144,10 +144,14 @@ struct Simulation::Impl : b2ContactListener {
     const SonarDef& s = d.sonar;
     for (double a : r.spec.sonarAngles) {
       r.sonarOffsets.push_back(d.radius * unitVector(a));
-      for (int k = 0; k < s.rays; ++k) {
-        const double off = s.rays == 1 ? 0.0 : s.cone * (static_cast<double>(k) / (s.rays - 1) - 0.5);
-        r.rayDirs.push_back(unitVector(a + off));
-      }
+      // Axis first, then alternately left and right moving outwards: 0, +1, -1, +2, -2 steps.
+      const double spacing = s.rays == 1 ? 0.0 : s.cone / (s.rays - 1);
+      const double centre = (s.rays - 1) / 2.0;
+      std::vector<double> offsets;
+      for (int k = 0; k < s.rays; ++k) offsets.push_back((k - centre) * spacing);
+      std::stable_sort(offsets.begin(), offsets.end(),
+                       [](double x, double y) { return std::abs(x) < std::abs(y) || (std::abs(x) == std::abs(y) && x > y); });
+      for (double off : offsets) r.rayDirs.push_back(unitVector(a + off));
     }
     r.cosCutoff = std::cos(s.specularCutoff);
     r.previous = poseOf(r.body);
@@ -206,15 +210,17 @@ struct Simulation::Impl : b2ContactListener {
     const std::size_t rays = static_cast<std::size_t>(s.rays);
     for (std::size_t j = 0; j < r.sonarOffsets.size(); ++j) {
       const Point2 origin = pose.position + rotate(r.sonarOffsets[j]);
-      double nearest = INFINITY;
+      // Rays run from the cone's axis outwards, each only as far as the nearest echo so far: a
+      // surface beyond it cannot change the reading, and the shorter walk saves most of the work.
+      double nearest = s.maxRange;
       for (std::size_t k = 0; k < rays; ++k) {
         const detail::RayHit hit =
-            caster.cast(origin, rotate(r.rayDirs[j * rays + k]), s.maxRange, static_cast<int>(i));
+            caster.cast(origin, rotate(r.rayDirs[j * rays + k]), nearest, static_cast<int>(i));
         if (hit.cosIncidence >= r.cosCutoff) nearest = std::min(nearest, hit.distance);  // else reflected away
       }
       const double noise = r.sonarRng.gaussian();  // drawn for every sonar so the stream never depends on hits
-      r.frame.sonar[j] =
-          std::isinf(nearest) ? s.maxRange : std::clamp(nearest * (1.0 + s.noise * noise), s.minRange, s.maxRange);
+      r.frame.sonar[j] = nearest >= s.maxRange ? s.maxRange
+                                               : std::clamp(nearest * (1.0 + s.noise * noise), s.minRange, s.maxRange);
     }
   }
 
