@@ -65,6 +65,22 @@ TEST(Simulation, AWallStopsARobotAndItsBumperFiresOnce) {
   EXPECT_NEAR(hits[0].angle, 0.0, 1_deg);
 }
 
+TEST(Simulation, BackingOffAndHittingAgainIsASecondContact) {
+  Simulation sim(scene(R"(
+    size = [6, 4]
+    [[robot]]
+    start = [5, 2]
+  )"));
+  int hits = 0;
+  for (int k = 0; k < 900; ++k) {
+    sim.sense();
+    hits += static_cast<int>(sim.frame(0).bumps.size());
+    const double forward = k < 300 ? 0.5 : k < 500 ? -0.3 : 0.5;  // in, out, in again
+    sim.step(std::vector<Wheels>{{.forward = forward}});
+  }
+  EXPECT_EQ(hits, 2);
+}
+
 TEST(Simulation, AFastRobotNeverTunnelsThroughAThinWall) {
   Simulation sim(scene(R"(
     size = [6, 4]
