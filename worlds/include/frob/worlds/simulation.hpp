@@ -2,6 +2,18 @@
 /// The simulated world: Box2D walls and robots, sonar rays, bumpers, odometry, scripted keys.
 /// Each step: sense() fills one SensorFrame per robot, controllers read frame(i), step() applies
 /// one Wheels per robot and advances logical time by dt. Nothing reads the wall clock.
+///
+///   Simulation sim(*loadWorld("maze.toml"), {.seed = 42});
+///   Recorder rec;
+///   std::vector<Wheels> wheels(sim.robotCount());
+///   std::vector<Picture> pictures(sim.robotCount());
+///   while (sim.time() < 60.0) {
+///     sim.sense();                                   // frames at time sim.time()
+///     for (std::size_t i = 0; i < sim.robotCount(); ++i)
+///       wheels[i] = /* sample controller i on sim.frame(i) */ Wheels{};
+///     rec.record(sim, wheels, pictures);             // true poses, frames, commands, pictures
+///     sim.step(wheels);                              // physics; time advances by dt
+///   }
 
 #include "frob/robot_values.hpp"
 #include "frob/worlds/world_def.hpp"
