@@ -195,8 +195,10 @@ class PairingReporter : public benchmark::ConsoleReporter {
   void ReportRuns(const std::vector<Run>& runs) override {
     ConsoleReporter::ReportRuns(runs);
     for (const Run& r : runs) {
+      // One figure per benchmark: the run itself, or the median when repetitions are asked for.
+      if (r.run_type == Run::RT_Aggregate && r.aggregate_name != "median") continue;
       auto rtf = r.counters.find("rtf");
-      if (rtf != r.counters.end()) rtf_[r.benchmark_name()] = rtf->second.value;
+      if (rtf != r.counters.end()) rtf_[r.run_name.str()] = rtf->second.value;
     }
   }
   void Finalize() override {
