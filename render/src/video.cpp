@@ -1,0 +1,180 @@
+#include "frob/render/video.hpp"
+
+#include "output_file.hpp"
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libavutil/error.h>
+#include <libavutil/opt.h>
+#include <libswscale/swscale.h>
+}
+
+#include <cmath>
+
+namespace frob::render {
+
+namespace {
+
+std::string avError(int code) {
+  char buf[AV_ERROR_MAX_STRING_SIZE] = {};
+  av_strerror(code, buf, sizeof buf);
+  return buf;
+}
+
+}  // namespace
+
+struct VideoWriter::Impl {
+  VideoDef def;
+  AVFormatContext* format = nullptr;
+  AVCodecContext* codec = nullptr;
+  AVStream* stream = nullptr;
+  AVFrame* frame = nullptr;
+  AVPacket* packet = nullptr;
+  SwsContext* sws = nullptr;
+  std::int64_t frames = 0;
+  bool finished = false;  // closed (successfully or not): nothing left to clean up but memory
+
+  ~Impl() {
+    release();
+    if (!finished) detail::discardPartial(def.path);
+  }
+  void release() {
+    if (format != nullptr) {
+      if (format->pb != nullptr) avio_closep(&format->pb);
+      avformat_free_context(format);
+      format = nullptr;
+    }
+    avcodec_free_context(&codec);
+    av_frame_free(&frame);
+    av_packet_free(&packet);
+    sws_freeContext(sws);
+    sws = nullptr;
+  }
+  Status fail(const std::string& what, int code) {
+    release();
+    detail::discardPartial(def.path);
+    finished = true;
+    return Status::failure("video: " + what + " for '" + def.path + "': " + avError(code));
+  }
+  // Sends `f` (nullptr: flush) to the encoder and writes every packet it gives back.
+  Status encode(const AVFrame* f) {
+    if (int err = avcodec_send_frame(codec, f); err < 0) return fail("encoding failed", err);
+    for (;;) {
+      const int err = avcodec_receive_packet(codec, packet);
+      if (err == AVERROR(EAGAIN) || err == AVERROR_EOF) return {};
+      if (err < 0) return fail("encoding failed", err);
+      av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
+      packet->stream_index = stream->index;
+      if (int w = av_interleaved_write_frame(format, packet); w < 0) return fail("writing failed", w);
+    }
+  }
+};
+
+Status validate(const VideoDef& def) {
+  if (def.width <= 0 || def.height <= 0 || def.width > 8192 || def.height > 8192) {
+    return Status::failure("video: frame size " + std::to_string(def.width) + "x" + std::to_string(def.height) +
+                           " is outside 1..8192 pixels");
+  }
+  if (def.width % 2 != 0 || def.height % 2 != 0) {
+    return Status::failure("video: H.264 in yuv420p needs an even width and height; got " + std::to_string(def.width) +
+                           "x" + std::to_string(def.height));
+  }
+  if (def.fps < 1 || def.fps > 240) return Status::failure("video: fps " + std::to_string(def.fps) + " is outside 1..240");
+  if (def.crf < 0 || def.crf > 51) return Status::failure("video: crf " + std::to_string(def.crf) + " is outside 0..51");
+  if (avcodec_find_encoder_by_name("libx264") == nullptr) {
+    return Status::failure("video: this libavcodec has no libx264 encoder (install libavcodec59 with x264)");
+  }
+  return detail::checkWritable(def.path, "video");
+}
+
+Result<VideoWriter> VideoWriter::open(const VideoDef& def) {
+  if (Status s = validate(def); !s) return s;
+  auto m = std::make_unique<Impl>();
+  m->def = def;
+  const std::string tmp = detail::partialPath(def.path);
+  // The muxer is named explicitly: the temporary's extension says nothing about the format.
+  if (int err = avformat_alloc_output_context2(&m->format, nullptr, "mp4", tmp.c_str()); err < 0) return m->fail("cannot set up MP4", err);
+  const AVCodec* x264 = avcodec_find_encoder_by_name("libx264");
+  m->stream = avformat_new_stream(m->format, nullptr);
+  m->codec = avcodec_alloc_context3(x264);
+  m->frame = av_frame_alloc();
+  m->packet = av_packet_alloc();
+  if (!m->stream || !m->codec || !m->frame || !m->packet) return m->fail("out of memory", AVERROR(ENOMEM));
+  m->codec->width = def.width;
+  m->codec->height = def.height;
+  m->codec->pix_fmt = AV_PIX_FMT_YUV420P;
+  m->codec->time_base = AVRational{1, def.fps};
+  m->codec->framerate = AVRational{def.fps, 1};
+  m->codec->gop_size = def.fps * 2;
+  if (m->format->oformat->flags & AVFMT_GLOBALHEADER) m->codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+  av_opt_set(m->codec->priv_data, "preset", def.preset.c_str(), 0);
+  av_opt_set(m->codec->priv_data, "crf", std::to_string(def.crf).c_str(), 0);
+  if (int err = avcodec_open2(m->codec, x264, nullptr); err < 0) return m->fail("cannot open the H.264 encoder", err);
+  if (int err = avcodec_parameters_from_context(m->stream->codecpar, m->codec); err < 0) return m->fail("cannot set up the stream", err);
+  m->stream->time_base = m->codec->time_base;
+  if (int err = avio_open(&m->format->pb, tmp.c_str(), AVIO_FLAG_WRITE); err < 0) return m->fail("cannot open the file", err);
+  if (int err = avformat_write_header(m->format, nullptr); err < 0) return m->fail("cannot write the header", err);
+  m->frame->format = AV_PIX_FMT_YUV420P;
+  m->frame->width = def.width;
+  m->frame->height = def.height;
+  if (int err = av_frame_get_buffer(m->frame, 0); err < 0) return m->fail("out of memory", err);
+  m->sws = sws_getContext(def.width, def.height, AV_PIX_FMT_RGBA, def.width, def.height, AV_PIX_FMT_YUV420P,
+                          SWS_BILINEAR, nullptr, nullptr, nullptr);
+  if (m->sws == nullptr) return m->fail("cannot set up colour conversion", AVERROR(EINVAL));
+  return VideoWriter(std::move(m));
+}
+
+VideoWriter::VideoWriter(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+VideoWriter::VideoWriter(VideoWriter&&) noexcept = default;
+VideoWriter& VideoWriter::operator=(VideoWriter&&) noexcept = default;
+VideoWriter::~VideoWriter() = default;
+
+std::int64_t VideoWriter::frameCount() const { return impl_->frames; }
+
+Status VideoWriter::write(const Image& image) {
+  Impl& m = *impl_;
+  if (m.finished) return Status::failure("video: '" + m.def.path + "' is already closed");
+  if (image.width != m.def.width || image.height != m.def.height) {
+    return Status::failure("video: frame of " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                           " does not match the video's " + std::to_string(m.def.width) + "x" +
+                           std::to_string(m.def.height));
+  }
+  if (int err = av_frame_make_writable(m.frame); err < 0) return m.fail("out of memory", err);
+  const std::uint8_t* src[1] = {image.rgba.data()};
+  const int stride[1] = {image.width * 4};
+  sws_scale(m.sws, src, stride, 0, image.height, m.frame->data, m.frame->linesize);
+  m.frame->pts = m.frames++;
+  return m.encode(m.frame);
+}
+
+Status VideoWriter::close() {
+  Impl& m = *impl_;
+  if (m.finished) return Status::failure("video: '" + m.def.path + "' is already closed");
+  if (Status s = m.encode(nullptr); !s) return s;
+  if (int err = av_write_trailer(m.format); err < 0) return m.fail("cannot finish the file", err);
+  if (int err = avio_closep(&m.format->pb); err < 0) return m.fail("cannot close the file", err);
+  m.release();
+  m.finished = true;
+  return detail::commitPartial(m.def.path, "video");
+}
+
+FramePicker::FramePicker(double stepSeconds, double fps) : framesPerStep_(stepSeconds * fps) {}
+
+std::int64_t FramePicker::framesBefore(std::int64_t step) const {
+  // Frames k with k / fps < step * dt; the tolerance absorbs rounding in dt * fps.
+  return static_cast<std::int64_t>(std::ceil(static_cast<double>(step) * framesPerStep_ - 1e-6));
+}
+
+int FramePicker::framesAt(std::int64_t step) const {
+  return static_cast<int>(framesBefore(step + 1) - framesBefore(step));
+}
+
+std::vector<std::int64_t> FramePicker::steps(std::int64_t stepCount) const {
+  std::vector<std::int64_t> out;
+  for (std::int64_t i = 0; i < stepCount; ++i)
+    for (int k = framesAt(i); k > 0; --k) out.push_back(i);
+  return out;
+}
+
+}  // namespace frob::render
