@@ -64,6 +64,8 @@ struct VideoWriter::Impl {
       const int err = avcodec_receive_packet(codec, packet);
       if (err == AVERROR(EAGAIN) || err == AVERROR_EOF) return {};
       if (err < 0) return fail("encoding failed", err);
+      // Every frame lasts 1/fps; without a duration the MP4's last frame would have none.
+      if (packet->duration == 0) packet->duration = 1;
       av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
       packet->stream_index = stream->index;
       if (int w = av_interleaved_write_frame(format, packet); w < 0) return fail("writing failed", w);
@@ -90,6 +92,7 @@ Status validate(const VideoDef& def) {
 
 Result<VideoWriter> VideoWriter::open(const VideoDef& def) {
   if (Status s = validate(def); !s) return s;
+  av_log_set_level(AV_LOG_ERROR);  // libx264 prints its settings at the info level
   auto m = std::make_unique<Impl>();
   m->def = def;
   const std::string tmp = detail::partialPath(def.path);
