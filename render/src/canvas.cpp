@@ -12,13 +12,49 @@ double cross(const Vec2& o, const Vec2& a, const Vec2& b) {
 }
 }  // namespace
 
+std::vector<Vec2> simplifyPolyline(std::span<const Vec2> pts, double tol) {
+  std::vector<Vec2> out;
+  if (pts.empty()) return out;
+  Vec2 anchor = pts[0], prev = anchor, dir(0, 0);
+  double reach = 0.0;  // how far along dir the kept stretch goes
+  out.push_back(anchor);
+  for (std::size_t i = 1; i < pts.size(); ++i) {
+    const Vec2& p = pts[i];
+    const Vec2 d = p - anchor;
+    if (dir.isZero()) {
+      if (d.norm() >= tol) dir = d.normalized();
+      prev = p;
+      continue;
+    }
+    const double along = d.dot(dir);
+    const double across = std::abs(dir.x() * d.y() - dir.y() * d.x());
+    if (across > tol || along < reach - tol) {
+      out.push_back(prev);
+      anchor = prev;
+      const Vec2 e = p - anchor;
+      dir = e.norm() >= 1e-12 ? Vec2(e.normalized()) : Vec2(0, 0);
+      reach = dir.isZero() ? 0.0 : e.dot(dir);
+    } else {
+      reach = std::max(reach, along);
+    }
+    prev = p;
+  }
+  if ((prev - out.back()).squaredNorm() > 0) out.push_back(prev);
+  return out;
+}
+
 Rgba8 rgba8(const Color& c, double alpha) {
   return {channel(c.r), channel(c.g), channel(c.b), channel(c.a * alpha)};
 }
 
-int Canvas::segmentsFor(double r) { return std::clamp(static_cast<int>(std::ceil(r * 0.8)), 12, 96); }
+// A chord of a circle with n segments strays r (1 - cos(pi / n)) ~ r pi^2 / (2 n^2) from it; keep
+// that under a quarter pixel. Fewer, fatter triangles matter: llvmpipe pays per triangle.
+int Canvas::segmentsFor(double r) {
+  return std::clamp(static_cast<int>(std::ceil(4.5 * std::sqrt(std::max(r, 0.0)))), 8, 128);
+}
 
 void Canvas::triangle(const Vec2& a, const Vec2& b, const Vec2& c, Rgba8 col) {
+  begin(col.a == 255 ? Mode::Opaque : Mode::Blend);
   vertex(a.x(), a.y(), col);
   vertex(b.x(), b.y(), col);
   vertex(c.x(), c.y(), col);
@@ -149,19 +185,27 @@ void Canvas::arrow(const Vec2& tail, const Vec2& tip, double width, double head,
   triangle(tip, base + n * head * 0.5, base - n * head * 0.5, col);
 }
 
-void Canvas::textured(double x0, double y0, double x1, double y1, float u0, float v0, float u1, float v1,
-                      Rgba8 col) {
-  auto v = [&](double x, double y, float u, float t) {
-    vertices_.push_back({static_cast<float>(x), static_cast<float>(y), 0.0f, u, t, col});
-  };
-  v(x0, y0, u0, v0), v(x1, y0, u1, v0), v(x1, y1, u1, v1);
-  v(x0, y0, u0, v0), v(x1, y1, u1, v1), v(x0, y1, u0, v1);
+void Canvas::text(int font, int x, int y, std::string_view s, Rgba8 col) {
+  OverlayOp op{.kind = OverlayOp::Kind::Text, .font = font, .x0 = x, .y0 = y, .text = std::string(s), .color = col};
+  std::copy(std::begin(clip_), std::end(clip_), std::begin(op.clip));
+  overlay_.push_back(std::move(op));
+}
+
+void Canvas::fill(double x0, double y0, double x1, double y1, Rgba8 col) {
+  OverlayOp op{.kind = OverlayOp::Kind::Fill,
+               .x0 = static_cast<int>(std::lround(x0)),
+               .y0 = static_cast<int>(std::lround(y0)),
+               .x1 = static_cast<int>(std::lround(x1)),
+               .y1 = static_cast<int>(std::lround(y1)),
+               .color = col};
+  std::copy(std::begin(clip_), std::end(clip_), std::begin(op.clip));
+  overlay_.push_back(std::move(op));
 }
 
 void Canvas::triangle3(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, Rgba8 col) {
+  begin(col.a == 255 ? Mode::Opaque : Mode::Blend);
   for (const Eigen::Vector3d* p : {&a, &b, &c}) {
-    vertices_.push_back({static_cast<float>(p->x()), static_cast<float>(p->y()), static_cast<float>(p->z()),
-                         whiteU_, whiteV_, col});
+    vertices_.push_back({static_cast<float>(p->x()), static_cast<float>(p->y()), static_cast<float>(p->z()), col});
   }
 }
 

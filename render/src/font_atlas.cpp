@@ -1,6 +1,5 @@
 #include "font_atlas.hpp"
 
-#include <GL/gl.h>
 #include <ft2build.h>
 #include FT_FREETYPE_H
 
@@ -31,12 +30,8 @@ Result<std::unique_ptr<FontAtlas>> FontAtlas::create(const std::string& sansFile
   FtLibrary ft;
   if (FT_Init_FreeType(&ft.lib) != 0) return Status::failure("render: FreeType could not start");
   auto atlas = std::unique_ptr<FontAtlas>(new FontAtlas());
-  // Shelf packing: glyphs left to right in rows; a 2x2 white block first for untextured geometry.
-  int x = 4, y = 1, rowHeight = 3;
-  for (int j = 1; j < 3; ++j)
-    for (int i = 1; i < 3; ++i) atlas->alpha_[j * kSize + i] = 255;
-  atlas->whiteU_ = 2.0f / kSize;
-  atlas->whiteV_ = 2.0f / kSize;
+  // Shelf packing: glyphs left to right in rows.
+  int x = 1, y = 1, rowHeight = 0;
   const std::string* files[2] = {&sansFile, &monoFile};
   for (int f = 0; f < 2; ++f) {
     FtFace face;
@@ -67,28 +62,13 @@ Result<std::unique_ptr<FontAtlas>> FontAtlas::create(const std::string& sansFile
       for (int r = 0; r < gl.h; ++r)
         for (int col = 0; col < gl.w; ++col)
           atlas->alpha_[(y + r) * kSize + x + col] = g->bitmap.buffer[r * g->bitmap.pitch + col];
-      gl.u0 = static_cast<float>(x) / kSize;
-      gl.v0 = static_cast<float>(y) / kSize;
-      gl.u1 = static_cast<float>(x + gl.w) / kSize;
-      gl.v1 = static_cast<float>(y + gl.h) / kSize;
+      gl.ax = x;
+      gl.ay = y;
       x += gl.w + 1;
       rowHeight = std::max(rowHeight, gl.h);
     }
   }
   return atlas;
-}
-
-void FontAtlas::upload() {
-  if (texture_ == 0) {
-    glGenTextures(1, &texture_);
-    glBindTexture(GL_TEXTURE_2D, texture_);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_ALPHA, kSize, kSize, 0, GL_ALPHA, GL_UNSIGNED_BYTE, alpha_.data());
-    // Glyphs are placed on whole pixels, so nearest sampling copies the FreeType bitmap exactly.
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  }
-  glBindTexture(GL_TEXTURE_2D, texture_);
 }
 
 const FontAtlas::Glyph& FontAtlas::glyph(Font font, char c) const {
@@ -108,17 +88,45 @@ double FontAtlas::width(Font font, std::string_view text) const {
 
 double FontAtlas::draw(Canvas& canvas, Font font, Vec2 pen, std::string_view text, Rgba8 col) const {
   // Whole-pixel pen positions keep glyphs crisp and the output exact.
-  int px = static_cast<int>(std::lround(pen.x()));
-  const int py = static_cast<int>(std::lround(pen.y()));
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if ((static_cast<unsigned char>(text[i]) & 0xC0) == 0x80) continue;  // one '?' per non-ASCII character
-    const Glyph& g = glyph(font, text[i]);
-    if (g.w > 0 && g.h > 0) {
-      canvas.textured(px + g.left, py - g.top, px + g.left + g.w, py - g.top + g.h, g.u0, g.v0, g.u1, g.v1, col);
+  const int px = static_cast<int>(std::lround(pen.x())), py = static_cast<int>(std::lround(pen.y()));
+  canvas.text(static_cast<int>(font), px, py, text, col);
+  return px + width(font, text);
+}
+
+namespace {
+// dst = src over dst with coverage `a` (0..255), rounded.
+inline void blend(std::uint8_t* d, const Rgba8& c, unsigned a) {
+  d[0] = static_cast<std::uint8_t>((c.r * a + d[0] * (255 - a) + 127) / 255);
+  d[1] = static_cast<std::uint8_t>((c.g * a + d[1] * (255 - a) + 127) / 255);
+  d[2] = static_cast<std::uint8_t>((c.b * a + d[2] * (255 - a) + 127) / 255);
+}
+}  // namespace
+
+void FontAtlas::composite(const std::vector<OverlayOp>& ops, std::uint8_t* rgba, int width, int height) const {
+  for (const OverlayOp& op : ops) {
+    const int cx0 = std::max(0, op.clip[0]), cy0 = std::max(0, op.clip[1]);
+    const int cx1 = std::min(width, op.clip[2]), cy1 = std::min(height, op.clip[3]);
+    if (op.kind == OverlayOp::Kind::Fill) {
+      for (int y = std::max(cy0, op.y0); y < std::min(cy1, op.y1); ++y)
+        for (int x = std::max(cx0, op.x0); x < std::min(cx1, op.x1); ++x)
+          blend(rgba + (static_cast<std::size_t>(y) * width + x) * 4, op.color, op.color.a);
+      continue;
     }
-    px += g.advance;
+    int px = op.x0;
+    for (std::size_t i = 0; i < op.text.size(); ++i) {
+      if ((static_cast<unsigned char>(op.text[i]) & 0xC0) == 0x80) continue;  // one '?' per non-ASCII character
+      const Glyph& g = glyph(static_cast<Font>(op.font), op.text[i]);
+      const int gx = px + g.left, gy = op.y0 - g.top;
+      for (int r = std::max(0, cy0 - gy); r < std::min(g.h, cy1 - gy); ++r) {
+        const std::uint8_t* src = &alpha_[static_cast<std::size_t>(g.ay + r) * kSize + g.ax];
+        std::uint8_t* dst = rgba + (static_cast<std::size_t>(gy + r) * width) * 4;
+        for (int k = std::max(0, cx0 - gx); k < std::min(g.w, cx1 - gx); ++k) {
+          if (src[k] != 0) blend(dst + static_cast<std::size_t>(gx + k) * 4, op.color, (src[k] * op.color.a + 127) / 255);
+        }
+      }
+      px += g.advance;
+    }
   }
-  return px;
 }
 
 }  // namespace frob::render::detail

@@ -20,21 +20,19 @@ class FontAtlas {
   // Loads both fonts at `pixels` size and packs their glyphs. Fails with the font file named.
   [[nodiscard]] static Result<std::unique_ptr<FontAtlas>> create(const std::string& sansFile,
                                                                  const std::string& monoFile, int pixels);
-  // Uploads the atlas as a texture of the current GL context and binds it.
-  void upload();
-  // Draws `text` with its baseline starting at `pen` (pixels, y down). Returns the end x.
+  // Queues `text` on `canvas` with its baseline starting at `pen` (pixels, y down). Returns the end x.
   double draw(Canvas& canvas, Font font, Vec2 pen, std::string_view text, Rgba8 col) const;
   [[nodiscard]] double width(Font font, std::string_view text) const;
   [[nodiscard]] int ascent(Font font) const { return faces_[static_cast<int>(font)].ascent; }
   [[nodiscard]] int lineHeight(Font font) const { return faces_[static_cast<int>(font)].lineHeight; }
-  [[nodiscard]] float whiteU() const { return whiteU_; }
-  [[nodiscard]] float whiteV() const { return whiteV_; }
+  // Composites the canvas's overlay ops onto an RGBA image (top row first), in order.
+  void composite(const std::vector<OverlayOp>& ops, std::uint8_t* rgba, int width, int height) const;
 
  private:
   struct Glyph {
     int left = 0, top = 0, w = 0, h = 0;  // bitmap placement from the pen, pixels (top: above baseline)
     int advance = 0;                       // pixels
-    float u0 = 0, v0 = 0, u1 = 0, v1 = 0;
+    int ax = 0, ay = 0;                    // top-left of its bitmap in the atlas
   };
   struct Face {
     std::array<Glyph, 96> glyphs;  // ' ' .. '~' and '?' for anything else (index 95 unused)
@@ -45,8 +43,6 @@ class FontAtlas {
   static constexpr int kSize = 512;
   std::vector<std::uint8_t> alpha_ = std::vector<std::uint8_t>(kSize * kSize, 0);
   std::array<Face, 2> faces_;
-  float whiteU_ = 0, whiteV_ = 0;
-  unsigned texture_ = 0;
 };
 
 }  // namespace frob::render::detail

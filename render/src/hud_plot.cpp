@@ -45,11 +45,11 @@ void drawHud(Canvas& c, const FontAtlas& fonts, const FrameScene& scene, const V
   double w = 0;
   for (const auto& l : lines) w = std::max(w, fonts.width(Font::Mono, l.first));
   const double x0 = vp.x + 6, y0 = vp.y + 6;
-  c.rect(x0, y0, x0 + w + 22, y0 + lh * static_cast<double>(lines.size()) + 8, rgba8(black, 0.62));
+  c.fill(x0, y0, x0 + w + 22, y0 + lh * static_cast<double>(lines.size()) + 8, rgba8(black, 0.62));
   double y = y0 + 4 + fonts.ascent(Font::Mono);
   for (const auto& [text, col] : lines) {
     // Robot lines start with a swatch of the robot's colour; the text itself stays white for contrast.
-    if (!(col == white)) c.rect(x0 + 5, y - fonts.ascent(Font::Mono) + 2, x0 + 13, y, rgba8(col));
+    if (!(col == white)) c.fill(x0 + 5, y - fonts.ascent(Font::Mono) + 2, x0 + 13, y, rgba8(col));
     fonts.draw(c, Font::Mono, {x0 + 16, y}, text, rgba8(white));
     y += lh;
   }
@@ -138,7 +138,7 @@ void drawPlots(Canvas& c, const FontAtlas& fonts, const PlotSet& plots, double n
         cmin = std::min(cmin, y), cmax = std::max(cmax, y), clast = y;
       }
       flush();
-      c.polyline(pts, 1.5, rgba8(palette::series(s, si)));
+      c.polyline(simplifyPolyline(pts, 0.4), 1.5, rgba8(palette::series(s, si)));
     }
   }
   // Time labels and the cursor.

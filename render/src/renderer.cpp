@@ -34,13 +34,19 @@ Status checkSizes(const RenderDef& def) {
   return {};
 }
 
-// Draws a vertex batch with the current matrices: one call for everything.
-void drawBatch(const std::vector<detail::Vertex>& v) {
-  if (v.empty()) return;
-  glVertexPointer(3, GL_FLOAT, sizeof(detail::Vertex), &v[0].x);
-  glTexCoordPointer(2, GL_FLOAT, sizeof(detail::Vertex), &v[0].u);
-  glColorPointer(4, GL_UNSIGNED_BYTE, sizeof(detail::Vertex), &v[0].color);
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(v.size()));
+// Draws a canvas with the current matrices, one call per run of triangles of the same mode.
+void drawBatch(const detail::Canvas& canvas) {
+  const std::vector<detail::Vertex>& v = canvas.vertices();
+  const std::vector<detail::Run>& runs = canvas.runs();
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const std::size_t first = runs[i].first, end = i + 1 < runs.size() ? runs[i + 1].first : v.size();
+    if (end == first) continue;
+    if (runs[i].mode == detail::Mode::Opaque) glDisable(GL_BLEND); else glEnable(GL_BLEND);
+    // Pointers start at the run so that Mesa uploads only this run's vertices.
+    glVertexPointer(3, GL_FLOAT, sizeof(detail::Vertex), &v[first].x);
+    glColorPointer(4, GL_UNSIGNED_BYTE, sizeof(detail::Vertex), &v[first].color);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(end - first));
+  }
 }
 
 }  // namespace
@@ -53,7 +59,7 @@ struct Renderer::Impl {
   detail::Canvas overlay;
   detail::ChaseLayers chase;
 
-  void begin();
+  void begin(const Color& clear, Image& out);
   void draw2d();
   void finish(Image& out);
 };
@@ -82,26 +88,21 @@ Result<Renderer> Renderer::create(const RenderDef& given) {
     if (!model) return model.status();
     impl->model = std::move(model.value());
   }
-  auto gl = detail::GlContext::create(def.width, def.height, def.rasterThreads);
+  auto gl = detail::GlContext::create(def.width, def.height, def.view == ViewMode::Chase, def.rasterThreads);
   if (!gl) return gl.status();
   impl->gl = std::move(gl.value());
 
-  // Fixed state: client vertex arrays, the glyph atlas always bound (white texel for plain
-  // geometry), alpha blending, and alpha writes off so frames stay opaque.
-  impl->fonts->upload();
+  // Fixed state: client vertex arrays, alpha blending (per run), alpha writes off so frames stay
+  // opaque. Text is not drawn by GL at all (see OverlayOp). A scratch buffer makes the context
+  // current for this; frames are drawn into the caller's image.
+  std::vector<std::uint8_t> scratch(static_cast<std::size_t>(def.width) * def.height * 4);
+  impl->gl->makeCurrent(scratch.data());
   glEnableClientState(GL_VERTEX_ARRAY);
-  glEnableClientState(GL_TEXTURE_COORD_ARRAY);
   glEnableClientState(GL_COLOR_ARRAY);
-  glEnable(GL_TEXTURE_2D);
-  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-  glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glDisable(GL_DITHER);
   glDisable(GL_CULL_FACE);
   glDepthFunc(GL_LEQUAL);
-  for (detail::Canvas* c : {&impl->overlay, &impl->chase.ground, &impl->chase.solid}) {
-    c->setWhiteTexel(impl->fonts->whiteU(), impl->fonts->whiteV());
-  }
   return Renderer(std::move(impl));
 }
 
@@ -112,13 +113,17 @@ Renderer::~Renderer() = default;
 
 const RenderDef& Renderer::def() const { return impl_->def; }
 
-void Renderer::Impl::begin() {
-  gl->makeCurrent();
+void Renderer::Impl::begin(const Color& bg, Image& out) {
+  // GL draws straight into the caller's image: no copy afterwards.
+  out.width = def.width;
+  out.height = def.height;
+  out.rgba.resize(static_cast<std::size_t>(def.width) * def.height * 4);
+  gl->makeCurrent(out.rgba.data());
   glViewport(0, 0, def.width, def.height);
-  const Color bg = detail::palette::background;
   glClearColor(bg.r, bg.g, bg.b, 1.0f);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  // Only the chase view has (and clears) a depth buffer: clearing is a good share of a frame's cost.
+  glClear(def.view == ViewMode::Chase ? GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT : GL_COLOR_BUFFER_BIT);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
   overlay.clear();
 }
@@ -131,15 +136,12 @@ void Renderer::Impl::draw2d() {
   glOrtho(0, def.width, def.height, 0, -1, 1);  // pixels, y down
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
-  drawBatch(overlay.vertices());
+  drawBatch(overlay);
 }
 
 void Renderer::Impl::finish(Image& out) {
   gl->finish();
-  out.width = def.width;
-  out.height = def.height;
-  out.rgba.resize(static_cast<std::size_t>(def.width) * def.height * 4);
-  std::memcpy(out.rgba.data(), gl->pixels(), out.rgba.size());
+  fonts->composite(overlay.overlay(), out.rgba.data(), out.width, out.height);
 }
 
 Image Renderer::render(const FrameScene& scene, const PlotSet& plots) {
@@ -150,14 +152,17 @@ Image Renderer::render(const FrameScene& scene, const PlotSet& plots) {
 
 void Renderer::renderInto(const FrameScene& scene, const PlotSet& plots, Image& out) {
   Impl& m = *impl_;
-  m.begin();
+  const bool topDown = m.def.view == ViewMode::TopDown;
+  m.begin(topDown ? detail::palette::floor : detail::palette::background, out);
   const detail::Panels panels = detail::layoutPanels(m.def);
+  const auto& w = panels.world;
+  m.overlay.setClip(static_cast<int>(w.x), static_cast<int>(w.y), static_cast<int>(w.x + w.w), static_cast<int>(w.y + w.h));
   if (m.def.view == ViewMode::TopDown) {
     const detail::Mapping map = detail::fitTopDown(scene.bounds, m.def.margin, panels.world);
     const detail::TextSink text = [&](const Point2& at, const std::string& s, Color col) {
       m.fonts->draw(m.overlay, detail::Font::Sans, map.map(at), s, detail::rgba8(col));
     };
-    detail::drawGround(m.overlay, *m.fonts, m.def, scene, map, true, text);
+    detail::drawGround(m.overlay, *m.fonts, m.def, scene, map, true, text, &panels.world);
   } else {
     detail::buildChase(m.chase, m.overlay, *m.fonts, m.def, scene, *m.model, panels.world);
     const auto& vp = panels.world;
@@ -171,24 +176,28 @@ void Renderer::renderInto(const FrameScene& scene, const PlotSet& plots, Image& 
     const float flip[16] = {1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     glLoadMatrixf(flip);
     glDisable(GL_DEPTH_TEST);
-    drawBatch(m.chase.ground.vertices());
+    drawBatch(m.chase.ground);
     glLoadIdentity();
     glEnable(GL_DEPTH_TEST);
-    drawBatch(m.chase.solid.vertices());
+    drawBatch(m.chase.solid);
   }
   if (m.def.hud) detail::drawHud(m.overlay, *m.fonts, scene, panels.world);
-  if (panels.plots.w > 0) detail::drawPlots(m.overlay, *m.fonts, plots, scene.time, panels.plots);
+  if (panels.plots.w > 0) {
+    const auto& p = panels.plots;
+    m.overlay.setClip(static_cast<int>(p.x), static_cast<int>(p.y), static_cast<int>(p.x + p.w), static_cast<int>(p.y + p.h));
+    detail::drawPlots(m.overlay, *m.fonts, plots, scene.time, panels.plots);
+  }
   m.draw2d();
   m.finish(out);
 }
 
 Image Renderer::renderPlots(const PlotSet& plots, double now) {
   Impl& m = *impl_;
-  m.begin();
+  Image out;
+  m.begin(white, out);
   detail::drawPlots(m.overlay, *m.fonts, plots, now,
                     {0, 0, static_cast<double>(m.def.width), static_cast<double>(m.def.height)});
   m.draw2d();
-  Image out;
   m.finish(out);
   return out;
 }

@@ -7,7 +7,6 @@ extern "C" {
 #include <libavformat/avformat.h>
 #include <libavutil/error.h>
 #include <libavutil/opt.h>
-#include <libswscale/swscale.h>
 }
 
 #include <cmath>
@@ -22,6 +21,34 @@ std::string avError(int code) {
   return buf;
 }
 
+// RGBA (top row first) to planar YUV 4:2:0, BT.601 limited range, in integers. Chroma takes the
+// mean of each 2x2 block. Several times faster than swscale's generic path for this one case.
+void rgbaToYuv420(const Image& img, AVFrame* f) {
+  const int w = img.width, h = img.height;
+  for (int y = 0; y < h; ++y) {
+    const std::uint8_t* s = img.rgba.data() + static_cast<std::size_t>(y) * w * 4;
+    std::uint8_t* yRow = f->data[0] + static_cast<std::ptrdiff_t>(y) * f->linesize[0];
+    for (int x = 0; x < w; ++x) {
+      const int r = s[4 * x], g = s[4 * x + 1], b = s[4 * x + 2];
+      yRow[x] = static_cast<std::uint8_t>(((66 * r + 129 * g + 25 * b + 128) >> 8) + 16);
+    }
+  }
+  for (int y = 0; y < h / 2; ++y) {
+    const std::uint8_t* s0 = img.rgba.data() + static_cast<std::size_t>(2 * y) * w * 4;
+    const std::uint8_t* s1 = s0 + static_cast<std::size_t>(w) * 4;
+    std::uint8_t* uRow = f->data[1] + static_cast<std::ptrdiff_t>(y) * f->linesize[1];
+    std::uint8_t* vRow = f->data[2] + static_cast<std::ptrdiff_t>(y) * f->linesize[2];
+    for (int x = 0; x < w / 2; ++x) {
+      const int i = 8 * x;
+      const int r = (s0[i] + s0[i + 4] + s1[i] + s1[i + 4] + 2) >> 2;
+      const int g = (s0[i + 1] + s0[i + 5] + s1[i + 1] + s1[i + 5] + 2) >> 2;
+      const int b = (s0[i + 2] + s0[i + 6] + s1[i + 2] + s1[i + 6] + 2) >> 2;
+      uRow[x] = static_cast<std::uint8_t>(((-38 * r - 74 * g + 112 * b + 128) >> 8) + 128);
+      vRow[x] = static_cast<std::uint8_t>(((112 * r - 94 * g - 18 * b + 128) >> 8) + 128);
+    }
+  }
+}
+
 }  // namespace
 
 struct VideoWriter::Impl {
@@ -31,7 +58,6 @@ struct VideoWriter::Impl {
   AVStream* stream = nullptr;
   AVFrame* frame = nullptr;
   AVPacket* packet = nullptr;
-  SwsContext* sws = nullptr;
   std::int64_t frames = 0;
   bool finished = false;  // closed (successfully or not): nothing left to clean up but memory
 
@@ -48,8 +74,6 @@ struct VideoWriter::Impl {
     avcodec_free_context(&codec);
     av_frame_free(&frame);
     av_packet_free(&packet);
-    sws_freeContext(sws);
-    sws = nullptr;
   }
   Status fail(const std::string& what, int code) {
     release();
@@ -110,6 +134,11 @@ Result<VideoWriter> VideoWriter::open(const VideoDef& def) {
   m->codec->time_base = AVRational{1, def.fps};
   m->codec->framerate = AVRational{def.fps, 1};
   m->codec->gop_size = def.fps * 2;
+  // What rgbaToYuv420 produces, stated so that players convert back the same way.
+  m->codec->color_range = AVCOL_RANGE_MPEG;
+  m->codec->colorspace = AVCOL_SPC_SMPTE170M;
+  m->codec->color_primaries = AVCOL_PRI_SMPTE170M;
+  m->codec->color_trc = AVCOL_TRC_SMPTE170M;
   if (m->format->oformat->flags & AVFMT_GLOBALHEADER) m->codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
   av_opt_set(m->codec->priv_data, "preset", def.preset.c_str(), 0);
   av_opt_set(m->codec->priv_data, "crf", std::to_string(def.crf).c_str(), 0);
@@ -122,9 +151,6 @@ Result<VideoWriter> VideoWriter::open(const VideoDef& def) {
   m->frame->width = def.width;
   m->frame->height = def.height;
   if (int err = av_frame_get_buffer(m->frame, 0); err < 0) return m->fail("out of memory", err);
-  m->sws = sws_getContext(def.width, def.height, AV_PIX_FMT_RGBA, def.width, def.height, AV_PIX_FMT_YUV420P,
-                          SWS_BILINEAR, nullptr, nullptr, nullptr);
-  if (m->sws == nullptr) return m->fail("cannot set up colour conversion", AVERROR(EINVAL));
   return VideoWriter(std::move(m));
 }
 
@@ -144,9 +170,7 @@ Status VideoWriter::write(const Image& image) {
                            std::to_string(m.def.height));
   }
   if (int err = av_frame_make_writable(m.frame); err < 0) return m.fail("out of memory", err);
-  const std::uint8_t* src[1] = {image.rgba.data()};
-  const int stride[1] = {image.width * 4};
-  sws_scale(m.sws, src, stride, 0, image.height, m.frame->data, m.frame->linesize);
+  rgbaToYuv420(image, m.frame);
   m.frame->pts = m.frames++;
   return m.encode(m.frame);
 }

@@ -19,16 +19,13 @@ std::string metres(double v) {
   return buf;
 }
 
-// The points of `pts` mapped to the canvas, dropping those within a pixel of the last kept one.
+// The points of `pts` mapped to the canvas and thinned to within half a pixel, so that a long
+// run's path costs a few dozen segments.
 std::vector<Vec2> mappedPath(const std::vector<Point2>& pts, const Mapping& m) {
-  std::vector<Vec2> out;
-  out.reserve(std::min<std::size_t>(pts.size(), 4096));
-  const double minStep2 = m.pixel * m.pixel * 2.25;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    const Vec2 p = m.map(pts[i]);
-    if (out.empty() || i + 1 == pts.size() || (p - out.back()).squaredNorm() >= minStep2) out.push_back(p);
-  }
-  return out;
+  std::vector<Vec2> mapped;
+  mapped.reserve(pts.size());
+  for (const Point2& p : pts) mapped.push_back(m.map(p));
+  return simplifyPolyline(mapped, 0.5 * m.pixel);
 }
 
 // Grid spacing in metres: 1 m unless lines would be closer than 12 pixels.
@@ -158,10 +155,21 @@ void drawPicture(Canvas& c, const Picture& picture, const Mapping& m, const Text
 }
 
 void drawGround(Canvas& c, const FontAtlas& fonts, const RenderDef& def, const FrameScene& scene, const Mapping& m,
-                bool bodies, const TextSink& text) {
+                bool bodies, const TextSink& text, const Viewport* clearedFloor) {
   const Bounds& b = scene.bounds;
   const Vec2 lo = m.map(b.min), hi = m.map(b.max);
-  c.rect(lo.x(), hi.y(), hi.x(), lo.y(), rgba8(palette::floor));
+  if (clearedFloor == nullptr) {
+    c.rect(lo.x(), hi.y(), hi.x(), lo.y(), rgba8(palette::floor));
+  } else {
+    // The frame was cleared to the floor colour (cheaper than a full-frame quad): paint the margins.
+    const Viewport& v = *clearedFloor;
+    const Rgba8 bg = rgba8(palette::background);
+    const double x0 = std::max(v.x, lo.x()), x1 = std::min(v.x + v.w, hi.x());
+    c.rect(v.x, v.y, v.x + v.w, std::max(v.y, hi.y()), bg);
+    c.rect(v.x, std::min(v.y + v.h, lo.y()), v.x + v.w, v.y + v.h, bg);
+    c.rect(v.x, hi.y(), x0, lo.y(), bg);
+    c.rect(x1, hi.y(), v.x + v.w, lo.y(), bg);
+  }
   if (def.grid) drawGrid(c, fonts, b, m, bodies, text);
 
   // Obstacles seen from above (the chase view also extrudes them).
@@ -190,7 +198,7 @@ void drawGround(Canvas& c, const FontAtlas& fonts, const RenderDef& def, const F
     for (std::size_t i = 0; i < scene.robots.size(); ++i) {
       const RobotView& r = scene.robots[i];
       const Color col = palette::robot(r, i);
-      c.dashed(mappedPath(r.odometryPath, m), 1.5 * m.pixel, 6 * m.pixel, 4 * m.pixel, rgba8(col, 0.75));
+      c.dashed(mappedPath(r.odometryPath, m), 1.5 * m.pixel, 12 * m.pixel, 7 * m.pixel, rgba8(col, 0.75));
       c.polyline(mappedPath(r.path, m), 2 * m.pixel, rgba8(darker(col, 0.8)));
     }
   }
