@@ -10,6 +10,10 @@ extern "C" {
 }
 
 #include <cmath>
+#include <condition_variable>
+#include <deque>
+#include <mutex>
+#include <thread>
 
 namespace frob::render {
 
@@ -51,17 +55,31 @@ void rgbaToYuv420(const Image& img, AVFrame* f) {
 
 }  // namespace
 
+// Frames are converted and encoded on a worker thread, so that rendering the next frame overlaps
+// with encoding this one. At most kQueued frames wait; their buffers are recycled.
 struct VideoWriter::Impl {
+  static constexpr std::size_t kQueued = 2;
   VideoDef def;
   AVFormatContext* format = nullptr;
   AVCodecContext* codec = nullptr;
   AVStream* stream = nullptr;
   AVFrame* frame = nullptr;
   AVPacket* packet = nullptr;
-  std::int64_t frames = 0;
-  bool finished = false;  // closed (successfully or not): nothing left to clean up but memory
+  std::int64_t frames = 0;   // accepted by write()
+  std::int64_t encoded = 0;  // sent to the encoder (worker thread)
+  bool finished = false;     // closed (successfully or not): nothing left to clean up but memory
+
+  std::thread worker;
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::deque<Image> queue;   // guarded by mutex
+  std::vector<Image> spare;  // guarded by mutex
+  Status workerStatus;       // guarded by mutex: the first encoding error
+  bool stopping = false;     // guarded by mutex
+  bool dropQueued = false;   // guarded by mutex: stop without encoding what waits
 
   ~Impl() {
+    stopWorker(true);
     release();
     if (!finished) detail::discardPartial(def.path);
   }
@@ -75,24 +93,64 @@ struct VideoWriter::Impl {
     av_frame_free(&frame);
     av_packet_free(&packet);
   }
-  Status fail(const std::string& what, int code) {
+  [[nodiscard]] Status error(const std::string& what, int code) const {
+    return Status::failure("video: " + what + " for '" + def.path + "': " + avError(code));
+  }
+  // Gives up on the file: frees everything and removes the temporary. Main thread only.
+  Status abandon(Status why) {
+    stopWorker(true);
     release();
     detail::discardPartial(def.path);
     finished = true;
-    return Status::failure("video: " + what + " for '" + def.path + "': " + avError(code));
+    return why;
+  }
+  void stopWorker(bool drop) {
+    if (!worker.joinable()) return;
+    {
+      const std::lock_guard lock(mutex);
+      stopping = true;
+      dropQueued = drop;
+    }
+    changed.notify_all();
+    worker.join();
+  }
+  void run() {
+    for (;;) {
+      Image img;
+      {
+        std::unique_lock lock(mutex);
+        changed.wait(lock, [&] { return !queue.empty() || stopping; });
+        if (queue.empty() || dropQueued) return;
+        img = std::move(queue.front());
+        queue.pop_front();
+      }
+      Status s = convertAndEncode(img);
+      {
+        const std::lock_guard lock(mutex);
+        if (!s && workerStatus.ok()) workerStatus = std::move(s);
+        spare.push_back(std::move(img));
+      }
+      changed.notify_all();
+    }
+  }
+  Status convertAndEncode(const Image& img) {
+    if (int err = av_frame_make_writable(frame); err < 0) return error("out of memory", err);
+    rgbaToYuv420(img, frame);
+    frame->pts = encoded++;
+    return encode(frame);
   }
   // Sends `f` (nullptr: flush) to the encoder and writes every packet it gives back.
   Status encode(const AVFrame* f) {
-    if (int err = avcodec_send_frame(codec, f); err < 0) return fail("encoding failed", err);
+    if (int err = avcodec_send_frame(codec, f); err < 0) return error("encoding failed", err);
     for (;;) {
       const int err = avcodec_receive_packet(codec, packet);
       if (err == AVERROR(EAGAIN) || err == AVERROR_EOF) return {};
-      if (err < 0) return fail("encoding failed", err);
+      if (err < 0) return error("encoding failed", err);
       // Every frame lasts 1/fps; without a duration the MP4's last frame would have none.
       if (packet->duration == 0) packet->duration = 1;
       av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
       packet->stream_index = stream->index;
-      if (int w = av_interleaved_write_frame(format, packet); w < 0) return fail("writing failed", w);
+      if (int w = av_interleaved_write_frame(format, packet); w < 0) return error("writing failed", w);
     }
   }
 };
@@ -121,13 +179,13 @@ Result<VideoWriter> VideoWriter::open(const VideoDef& def) {
   m->def = def;
   const std::string tmp = detail::partialPath(def.path);
   // The muxer is named explicitly: the temporary's extension says nothing about the format.
-  if (int err = avformat_alloc_output_context2(&m->format, nullptr, "mp4", tmp.c_str()); err < 0) return m->fail("cannot set up MP4", err);
+  if (int err = avformat_alloc_output_context2(&m->format, nullptr, "mp4", tmp.c_str()); err < 0) return m->abandon(m->error("cannot set up MP4", err));
   const AVCodec* x264 = avcodec_find_encoder_by_name("libx264");
   m->stream = avformat_new_stream(m->format, nullptr);
   m->codec = avcodec_alloc_context3(x264);
   m->frame = av_frame_alloc();
   m->packet = av_packet_alloc();
-  if (!m->stream || !m->codec || !m->frame || !m->packet) return m->fail("out of memory", AVERROR(ENOMEM));
+  if (!m->stream || !m->codec || !m->frame || !m->packet) return m->abandon(m->error("out of memory", AVERROR(ENOMEM)));
   m->codec->width = def.width;
   m->codec->height = def.height;
   m->codec->pix_fmt = AV_PIX_FMT_YUV420P;
@@ -142,15 +200,17 @@ Result<VideoWriter> VideoWriter::open(const VideoDef& def) {
   if (m->format->oformat->flags & AVFMT_GLOBALHEADER) m->codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
   av_opt_set(m->codec->priv_data, "preset", def.preset.c_str(), 0);
   av_opt_set(m->codec->priv_data, "crf", std::to_string(def.crf).c_str(), 0);
-  if (int err = avcodec_open2(m->codec, x264, nullptr); err < 0) return m->fail("cannot open the H.264 encoder", err);
-  if (int err = avcodec_parameters_from_context(m->stream->codecpar, m->codec); err < 0) return m->fail("cannot set up the stream", err);
+  if (int err = avcodec_open2(m->codec, x264, nullptr); err < 0) return m->abandon(m->error("cannot open the H.264 encoder", err));
+  if (int err = avcodec_parameters_from_context(m->stream->codecpar, m->codec); err < 0) return m->abandon(m->error("cannot set up the stream", err));
   m->stream->time_base = m->codec->time_base;
-  if (int err = avio_open(&m->format->pb, tmp.c_str(), AVIO_FLAG_WRITE); err < 0) return m->fail("cannot open the file", err);
-  if (int err = avformat_write_header(m->format, nullptr); err < 0) return m->fail("cannot write the header", err);
+  if (int err = avio_open(&m->format->pb, tmp.c_str(), AVIO_FLAG_WRITE); err < 0) return m->abandon(m->error("cannot open the file", err));
+  if (int err = avformat_write_header(m->format, nullptr); err < 0) return m->abandon(m->error("cannot write the header", err));
   m->frame->format = AV_PIX_FMT_YUV420P;
   m->frame->width = def.width;
   m->frame->height = def.height;
-  if (int err = av_frame_get_buffer(m->frame, 0); err < 0) return m->fail("out of memory", err);
+  if (int err = av_frame_get_buffer(m->frame, 0); err < 0) return m->abandon(m->error("out of memory", err));
+  Impl* raw = m.get();
+  m->worker = std::thread([raw] { raw->run(); });
   return VideoWriter(std::move(m));
 }
 
@@ -164,23 +224,43 @@ std::int64_t VideoWriter::frameCount() const { return impl_->frames; }
 Status VideoWriter::write(const Image& image) {
   Impl& m = *impl_;
   if (m.finished) return Status::failure("video: '" + m.def.path + "' is already closed");
-  if (image.width != m.def.width || image.height != m.def.height) {
+  if (image.width != m.def.width || image.height != m.def.height ||
+      image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4) {
     return Status::failure("video: frame of " + std::to_string(image.width) + "x" + std::to_string(image.height) +
                            " does not match the video's " + std::to_string(m.def.width) + "x" +
                            std::to_string(m.def.height));
   }
-  if (int err = av_frame_make_writable(m.frame); err < 0) return m.fail("out of memory", err);
-  rgbaToYuv420(image, m.frame);
-  m.frame->pts = m.frames++;
-  return m.encode(m.frame);
+  {
+    std::unique_lock lock(m.mutex);
+    m.changed.wait(lock, [&] { return m.queue.size() < Impl::kQueued || !m.workerStatus.ok(); });
+    if (!m.workerStatus.ok()) {
+      Status why = m.workerStatus;
+      lock.unlock();
+      return m.abandon(std::move(why));
+    }
+    Image slot;
+    if (!m.spare.empty()) {
+      slot = std::move(m.spare.back());
+      m.spare.pop_back();
+    }
+    slot.width = image.width;
+    slot.height = image.height;
+    slot.rgba.assign(image.rgba.begin(), image.rgba.end());  // reuses the recycled buffer
+    m.queue.push_back(std::move(slot));
+  }
+  m.changed.notify_all();
+  ++m.frames;
+  return {};
 }
 
 Status VideoWriter::close() {
   Impl& m = *impl_;
   if (m.finished) return Status::failure("video: '" + m.def.path + "' is already closed");
-  if (Status s = m.encode(nullptr); !s) return s;
-  if (int err = av_write_trailer(m.format); err < 0) return m.fail("cannot finish the file", err);
-  if (int err = avio_closep(&m.format->pb); err < 0) return m.fail("cannot close the file", err);
+  m.stopWorker(false);  // encodes what is queued, then stops
+  if (!m.workerStatus.ok()) return m.abandon(m.workerStatus);
+  if (Status s = m.encode(nullptr); !s) return m.abandon(s);
+  if (int err = av_write_trailer(m.format); err < 0) return m.abandon(m.error("cannot finish the file", err));
+  if (int err = avio_closep(&m.format->pb); err < 0) return m.abandon(m.error("cannot close the file", err));
   m.release();
   m.finished = true;
   return detail::commitPartial(m.def.path, "video");

@@ -18,14 +18,15 @@ struct VideoDef {
   int height = 480;                 ///< pixels, even
   int fps = 30;                     ///< frames per second of the video
   int crf = 23;                     ///< x264 constant rate factor: lower is better and larger
-  std::string preset = "veryfast";  ///< x264 preset (ultrafast ... veryslow)
+  std::string preset = "ultrafast";  ///< x264 preset: ultrafast (fastest, larger files) ... veryslow
 };
 
 /// Checks a VideoDef without writing anything: sizes, frame rate, encoder, output directory.
 [[nodiscard]] Status validate(const VideoDef& def);
 
-/// Encodes frames into an MP4. The file appears under its name only when close() succeeds; on
-/// failure or destruction without close() the temporary is removed.
+/// Encodes frames into an MP4 on a worker thread (write() copies the frame and returns). The file
+/// appears under its name only when close() succeeds; on failure or destruction without close()
+/// the temporary is removed.
 class VideoWriter {
  public:
   /// Validates `def` and opens the encoder and the temporary file.
@@ -34,7 +35,7 @@ class VideoWriter {
   VideoWriter& operator=(VideoWriter&&) noexcept;
   ~VideoWriter();
 
-  /// Appends one frame; its size must be the video's.
+  /// Queues one frame (copied); its size must be the video's. Reports an earlier encoding error.
   [[nodiscard]] Status write(const Image& frame);
   /// Flushes the encoder, finishes the file and renames it into place.
   [[nodiscard]] Status close();
