@@ -107,9 +107,12 @@ void drawPlots(Canvas& c, const FontAtlas& fonts, const PlotSet& plots, double n
     fonts.draw(c, Font::Sans, {vp.x + 4, y0 + asc}, tick(hi), ink);
     fonts.draw(c, Font::Sans, {vp.x + 4, y1}, tick(lo), ink);
     // Title and legend on the chart's first line.
-    double lx = fonts.draw(c, Font::Sans, {left + 4, y0 + asc + 1}, plot.title, ink) + 8;
+    // Title and legend, wrapping onto more lines when the chart is narrow.
+    double lx = fonts.draw(c, Font::Sans, {left + 4, y0 + asc + 1}, plot.title, ink) + 8, ly = y0 + asc + 1;
     for (std::size_t si = 0; si < plot.series.size(); ++si) {
-      lx = fonts.draw(c, Font::Sans, {lx, y0 + asc + 1}, plot.series[si].name, rgba8(palette::series(plot.series[si], si))) + 8;
+      const std::string& name = plot.series[si].name;
+      if (lx + fonts.width(Font::Sans, name) > right && lx > left + 4) lx = left + 4, ly += lh;
+      lx = fonts.draw(c, Font::Sans, {lx, ly}, name, rgba8(palette::series(plot.series[si], si))) + 8;
     }
     // Each series, reduced to first/min/max/last per pixel column so long runs stay cheap.
     for (std::size_t si = 0; si < plot.series.size(); ++si) {

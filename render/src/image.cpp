@@ -20,7 +20,9 @@ Status checkWritable(const std::string& path, const std::string& what) {
   const fs::path dir = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) {
-    return Status::failure(what + ": cannot write '" + path + "': directory '" + dir.string() + "' does not exist");
+    const bool exists = fs::exists(dir, ec);
+    return Status::failure(what + ": cannot write '" + path + "': " + (exists ? "'" : "directory '") + dir.string() +
+                           (exists ? "' is not a directory" : "' does not exist"));
   }
   if (::access(dir.c_str(), W_OK | X_OK) != 0) {
     return Status::failure(what + ": cannot write '" + path + "': directory '" + dir.string() +

@@ -49,6 +49,15 @@ TEST(Png, MissingDirectoryIsNamed) {
   EXPECT_NE(d.error().find("directory '/nonexistent/dir' does not exist"), std::string::npos) << d.error();
 }
 
+TEST(Png, ParentThatIsAFileIsRejected) {
+  const fs::path dir = scratch("parent_file");
+  ASSERT_TRUE(writePng((dir / "a.png").string(), gradient(2, 2)).ok());
+  const std::string inside = (dir / "a.png" / "b.png").string();
+  const Status s = writePng(inside, gradient(2, 2));
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.error(), "png: cannot write '" + inside + "': '" + (dir / "a.png").string() + "' is not a directory");
+}
+
 TEST(Png, ReadOnlyDirectoryIsRejectedUpFront) {
   const fs::path dir = scratch("read_only");
   fs::permissions(dir, fs::perms::owner_read | fs::perms::owner_exec);
