@@ -50,7 +50,8 @@ Rgba8 rgba8(const Color& c, double alpha) {
 // A chord of a circle with n segments strays r (1 - cos(pi / n)) ~ r pi^2 / (2 n^2) from it; keep
 // that under a quarter pixel. Fewer, fatter triangles matter: llvmpipe pays per triangle.
 int Canvas::segmentsFor(double r) {
-  return std::clamp(static_cast<int>(std::ceil(4.5 * std::sqrt(std::max(r, 0.0)))), 8, 128);
+  if (!std::isfinite(r)) return 8;
+  return static_cast<int>(std::clamp(std::ceil(4.5 * std::sqrt(std::max(r, 0.0))), 8.0, 128.0));
 }
 
 void Canvas::triangle(const Vec2& a, const Vec2& b, const Vec2& c, Rgba8 col) {
@@ -97,7 +98,11 @@ void Canvas::dashed(std::span<const Vec2> pts, double width, double dash, double
     const Vec2 a = pts[i];
     const Vec2 d = pts[i + 1] - a;
     const double len = d.norm();
-    if (len < 1e-9) continue;
+    if (!(len >= 1e-9)) continue;  // also NaN
+    if (!(len / period < 1e5)) {   // absurdly long (or infinite): solid, rather than a million dashes
+      line(a, pts[i + 1], width, col, false);
+      continue;
+    }
     const Vec2 u = d / len;
     double s = 0.0;
     while (s < len) {
@@ -192,6 +197,8 @@ void Canvas::text(int font, int x, int y, std::string_view s, Rgba8 col) {
 }
 
 void Canvas::fill(double x0, double y0, double x1, double y1, Rgba8 col) {
+  for (double v : {x0, y0, x1, y1})
+    if (!(std::abs(v) < 1e6)) return;  // off-frame or non-finite
   OverlayOp op{.kind = OverlayOp::Kind::Fill,
                .x0 = static_cast<int>(std::lround(x0)),
                .y0 = static_cast<int>(std::lround(y0)),

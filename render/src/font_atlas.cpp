@@ -87,6 +87,8 @@ double FontAtlas::width(Font font, std::string_view text) const {
 }
 
 double FontAtlas::draw(Canvas& canvas, Font font, Vec2 pen, std::string_view text, Rgba8 col) const {
+  // Far off-frame or non-finite positions (a controller's NaN) draw nothing.
+  if (!(std::abs(pen.x()) < 1e6 && std::abs(pen.y()) < 1e6)) return pen.x();
   // Whole-pixel pen positions keep glyphs crisp and the output exact.
   const int px = static_cast<int>(std::lround(pen.x())), py = static_cast<int>(std::lround(pen.y()));
   canvas.text(static_cast<int>(font), px, py, text, col);

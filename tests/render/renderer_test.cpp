@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 namespace frob::render {
 namespace {
 
@@ -101,6 +103,20 @@ TEST(Renderer, EmptySceneAndOddInputsDoNotCrash) {
   scene.robots.push_back(odd);
   const Image img = r.render(scene, PlotSet{});
   EXPECT_EQ(img.width, 64);
+  EXPECT_EQ(img.rgba.size(), 64u * 48u * 4u);
+}
+
+TEST(Renderer, NonFiniteValuesFromAMisbehavingControllerDoNotHang) {
+  Renderer r = make({.width = 64, .height = 48, .layout = PanelLayout::PlotBelow});
+  FrameScene scene = roomScene();
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  scene.robots[0].pose.position = Point2(nan, 1.0);
+  scene.robots[0].odometryPath.push_back(Point2(inf, 0.0));
+  scene.robots[0].picture += circle(inf) + paintAt(Point2(nan, nan), text("?"));
+  scene.robots[0].wheels = {nan, inf};
+  PlotSet plots = roomPlots();
+  plots.plots[0].series[0].samples.push_back({20.5, nan});
+  const Image img = r.render(scene, plots);
   EXPECT_EQ(img.rgba.size(), 64u * 48u * 4u);
 }
 

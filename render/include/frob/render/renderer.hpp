@@ -44,7 +44,7 @@ struct RenderDef {
   std::string fontFile;                  ///< proportional font; empty: DejaVuSans from the build
   std::string monoFontFile;              ///< fixed-width font for the HUD; empty: DejaVuSansMono
   std::string robotModelFile;            ///< chase-view robot mesh (assimp); empty: render/models/robot.obj
-  int rasterThreads = 0;                 ///< llvmpipe threads (LP_NUM_THREADS); -1 leaves the environment alone
+  int rasterThreads = 0;                 ///< llvmpipe threads (LP_NUM_THREADS, read at the process's first context); -1: leave it
 };
 
 /// Checks a RenderDef without building anything heavy: sizes, fonts and (for Chase) the model.
@@ -52,13 +52,16 @@ struct RenderDef {
 
 /// Draws frames into an offscreen OpenGL context of fixed size. Output is a pure function of the
 /// inputs: the same scene and plots give the same pixels. Not thread-safe; one per thread.
+/// Typical use (see tests/render/pipeline_test.cpp): validate() the RenderDef and VideoDef before
+/// the run, create() and VideoWriter::open(), then per step renderInto() as often as
+/// FramePicker::framesAt() says and VideoWriter::write(), and finally VideoWriter::close().
 class Renderer {
  public:
   /// Validates `def`, loads fonts (and the model), creates the context. Fails with a readable message.
   [[nodiscard]] static Result<Renderer> create(const RenderDef& def);
-  Renderer(Renderer&&) noexcept;
-  Renderer& operator=(Renderer&&) noexcept;
-  ~Renderer();
+  Renderer(Renderer&&) noexcept;             ///< movable, not copyable (it owns a GL context)
+  Renderer& operator=(Renderer&&) noexcept;  ///< movable, not copyable
+  ~Renderer();                               ///< frees the GL context
 
   /// Draws `scene`, and `plots` up to the scene's time into the plot panel if the layout has one.
   [[nodiscard]] Image render(const FrameScene& scene, const PlotSet& plots = {});

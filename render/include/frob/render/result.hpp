@@ -10,7 +10,7 @@ namespace frob::render {
 /// Success, or a readable message saying what went wrong and with which file.
 class Status {
  public:
-  Status() = default;
+  Status() = default;  ///< success
   /// A failure carrying `message`.
   [[nodiscard]] static Status failure(std::string message) { return Status(std::move(message)); }
   /// True when nothing went wrong.

@@ -31,9 +31,9 @@ class VideoWriter {
  public:
   /// Validates `def` and opens the encoder and the temporary file.
   [[nodiscard]] static Result<VideoWriter> open(const VideoDef& def);
-  VideoWriter(VideoWriter&&) noexcept;
-  VideoWriter& operator=(VideoWriter&&) noexcept;
-  ~VideoWriter();
+  VideoWriter(VideoWriter&&) noexcept;             ///< movable, not copyable
+  VideoWriter& operator=(VideoWriter&&) noexcept;  ///< movable, not copyable
+  ~VideoWriter();                                  ///< without a successful close(): removes the temporary
 
   /// Queues one frame (copied); its size must be the video's. Reports an earlier encoding error.
   [[nodiscard]] Status write(const Image& frame);
