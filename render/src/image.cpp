@@ -64,9 +64,11 @@ bool writePngStream(std::FILE* f, const Image& image) {
   // Speed over size: frames are many and short-lived.
   png_set_compression_level(png, 1);
   png_set_filter(png, 0, PNG_FILTER_NONE);
+  // Frames are opaque: store RGB, a quarter less to compress; libpng skips each fourth byte.
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 8,
-               PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+               PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
+  png_set_filler(png, 0, PNG_FILLER_AFTER);
   for (int y = 0; y < image.height; ++y) {
     png_write_row(png, image.rgba.data() + static_cast<std::size_t>(y) * image.width * 4);
   }

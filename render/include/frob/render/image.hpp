@@ -18,7 +18,7 @@ struct Image {
   [[nodiscard]] const std::uint8_t* pixel(int x, int y) const { return &rgba[(static_cast<std::size_t>(y) * width + x) * 4]; }
 };
 
-/// Writes `image` as a PNG (compression 1, no filter) to a temporary beside `path`, then renames it.
+/// Writes `image` as an RGB PNG (alpha dropped; compression 1, no filter) via `path`.partial, renamed when complete.
 [[nodiscard]] Status writePng(const std::string& path, const Image& image);
 /// Reads a PNG file into RGBA.
 [[nodiscard]] Result<Image> readPng(const std::string& path);
