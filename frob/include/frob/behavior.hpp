@@ -1,0 +1,366 @@
+#pragma once
+/// Behaviors: values defined at every instant, built from constants, time, sensors and lifting.
+
+#include "frob/detail/node.hpp"
+#include "frob/geometry.hpp"
+
+#include <cmath>
+#include <concepts>
+#include <functional>
+#include <memory>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+namespace frob {
+
+template <class T>
+class Behavior;
+template <class R, class F, class... Args>
+class Pointwise;
+
+namespace detail {
+
+template <class T>
+struct IsBehavior : std::false_type {};
+template <class T>
+struct IsBehavior<Behavior<T>> : std::true_type {};
+template <class R, class F, class... Args>
+struct IsBehavior<Pointwise<R, F, Args...>> : std::true_type {};
+
+template <class T>
+struct ValueOf {
+  using type = T;
+};
+template <class T>
+struct ValueOf<Behavior<T>> {
+  using type = T;
+};
+template <class R, class F, class... Args>
+struct ValueOf<Pointwise<R, F, Args...>> {
+  using type = R;
+};
+
+template <class T>
+struct IsPointwise : std::false_type {};
+template <class R, class F, class... Args>
+struct IsPointwise<Pointwise<R, F, Args...>> : std::true_type {};
+
+// What a computed value is kept as: Eigen's lazy expressions become plain vectors, pointwise
+// behavior expressions become behaviors (e.g. a behavior returned from an event's map function).
+template <class R>
+auto plain(R&& r) {
+  using D = std::remove_cvref_t<R>;
+  if constexpr (std::is_base_of_v<Eigen::EigenBase<D>, D>) {
+    return r.eval();
+  } else if constexpr (IsPointwise<D>::value) {
+    return r.behavior();
+  } else {
+    return D(std::forward<R>(r));
+  }
+}
+
+}  // namespace detail
+
+/// True for behaviors: `Behavior<T>` and the pointwise expressions built from them.
+template <class T>
+concept BehaviorType = detail::IsBehavior<std::remove_cvref_t<T>>::value;
+
+/// The value type of a behavior, or the type itself for a plain value.
+template <class T>
+using ValueOf = typename detail::ValueOf<std::remove_cvref_t<T>>::type;
+
+/// The type a behavior stores for a result of type R (Eigen expressions become plain vectors).
+template <class R>
+using Stored = decltype(detail::plain(std::declval<R>()));
+
+/// Operands of a pointwise operator: at least one of them is a behavior.
+template <class A, class B>
+concept BehaviorOperands = BehaviorType<A> || BehaviorType<B>;
+
+/// The zero of a value type: 0 for numbers, the zero vector for Eigen vectors.
+template <class T>
+T zeroOf() {
+  if constexpr (std::is_base_of_v<Eigen::EigenBase<T>, T>) {
+    return T::Zero();
+  } else {
+    return T{};
+  }
+}
+
+/// A plain value from which a constant Behavior<T> can be made (not a behavior, not a graph node).
+template <class U, class T>
+concept ValueFor = !BehaviorType<U> && !std::convertible_to<U, std::shared_ptr<detail::NodeBase>> &&
+                   std::constructible_from<T, U&&>;
+
+/// A value defined at every instant. Cheap to copy: copies share one node of the graph.
+template <class T>
+class Behavior {
+ public:
+  using value_type = T;
+
+  /// The constant behavior zeroOf<T>().
+  Behavior() requires std::default_initializable<T> : Behavior(zeroOf<T>()) {}
+  /// The constant behavior `v` (so plain values mix freely with behaviors).
+  template <class U>
+    requires ValueFor<U, T>
+  Behavior(U&& v);  // NOLINT(google-explicit-constructor): implicit lifting is the point
+  /// A behavior computed by `node` (for library and host code).
+  explicit Behavior(std::shared_ptr<detail::BehaviorNode<T>> node) : node_(std::move(node)) {}
+
+  /// The value at instant `now`, computed at most once per instant.
+  const T& at(const Instant& now) const { return node_->at(now); }
+  /// The node behind this behavior.
+  [[nodiscard]] const std::shared_ptr<detail::BehaviorNode<T>>& node() const { return node_; }
+
+ private:
+  std::shared_ptr<detail::BehaviorNode<T>> node_;
+};
+
+namespace detail {
+
+template <class T>
+class ConstantNode final : public BehaviorNode<T> {
+ public:
+  explicit ConstantNode(T v) : value_(std::move(v)) {}
+
+ protected:
+  T compute(const Instant&) override { return value_; }
+
+ private:
+  T value_;
+};
+
+// One argument of a lifted function: a behavior sampled at the instant, a pointwise expression
+// evaluated in place, or a plain value.
+template <class A>
+struct Arg {
+  A value;
+  const A& get(const Instant&) const { return value; }
+};
+template <class T>
+struct Arg<Behavior<T>> {
+  std::shared_ptr<BehaviorNode<T>> node;
+  const T& get(const Instant& now) const { return node->at(now); }
+};
+template <class R, class F, class... Args>
+struct Arg<Pointwise<R, F, Args...>> {
+  Pointwise<R, F, Args...> expr;
+  R get(const Instant& now) const { return expr.eval(now); }
+};
+
+template <class A>
+Arg<std::remove_cvref_t<A>> makeArg(A&& a) {
+  if constexpr (IsBehavior<std::remove_cvref_t<A>>::value && !IsPointwise<std::remove_cvref_t<A>>::value) {
+    return {a.node()};
+  } else {
+    return {std::forward<A>(a)};
+  }
+}
+
+// The node a pointwise expression becomes: one node for the whole expression tree.
+template <class R, class Expr>
+class PointwiseNode final : public BehaviorNode<R> {
+ public:
+  explicit PointwiseNode(Expr e) : expr_(std::move(e)) {}
+
+ protected:
+  R compute(const Instant& now) override { return expr_.eval(now); }
+
+ private:
+  Expr expr_;
+};
+
+class TimeNode final : public BehaviorNode<double> {
+ protected:
+  double compute(const Instant& now) override { return start_.local(now); }
+
+ private:
+  StartTime start_;
+};
+
+}  // namespace detail
+
+/// A pointwise expression over behaviors (the result of `lift` and of operators on behaviors),
+/// not yet a node of the graph: it becomes one node, for the whole expression, when stored in a
+/// Behavior<R>. Name a Behavior to share a value between several expressions.
+template <class R, class F, class... Args>
+class Pointwise {
+ public:
+  using value_type = R;
+
+  Pointwise(F f, Args... args) : f_(std::move(f)), args_(std::move(args)...) {}
+  /// The value at instant `now` (evaluated afresh each call; a Behavior memoises it).
+  R eval(const Instant& now) const {
+    return std::apply([&](const auto&... a) { return R(detail::plain(std::invoke(f_, a.get(now)...))); }, args_);
+  }
+  /// This expression as one node of the graph.
+  [[nodiscard]] Behavior<R> behavior() const {
+    return Behavior<R>(std::make_shared<detail::PointwiseNode<R, Pointwise>>(*this));
+  }
+  /// Implicit conversion, so that `Behavior<double> b = x + y;` reads naturally.
+  operator Behavior<R>() const { return behavior(); }  // NOLINT(google-explicit-constructor)
+  /// The value at instant `now`, as for a Behavior.
+  R at(const Instant& now) const { return eval(now); }
+
+ private:
+  F f_;
+  std::tuple<Args...> args_;
+};
+
+/// The behavior a behavior-like value stands for: itself, or its pointwise expression as one node.
+template <BehaviorType B>
+[[nodiscard]] Behavior<ValueOf<B>> toBehavior(const B& b) {
+  if constexpr (detail::IsPointwise<std::remove_cvref_t<B>>::value) {
+    return b.behavior();
+  } else {
+    return b;
+  }
+}
+
+template <class T>
+template <class U>
+  requires ValueFor<U, T>
+Behavior<T>::Behavior(U&& v) : node_(std::make_shared<detail::ConstantNode<T>>(T(std::forward<U>(v)))) {}
+
+/// The constant behavior `v`.
+template <class T>
+[[nodiscard]] Behavior<std::remove_cvref_t<T>> constant(T&& v) {
+  return Behavior<std::remove_cvref_t<T>>(std::forward<T>(v));
+}
+
+/// Seconds since this behavior started (its first sample), so 0 at the start of a task.
+[[nodiscard]] inline Behavior<double> time() { return Behavior<double>(std::make_shared<detail::TimeNode>()); }
+
+/// Pointwise application of `f` to behaviors and plain values: lift(f, b1, 2.0, b3).
+/// The result is a Pointwise expression; it becomes a node when stored in a Behavior.
+template <class F, class... Args>
+  requires std::invocable<F&, const ValueOf<Args>&...>
+[[nodiscard]] auto lift(F f, Args&&... args) {
+  using R = Stored<std::invoke_result_t<F&, const ValueOf<Args>&...>>;
+  return Pointwise<R, F, detail::Arg<std::remove_cvref_t<Args>>...>(std::move(f),
+                                                                     detail::makeArg(std::forward<Args>(args))...);
+}
+
+// Pointwise operators mixing Behavior<T> and plain values. Each is constrained on its value types,
+// so `frontSonar(r) < "x"` fails to compile naming the invalid expression `a < b`.
+#define FROB_BEHAVIOR_BINARY_OPERATOR(op)                                                   \
+  template <class A, class B>                                                               \
+    requires BehaviorOperands<A, B> && requires(const ValueOf<A>& a, const ValueOf<B>& b) { \
+      a op b;                                                                               \
+    }                                                                                       \
+  [[nodiscard]] auto operator op(const A& a, const B& b) {                                  \
+    return lift([](const auto& x, const auto& y) { return x op y; }, a, b);                 \
+  }
+FROB_BEHAVIOR_BINARY_OPERATOR(+)
+FROB_BEHAVIOR_BINARY_OPERATOR(-)
+FROB_BEHAVIOR_BINARY_OPERATOR(*)
+FROB_BEHAVIOR_BINARY_OPERATOR(/)
+FROB_BEHAVIOR_BINARY_OPERATOR(<)
+FROB_BEHAVIOR_BINARY_OPERATOR(<=)
+FROB_BEHAVIOR_BINARY_OPERATOR(>)
+FROB_BEHAVIOR_BINARY_OPERATOR(>=)
+FROB_BEHAVIOR_BINARY_OPERATOR(==)
+FROB_BEHAVIOR_BINARY_OPERATOR(!=)
+FROB_BEHAVIOR_BINARY_OPERATOR(&&)
+FROB_BEHAVIOR_BINARY_OPERATOR(||)
+#undef FROB_BEHAVIOR_BINARY_OPERATOR
+
+/// Pointwise negation.
+template <BehaviorType A>
+  requires requires(const ValueOf<A>& a) { -a; }
+[[nodiscard]] auto operator-(const A& a) {
+  return lift([](const auto& x) { return -x; }, a);
+}
+
+/// Pointwise logical not.
+template <BehaviorType A>
+  requires requires(const ValueOf<A>& a) { !a; }
+[[nodiscard]] auto operator!(const A& a) {
+  return lift([](const auto& x) { return !x; }, a);
+}
+
+// Pointwise maths on behaviors of numbers (plain numbers keep using <cmath>).
+#define FROB_BEHAVIOR_MATH_FUNCTION(name)                                  \
+  template <BehaviorType A>                                                \
+    requires requires(const ValueOf<A>& a) { std::name(a); }               \
+  [[nodiscard]] auto name(const A& a) {                                    \
+    return lift([](const auto& x) { return std::name(x); }, a);            \
+  }
+FROB_BEHAVIOR_MATH_FUNCTION(sin)
+FROB_BEHAVIOR_MATH_FUNCTION(cos)
+FROB_BEHAVIOR_MATH_FUNCTION(tan)
+FROB_BEHAVIOR_MATH_FUNCTION(asin)
+FROB_BEHAVIOR_MATH_FUNCTION(acos)
+FROB_BEHAVIOR_MATH_FUNCTION(atan)
+FROB_BEHAVIOR_MATH_FUNCTION(sqrt)
+FROB_BEHAVIOR_MATH_FUNCTION(exp)
+FROB_BEHAVIOR_MATH_FUNCTION(log)
+FROB_BEHAVIOR_MATH_FUNCTION(abs)
+FROB_BEHAVIOR_MATH_FUNCTION(floor)
+FROB_BEHAVIOR_MATH_FUNCTION(ceil)
+#undef FROB_BEHAVIOR_MATH_FUNCTION
+
+/// Pointwise larger of two (behaviors or values).
+template <class A, class B>
+  requires BehaviorOperands<A, B> && std::totally_ordered_with<ValueOf<A>, ValueOf<B>>
+[[nodiscard]] auto max(const A& a, const B& b) {
+  return lift([](const auto& x, const auto& y) { return x < y ? std::common_type_t<decltype(x), decltype(y)>(y) : x; },
+              a, b);
+}
+
+/// Pointwise smaller of two (behaviors or values).
+template <class A, class B>
+  requires BehaviorOperands<A, B> && std::totally_ordered_with<ValueOf<A>, ValueOf<B>>
+[[nodiscard]] auto min(const A& a, const B& b) {
+  return lift([](const auto& x, const auto& y) { return y < x ? std::common_type_t<decltype(x), decltype(y)>(y) : x; },
+              a, b);
+}
+
+/// Pointwise `v` limited to [lo, hi].
+template <class V, class L, class H>
+  requires BehaviorType<V> || BehaviorType<L> || BehaviorType<H>
+[[nodiscard]] auto clamp(const V& v, const L& lo, const H& hi) {
+  return lift([](double x, double l, double h) { return x < l ? l : (h < x ? h : x); }, v, lo, hi);
+}
+
+/// Pointwise atan2(y, x), radians.
+template <class Y, class X>
+  requires BehaviorOperands<Y, X>
+[[nodiscard]] auto atan2(const Y& y, const X& x) {
+  return lift([](double a, double b) { return std::atan2(a, b); }, y, x);
+}
+
+/// Pointwise `base` to the power `e`.
+template <class A, class B>
+  requires BehaviorOperands<A, B>
+[[nodiscard]] auto pow(const A& base, const B& e) {
+  return lift([](double a, double b) { return std::pow(a, b); }, base, e);
+}
+
+/// Pointwise length of a vector behavior.
+template <BehaviorType V>
+[[nodiscard]] auto norm(const V& v) {
+  return lift([](const Vec2& x) { return x.norm(); }, v);
+}
+
+/// Pointwise distance between two points (behaviors or values).
+template <class A, class B>
+  requires BehaviorOperands<A, B>
+[[nodiscard]] auto distance(const A& a, const B& b) {
+  return lift([](const Point2& p, const Point2& q) { return (p - q).norm(); }, a, b);
+}
+
+/// Pointwise direction of a vector behavior, radians in (-pi, pi].
+template <BehaviorType V>
+[[nodiscard]] auto heading(const V& v) {
+  return lift([](const Vec2& x) { return std::atan2(x.y(), x.x()); }, v);
+}
+
+/// Pointwise angle wrapped to (-pi, pi].
+template <BehaviorType A>
+[[nodiscard]] auto wrapAngle(const A& a) {
+  return lift([](double x) { return wrapAngle(x); }, a);
+}
+
+}  // namespace frob

@@ -1,0 +1,113 @@
+#pragma once
+/// Behaviors that exploit the flow of time: integral, derivative, and the value at an extremum.
+
+#include "frob/behavior.hpp"
+
+namespace frob {
+namespace detail {
+
+// Trapezoidal integral from the first sample (where it is zero).
+template <class T>
+class IntegralNode final : public BehaviorNode<T> {
+ public:
+  explicit IntegralNode(std::shared_ptr<BehaviorNode<T>> b) : b_(std::move(b)), sum_(zeroOf<T>()) {}
+
+ protected:
+  T compute(const Instant& now) override {
+    const T& v = b_->at(now);
+    if (started_) sum_ = sum_ + (v + previous_) * (0.5 * (now.time - previousTime_));
+    started_ = true;
+    previous_ = v;
+    previousTime_ = now.time;
+    return sum_;
+  }
+
+ private:
+  std::shared_ptr<BehaviorNode<T>> b_;
+  T sum_;
+  T previous_ = zeroOf<T>();
+  double previousTime_ = 0.0;
+  bool started_ = false;
+};
+
+// Backward difference; zero at the first sample.
+template <class T>
+class DerivativeNode final : public BehaviorNode<T> {
+ public:
+  explicit DerivativeNode(std::shared_ptr<BehaviorNode<T>> b) : b_(std::move(b)) {}
+
+ protected:
+  T compute(const Instant& now) override {
+    const T& v = b_->at(now);
+    T d = zeroOf<T>();
+    if (started_ && now.time > previousTime_) d = (v - previous_) / (now.time - previousTime_);
+    started_ = true;
+    previous_ = v;
+    previousTime_ = now.time;
+    return d;
+  }
+
+ private:
+  std::shared_ptr<BehaviorNode<T>> b_;
+  T previous_ = zeroOf<T>();
+  double previousTime_ = 0.0;
+  bool started_ = false;
+};
+
+// The value of `b` when `key` was best so far (smallest, or largest with `wantMax`); earliest wins ties.
+template <class K, class T>
+class AtExtremumNode final : public BehaviorNode<T> {
+ public:
+  AtExtremumNode(std::shared_ptr<BehaviorNode<K>> key, std::shared_ptr<BehaviorNode<T>> b, bool wantMax)
+      : key_(std::move(key)), b_(std::move(b)), wantMax_(wantMax) {}
+
+ protected:
+  T compute(const Instant& now) override {
+    const K& k = key_->at(now);
+    const T& v = b_->at(now);
+    if (!best_ || (wantMax_ ? *bestKey_ < k : k < *bestKey_)) {
+      bestKey_ = k;
+      best_ = v;
+    }
+    return *best_;
+  }
+
+ private:
+  std::shared_ptr<BehaviorNode<K>> key_;
+  std::shared_ptr<BehaviorNode<T>> b_;
+  bool wantMax_;
+  std::optional<K> bestKey_;
+  std::optional<T> best_;
+};
+
+}  // namespace detail
+
+/// The integral of `b` over time since this behavior started (trapezoidal rule); numbers and Vec2.
+template <BehaviorType B>
+[[nodiscard]] Behavior<ValueOf<B>> integral(const B& b) {
+  using T = ValueOf<B>;
+  return Behavior<T>(std::make_shared<detail::IntegralNode<T>>(toBehavior(b).node()));
+}
+
+/// The rate of change of `b` (backward difference over one step); zero at the first sample.
+template <BehaviorType B>
+[[nodiscard]] Behavior<ValueOf<B>> derivative(const B& b) {
+  using T = ValueOf<B>;
+  return Behavior<T>(std::make_shared<detail::DerivativeNode<T>>(toBehavior(b).node()));
+}
+
+/// The value of `b` at the instant `key` was smallest since this behavior started.
+template <BehaviorType K, BehaviorType B>
+[[nodiscard]] Behavior<ValueOf<B>> atMin(const K& key, const B& b) {
+  using Node = detail::AtExtremumNode<ValueOf<K>, ValueOf<B>>;
+  return Behavior<ValueOf<B>>(std::make_shared<Node>(toBehavior(key).node(), toBehavior(b).node(), false));
+}
+
+/// The value of `b` at the instant `key` was largest since this behavior started.
+template <BehaviorType K, BehaviorType B>
+[[nodiscard]] Behavior<ValueOf<B>> atMax(const K& key, const B& b) {
+  using Node = detail::AtExtremumNode<ValueOf<K>, ValueOf<B>>;
+  return Behavior<ValueOf<B>>(std::make_shared<Node>(toBehavior(key).node(), toBehavior(b).node(), true));
+}
+
+}  // namespace frob

@@ -1,0 +1,68 @@
+#pragma once
+/// Errors: FROB_ASSERT for programmer mistakes, FrobError for a controller misbehaving at run time.
+
+#include "frob/behavior.hpp"
+#include "frob/robot_values.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace frob {
+
+/// A controller misbehaved at run time (a NaN command, an exception, a runaway task chain).
+/// Hosts report it with its message and go on; it never takes down a grader.
+class FrobError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A library function was called in a way it does not allow (a programmer's mistake).
+class UsageError : public std::logic_error {
+ public:
+  using std::logic_error::logic_error;
+};
+
+namespace detail {
+[[noreturn]] void failAssert(const char* condition, const char* message, const char* file, int line);
+}  // namespace detail
+
+/// Checks a precondition in every build; throws UsageError naming the file, line and `message`.
+#define FROB_ASSERT(condition, message) \
+  ((condition) ? static_cast<void>(0) : ::frob::detail::failAssert(#condition, message, __FILE__, __LINE__))
+
+/// True when every number in `v` is finite (no NaN, no infinity).
+[[nodiscard]] inline bool isFinite(double v) { return std::isfinite(v); }
+[[nodiscard]] inline bool isFinite(const Vec2& v) { return v.allFinite(); }
+[[nodiscard]] inline bool isFinite(const Wheels& w) { return std::isfinite(w.forward) && std::isfinite(w.turn); }
+[[nodiscard]] inline bool isFinite(const Pose2& p) { return p.position.allFinite() && std::isfinite(p.heading); }
+
+namespace detail {
+[[nodiscard]] std::string notFiniteMessage(const std::string& what, const Instant& now);
+
+template <class T>
+class CheckFiniteNode final : public BehaviorNode<T> {
+ public:
+  CheckFiniteNode(std::shared_ptr<BehaviorNode<T>> b, std::string what) : b_(std::move(b)), what_(std::move(what)) {}
+
+ protected:
+  T compute(const Instant& now) override {
+    const T& v = b_->at(now);
+    if (!isFinite(v)) throw FrobError(notFiniteMessage(what_, now));
+    return v;
+  }
+
+ private:
+  std::shared_ptr<BehaviorNode<T>> b_;
+  std::string what_;
+};
+}  // namespace detail
+
+/// `b`, except that sampling a non-finite value (NaN, infinity) throws FrobError naming `what`
+/// and the simulated time, so that a NaN is never hidden.
+template <BehaviorType B, class T = ValueOf<B>>
+  requires requires(const T& v) { isFinite(v); }
+[[nodiscard]] Behavior<T> checkFinite(const B& b, std::string what) {
+  return Behavior<T>(std::make_shared<detail::CheckFiniteNode<T>>(toBehavior(b).node(), std::move(what)));
+}
+
+}  // namespace frob

@@ -1,0 +1,528 @@
+#pragma once
+/// Tasks (the paper's section 3): a behavior of type A that runs until an event ends it with a
+/// value of type B. Tasks are C++20 coroutines: `co_await` sequences them, `co_return` ends one.
+
+#include "frob/detail/task_machinery.hpp"
+
+namespace frob {
+
+/// The number of task coroutine frames alive in the process (to prove cancellation frees them).
+[[nodiscard]] long liveTaskFrames();
+
+namespace detail {
+template <class A, class B>
+class TaskPromise;
+template <class A, class E>
+class AtomicAwaiter;
+struct GetState {};
+
+// Raises a RoboErr where it is awaited, or stands for a task that fails at once.
+struct Raise {
+  RoboErr error;
+  bool await_ready() noexcept { return true; }
+  template <class P>
+  void await_suspend(std::coroutine_handle<P>) noexcept {}
+  [[noreturn]] void await_resume() { throw error; }
+  template <class A, class B>
+  operator Task<A, B>() const {  // NOLINT(google-explicit-constructor)
+    return [](RoboErr e) -> Task<A, B> {
+      (void)co_await GetState{};  // a coroutine needs an await; throwing from one is plain C++
+      throw e;
+    }(error);
+  }
+};
+
+template <class A, class B>
+struct SubtaskAwaiter;
+template <class A, class B>
+struct Become {
+  Task<A, B> task;
+};
+struct GetContext {};
+struct GetRecord {};
+struct SetState {
+  TaskState state;
+};
+template <class A, class B>
+Task<A> discardResult(Task<A, B> t);
+}  // namespace detail
+
+/// A task driving a behavior of type A until it ends with a B (`Task<Wheels>` is the paper's
+/// `Task WheelControlB ()`). A task is a recipe: it runs when awaited or passed to runTask, once.
+template <class A, class B>
+class [[nodiscard]] Task {
+ public:
+  using promise_type = detail::TaskPromise<A, B>;
+  using output_type = A;
+  using result_type = B;
+
+  Task(Task&& other) noexcept : handle_(std::exchange(other.handle_, {})) {}
+  Task& operator=(Task&& other) noexcept {
+    if (this != &other) {
+      reset();
+      handle_ = std::exchange(other.handle_, {});
+    }
+    return *this;
+  }
+  Task(const Task&) = delete;
+  Task& operator=(const Task&) = delete;
+  ~Task() { reset(); }
+
+  /// A task whose result is dropped: any Task<A, B2> can stand where a Task<A> is expected.
+  template <class B2>
+    requires(std::is_void_v<B> && !std::is_void_v<B2>)
+  Task(Task<A, B2>&& other) : Task(detail::discardResult(std::move(other)).quiet()) {}  // NOLINT(google-explicit-constructor)
+
+  /// This task, shown under `name` in the timeline.
+  Task&& named(std::string name) && {
+    handle_.promise().name = std::move(name);
+    return std::move(*this);
+  }
+  /// This task, named in the timeline after the function and line of `loc`.
+  Task&& at(const std::source_location& loc) && {
+    handle_.promise().name = detail::taskName(loc.function_name());
+    handle_.promise().where = detail::taskWhere(loc);
+    return std::move(*this);
+  }
+  /// The name the timeline shows.
+  [[nodiscard]] const std::string& name() const { return handle_.promise().name; }
+  /// Internal frames (adapters) stay off the timeline.
+  Task&& quiet() && {
+    handle_.promise().quiet = true;
+    return std::move(*this);
+  }
+
+  /// Starts this task inside run `ctx`, reporting into `slot`; returns the frame to resume.
+  std::coroutine_handle<> startIn(detail::ResultSlot<ResultOf<B>>& slot, detail::RunContext<A>* ctx,
+                                  std::coroutine_handle<> continuation, std::int64_t parentRecord) {
+    FROB_ASSERT(handle_, "a Task can run only once (it was already awaited or moved from)");
+    auto h = std::exchange(handle_, {});
+    slot.frame = h;
+    h.promise().slot = &slot;
+    h.promise().begin(ctx, continuation, parentRecord);
+    return h;
+  }
+
+ private:
+  friend promise_type;
+  explicit Task(std::coroutine_handle<promise_type> h) : handle_(h) {}
+  void reset() {
+    if (handle_) handle_.destroy();
+    handle_ = {};
+  }
+  std::coroutine_handle<promise_type> handle_;
+};
+
+namespace detail {
+
+template <class R, class P>
+struct ReturnValue {
+  void return_value(R v) { static_cast<P*>(this)->deliver(std::move(v)); }
+};
+template <class P>
+struct ReturnVoid {
+  void return_void() { static_cast<P*>(this)->deliver(Unit{}); }
+};
+
+template <class A, class B>
+class TaskPromise : public PromiseBase<A>,
+                    public std::conditional_t<std::is_void_v<B>, ReturnVoid<TaskPromise<A, B>>,
+                                              ReturnValue<ResultOf<B>, TaskPromise<A, B>>> {
+ public:
+  using R = ResultOf<B>;
+  explicit TaskPromise(std::source_location loc = std::source_location::current()) : PromiseBase<A>(loc) {}
+
+  Task<A, B> get_return_object() { return Task<A, B>(std::coroutine_handle<TaskPromise>::from_promise(*this)); }
+  std::suspend_always initial_suspend() noexcept { return {}; }
+  FinalAwaiter final_suspend() noexcept { return {}; }
+  void unhandled_exception() {
+    slot->error = std::current_exception();
+    this->noteException();
+  }
+  void deliver(R v) {
+    this->end(TaskEnd::Returned, printable(v));
+    slot->value.emplace(std::move(v));
+  }
+
+  // What a task may co_await: tasks driving the same A, its state, become, and taskError.
+  template <class B2>
+  SubtaskAwaiter<A, B2> await_transform(Task<A, B2>&& t) {
+    return SubtaskAwaiter<A, B2>(std::move(t));
+  }
+  template <class B2>
+  SubtaskAwaiter<A, B2> await_transform(Task<A, B2>& t) {
+    return SubtaskAwaiter<A, B2>(std::move(t));
+  }
+  auto await_transform(GetState) {
+    struct Awaiter : std::suspend_never {
+      TaskState state;
+      TaskState await_resume() { return state; }
+    };
+    return Awaiter{{}, this->ctx->state};
+  }
+  auto await_transform(GetContext) {  // the library's own access to the run (transformers)
+    struct Awaiter : std::suspend_never {
+      RunContext<A>* ctx;
+      RunContext<A>* await_resume() { return ctx; }
+    };
+    return Awaiter{{}, this->ctx};
+  }
+  auto await_transform(GetRecord) {  // the timeline record subtasks hang under
+    struct Awaiter : std::suspend_never {
+      std::int64_t record;
+      std::int64_t await_resume() { return record; }
+    };
+    return Awaiter{{}, this->recordForChildren()};
+  }
+  auto await_transform(SetState s) {
+    this->ctx->state = std::move(s.state);
+    return std::suspend_never{};
+  }
+  auto await_transform(Become<A, B>&& b);
+  template <class E>
+  auto await_transform(AtomicAwaiter<A, E>& atom) {  // an atomic task, which stays where it was made
+    struct Ref {
+      AtomicAwaiter<A, E>* atom;
+      bool await_ready() noexcept { return false; }
+      std::coroutine_handle<> await_suspend(std::coroutine_handle<TaskPromise> h) { return atom->await_suspend(h); }
+      E await_resume() { return atom->await_resume(); }
+    };
+    return Ref{&atom};
+  }
+  template <class X>
+  void await_transform(X&&) {
+    static_assert(sizeof(X) == 0,
+                  "a Task<A, B> can co_await only tasks that drive the same output type A, getTaskState(), "
+                  "setTaskState(ts), become(task) and taskError(error)");
+  }
+  auto await_transform(Raise r) { return r; }
+
+  ResultSlot<R>* slot = nullptr;
+};
+
+// Awaiting a subtask: runs it to completion, then yields its result or rethrows its error.
+template <class A, class B>
+struct SubtaskAwaiter {
+  explicit SubtaskAwaiter(Task<A, B> t) : task(std::move(t)) {}
+  SubtaskAwaiter(SubtaskAwaiter&&) noexcept = default;
+  ~SubtaskAwaiter() {
+    if (slot.frame) slot.frame.destroy();  // aborted while waiting: the subtask goes too
+  }
+  bool await_ready() noexcept { return false; }
+  template <class P>
+  std::coroutine_handle<> await_suspend(std::coroutine_handle<P> parent) {
+    PromiseBase<A>& p = parent.promise();
+    return task.startIn(slot, p.ctx, parent, p.recordForChildren());
+  }
+  B await_resume() {
+    std::exchange(slot.frame, {}).destroy();
+    if (slot.error) std::rethrow_exception(slot.error);
+    if constexpr (!std::is_void_v<B>) return std::move(*slot.value);
+  }
+
+  Task<A, B> task;
+  ResultSlot<ResultOf<B>> slot;
+};
+
+template <class A, class B>
+auto TaskPromise<A, B>::await_transform(Become<A, B>&& b) {
+  // A tail call: the new task takes this frame's place (its slot, parent and owner) and this
+  // frame is destroyed, so recursion such as runAround calling itself runs in bounded memory.
+  struct Awaiter {
+    Task<A, B> next;
+    bool await_ready() noexcept { return false; }
+    std::coroutine_handle<> await_suspend(std::coroutine_handle<TaskPromise> self) {
+      TaskPromise& p = self.promise();
+      p.end(TaskEnd::Replaced, "became " + next.name());
+      ResultSlot<R>& slot = *p.slot;
+      std::coroutine_handle<> h = next.startIn(slot, p.ctx, p.continuation, p.parentRecord);
+      self.destroy();  // destroys this awaiter too: nothing of it is touched after this line
+      return h;
+    }
+    void await_resume() noexcept {}
+  };
+  return Awaiter{std::move(b.task)};
+}
+
+template <class A, class B>
+Task<A> discardResult(Task<A, B> t) {
+  co_await std::move(t);
+}
+
+// An atomic task: a behavior until its exit event (result), its error event, or an enclosing
+// scope's interrupt occurs. Lives in the awaiting frame while the runner watches it.
+template <class A, class E>
+class AtomicAwaiter final : public AtomicBase<A> {
+ public:
+  AtomicAwaiter(Behavior<A> b, Event<E> exit, std::optional<Event<RoboErr>> error)
+      : behavior_(std::move(b)), exit_(std::move(exit)), error_(std::move(error)) {}
+
+  bool await_ready() noexcept { return false; }
+  template <class P>
+  std::coroutine_handle<> await_suspend(std::coroutine_handle<P> h) {
+    ctx_ = h.promise().ctx;
+    this->name = &h.promise().name;
+    this->output = ctx_->filtered(behavior_);
+    this->waiter = h;
+    ctx_->current = this;
+    return std::noop_coroutine();  // back to the runner, which checks the events this instant
+  }
+  E await_resume() {
+    if (failure_) std::rethrow_exception(failure_);
+    return std::move(*result_);
+  }
+
+  bool check(const Instant& now) override {
+    // Every event is sampled each instant so stateful ones stay current; the exit wins ties, then
+    // the task's own error, then the innermost scope.
+    const std::optional<E>& exit = exit_.at(now);
+    const std::optional<RoboErr>* error = error_ ? &error_->at(now) : nullptr;
+    const std::optional<std::exception_ptr>* interrupt = nullptr;
+    for (auto it = ctx_->interrupts.rbegin(); it != ctx_->interrupts.rend(); ++it) {
+      const std::optional<std::exception_ptr>& o = it->at(now);
+      if (o && interrupt == nullptr) interrupt = &o;
+    }
+    if (exit) {
+      result_ = *exit;
+    } else if (error && *error) {
+      failure_ = std::make_exception_ptr(**error);
+    } else if (interrupt) {
+      failure_ = **interrupt;
+    } else {
+      return false;
+    }
+    return true;
+  }
+  void fail(std::exception_ptr e) override { failure_ = std::move(e); }
+
+ private:
+  Behavior<A> behavior_;
+  Event<E> exit_;
+  std::optional<Event<RoboErr>> error_;
+  RunContext<A>* ctx_ = nullptr;
+  std::optional<E> result_;
+  std::exception_ptr failure_;
+};
+
+template <class T>
+struct EventValue;
+template <class T>
+struct EventValue<Event<T>> {
+  using type = T;
+};
+
+// The coroutine behind mkTask and mkTaskE; an exit event of Unit makes a Task<A> (no result).
+template <class A, class B, class E, class F>
+Task<A, B> atomicTask(F f) {
+  TaskState ts = co_await GetState{};
+  auto parts = std::invoke(f, static_cast<const TaskState&>(ts));
+  std::optional<Event<RoboErr>> error;
+  if constexpr (std::tuple_size_v<decltype(parts)> == 3) error = std::get<2>(parts);
+  AtomicAwaiter<A, E> atom(toBehavior(std::get<0>(parts)), std::get<1>(parts), std::move(error));
+  if constexpr (std::is_void_v<B>) {
+    co_await atom;
+  } else {
+    co_return co_await atom;
+  }
+}
+
+template <class F>
+using MkTaskParts = std::invoke_result_t<F&, const TaskState&>;
+template <class F>
+using MkTaskOutput = frob::ValueOf<std::tuple_element_t<0, MkTaskParts<F>>>;
+template <class F>
+using MkTaskExit = typename EventValue<std::remove_cvref_t<std::tuple_element_t<1, MkTaskParts<F>>>>::type;
+template <class F>
+using MkTaskResult = std::conditional_t<std::is_same_v<MkTaskExit<F>, Unit>, void, MkTaskExit<F>>;
+
+}  // namespace detail
+
+/// The paper's mkTask: `f(ts)` gives a behavior and the event that ends it, as a std::pair.
+/// The task drives the behavior until the event occurs and returns the event's value (nothing
+/// for an Event<Unit>). Its timeline name is the function that calls mkTask.
+template <class F>
+  requires std::invocable<F&, const TaskState&>
+[[nodiscard]] auto mkTask(F f, std::source_location loc = std::source_location::current()) {
+  using A = detail::MkTaskOutput<F>;
+  using E = detail::MkTaskExit<F>;
+  return detail::atomicTask<A, detail::MkTaskResult<F>, E>(std::move(f)).at(loc);
+}
+
+/// The paper's mkTaskE: as mkTask, with a third element, an Event<RoboErr> that fails the task.
+template <class F>
+  requires std::invocable<F&, const TaskState&>
+[[nodiscard]] auto mkTaskE(F f, std::source_location loc = std::source_location::current()) {
+  static_assert(std::tuple_size_v<detail::MkTaskParts<F>> == 3,
+                "mkTaskE's function returns std::tuple{behavior, exit event, error event}");
+  return mkTask(std::move(f), loc);
+}
+
+/// The paper's taskError: `co_await taskError(RoboErr("..."))` inside a task, or return it as a
+/// task that fails at once.
+[[nodiscard]] inline detail::Raise taskError(RoboErr e) { return {std::move(e)}; }
+
+/// The task's state: its robot and where the robot was when the task began (`co_await getTaskState()`).
+[[nodiscard]] inline detail::GetState getTaskState() { return {}; }
+/// Replaces the task's state for the tasks that follow (`co_await setTaskState(ts)`).
+[[nodiscard]] inline detail::SetState setTaskState(TaskState ts) { return {std::move(ts)}; }
+/// Ends this task by becoming `t`: `co_await become(runAround());` is the paper's recursive
+/// call, in constant memory. Nothing after it runs.
+template <class A, class B>
+[[nodiscard]] detail::Become<A, B> become(Task<A, B> t) {
+  return {std::move(t)};
+}
+
+namespace detail {
+
+// The behavior of a running task: each instant it checks the current atomic task's events,
+// moves on through as many tasks as end at this instant, then samples the current behavior.
+template <class A, class B>
+class RunnerNode final : public BehaviorNode<A> {
+ public:
+  // A run of `task` then `final`. A run inside another (parallel tasks) hangs its timeline under
+  // `parentRecord` and, with `holdErrors`, keeps an uncaught error in result() instead of throwing.
+  RunnerNode(TaskState ts, Task<A, B> task, Behavior<A> final, std::int64_t parentRecord = -1,
+             bool holdErrors = false)
+      : ctx_(std::move(ts)), task_(std::move(task)), final_(std::move(final)), parentRecord_(parentRecord),
+        holdErrors_(holdErrors) {}
+  RunnerNode(const RunnerNode&) = delete;
+  RunnerNode& operator=(const RunnerNode&) = delete;
+  ~RunnerNode() override {
+    if (slot_.frame) slot_.frame.destroy();  // stops every task still running, innermost last
+  }
+
+  /// The run's shared context (for parallel tasks built on it).
+  RunContext<A>& context() { return ctx_; }
+  /// The task's result or error once it has ended (done() is true).
+  [[nodiscard]] bool done() const { return slot_.value.has_value() || slot_.error != nullptr; }
+  [[nodiscard]] const ResultSlot<ResultOf<B>>& result() const { return slot_; }
+
+ protected:
+  A compute(const Instant& now) override {
+    ctx_.now = &now;
+    ctx_.time = now.time;
+    if (failure_) std::rethrow_exception(failure_);
+    if (!started_) {
+      started_ = true;
+      ctx_.snapshot(now);
+      task_.startIn(slot_, &ctx_, std::noop_coroutine(), parentRecord_).resume();
+    }
+    for (int transitions = 0;; ++transitions) {
+      AtomicBase<A>* atom = ctx_.current;
+      if (atom == nullptr) return finished(now);
+      if (transitions > kMaxTransitionsPerInstant) fail(runawayMessage(*atom->name, now));
+      bool ended = false;
+      try {
+        ended = atom->check(now);
+      } catch (...) {
+        atom->fail(std::current_exception());  // an event that throws fails its task
+        ended = true;
+      }
+      if (!ended) {
+        try {
+          A out = atom->output.at(now);
+          for (const auto& watch : ctx_.watchers) watch(now);
+          if constexpr (requires { isFinite(out); }) {
+            if (!isFinite(out)) fail(nonFiniteMessage(*atom->name, printable(out), now));
+          }
+          ctx_.output->write(now, out);
+          return out;
+        } catch (const FrobError&) {
+          throw;
+        } catch (...) {
+          atom->fail(std::current_exception());  // a behavior that throws fails its task
+        }
+      }
+      ctx_.current = nullptr;
+      ctx_.snapshot(now);
+      atom->waiter.resume();
+    }
+  }
+
+ private:
+  static constexpr int kMaxTransitionsPerInstant = 1000;
+
+  A finished(const Instant& now) {
+    if (slot_.error && !reported_ && !holdErrors_) {
+      reported_ = true;
+      TaskEnd how = TaskEnd::Failed;
+      std::string what = describe(slot_.error, &how);
+      std::string who = slot_.error == ctx_.origin ? ctx_.originTask : "the controller";
+      fail("task '" + who + "' failed at t = " + seconds(now) + ": " + what);
+    }
+    A out = final_.at(now);
+    ctx_.output->write(now, out);
+    return out;
+  }
+  [[noreturn]] void fail(const std::string& message) {
+    failure_ = std::make_exception_ptr(FrobError(message));
+    std::rethrow_exception(failure_);
+  }
+  static std::string seconds(const Instant& now) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3f s", now.time);
+    return buf;
+  }
+  static std::string runawayMessage(const std::string& task, const Instant& now) {
+    return "task '" + task + "' ended at its start more than " + std::to_string(kMaxTransitionsPerInstant) +
+           " times at t = " + seconds(now) +
+           ": each task in the loop ends in the same step it begins (an event that has already occurred, "
+           "e.g. one shared by consecutive tasks, or a condition that already holds)";
+  }
+  static std::string nonFiniteMessage(const std::string& task, const std::string& value, const Instant& now) {
+    return "task '" + task + "' produced a non-finite output " + value + " at t = " + seconds(now) +
+           " (a division by zero or a NaN in its behavior?)";
+  }
+
+  RunContext<A> ctx_;
+  Task<A, B> task_;
+  Behavior<A> final_;
+  ResultSlot<ResultOf<B>> slot_;
+  std::exception_ptr failure_;
+  std::int64_t parentRecord_;
+  bool holdErrors_;
+  bool started_ = false;
+  bool reported_ = false;
+};
+
+}  // namespace detail
+
+/// The paper's runTask: the behavior of task `t` run from state `ts`, then `final` once it ends.
+/// An error no task catches, an exception, a non-finite output or an endless chain of tasks at
+/// one instant makes sampling it throw FrobError naming the task and the simulated time.
+template <class A, class B>
+[[nodiscard]] Behavior<A> runTask(TaskState ts, Task<A, B> t, std::type_identity_t<Behavior<A>> final) {
+  return Behavior<A>(std::make_shared<detail::RunnerNode<A, B>>(std::move(ts), std::move(t), std::move(final)));
+}
+
+/// runTask for robot `r` from where it stands; after the task ends the output is zero (stop).
+template <class A, class B>
+[[nodiscard]] Behavior<A> runTask(const Robot& r, Task<A, B> t) {
+  return runTask(TaskState(r), std::move(t), Behavior<A>(zeroOf<A>()));
+}
+
+/// The paper's taskCatch: runs `t`; if it fails with a RoboErr, becomes `handler(error)`.
+/// The handler takes this task's place (a tail call), so a task that restarts itself from its
+/// handler, as the paper's `bug` does, runs in constant memory.
+template <class A, class B, class H>
+  requires std::invocable<H&, const RoboErr&>
+[[nodiscard]] Task<A, B> taskCatch(Task<A, B> t, H handler,
+                                   std::source_location loc = std::source_location::current()) {
+  std::string inner = t.name();
+  return [](Task<A, B> body, H h) -> Task<A, B> {
+    std::optional<RoboErr> caught;
+    try {
+      if constexpr (std::is_void_v<B>) {
+        co_await std::move(body);
+        co_return;
+      } else {
+        co_return co_await std::move(body);
+      }
+    } catch (const RoboErr& e) {
+      caught = e;
+    }
+    co_await become(Task<A, B>(std::invoke(h, *caught)));
+  }(std::move(t), std::move(handler)).at(loc).named("taskCatch(" + inner + ")");
+}
+
+}  // namespace frob

@@ -1,0 +1,106 @@
+// Per-step cost of a Frob controller graph against the same algorithm hand-written in plain C++,
+// and the cost of a switch and of building a task-sized graph.
+#include "frob/frob.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+namespace {
+
+using namespace frob;
+using namespace frob::literals;
+
+constexpr double kSetpoint = 0.6;
+constexpr double kThetaMax = 30_deg;
+constexpr double kStop = 0.5;
+constexpr double kVmax = 0.4;
+
+// Synthetic sensor readings that change every step, identical for both versions.
+void fillFrame(SensorFrame& f, std::int64_t step) {
+  double t = static_cast<double>(step) * 0.01;
+  f.sonar.assign(16, 2.0);
+  f.sonar[4] = 0.6 + 0.2 * std::sin(t);   // left
+  f.sonar[0] = 1.5 + std::cos(0.3 * t);   // front
+  f.velocity = 0.3 + 0.05 * std::sin(2 * t);
+}
+
+// The paper's wall follower: rerror limited by velocity, PID on it for the turn, speed from the front.
+Behavior<Wheels> wallFollower(const Robot& r) {
+  auto limit = [](const Behavior<double>& m, const Behavior<double>& v) { return min(max(-m, v), m); };
+  Behavior<double> m = velocity(r) * std::sin(kThetaMax);
+  Behavior<double> rerror = limit(m, kSetpoint - leftSonar(r));
+  Behavior<double> turn = 1.5 * rerror + 0.2 * derivative(rerror) + 0.05 * integral(rerror);
+  Behavior<double> forward = clamp((frontSonar(r) - kStop) * 0.8, 0.0, kVmax);
+  Behavior<double> slowed = forward * (1.0 - 0.5 * abs(rerror) / (m + 1e-3));
+  return wheels(slowed, turn);
+}
+
+// The same algorithm, hand-written.
+struct HandWritten {
+  double previous = 0, previousTime = 0, sum = 0, lastErr = 0;
+  bool started = false;
+  Wheels step(const SensorFrame& f, double t) {
+    double m = f.velocity * std::sin(kThetaMax);
+    double err = std::min(std::max(-m, kSetpoint - f.sonar[4]), m);
+    double d = 0;
+    if (started) {
+      d = (err - previous) / (t - previousTime);
+      sum += (err + previous) * (0.5 * (t - previousTime));
+    }
+    started = true;
+    previous = err;
+    previousTime = t;
+    double forward = std::clamp((f.sonar[0] - kStop) * 0.8, 0.0, kVmax);
+    double slowed = forward * (1.0 - 0.5 * std::abs(err) / (m + 1e-3));
+    return {slowed, 1.5 * err + 0.2 * d + 0.05 * sum};
+  }
+};
+
+void BM_FrobWallFollowerStep(benchmark::State& state) {
+  auto frame = std::make_shared<SensorFrame>();
+  Robot robot(nomadSpec(), [frame](const Instant&) -> const SensorFrame& { return *frame; });
+  Behavior<Wheels> controller = wallFollower(robot);
+  Clock clock(0.01);
+  long before = liveNodeCount();
+  (void)before;
+  for (auto _ : state) {
+    const Instant& now = clock.advance();
+    fillFrame(*frame, now.step);
+    benchmark::DoNotOptimize(controller.at(now));
+  }
+  state.counters["nodes"] = static_cast<double>(liveNodeCount());
+}
+BENCHMARK(BM_FrobWallFollowerStep);
+
+void BM_HandWrittenWallFollowerStep(benchmark::State& state) {
+  SensorFrame frame;
+  HandWritten controller;
+  Clock clock(0.01);
+  for (auto _ : state) {
+    const Instant& now = clock.advance();
+    fillFrame(frame, now.step);
+    benchmark::DoNotOptimize(controller.step(frame, now.time));
+  }
+}
+BENCHMARK(BM_HandWrittenWallFollowerStep);
+
+// The same graph, built fresh each iteration: the cost of creating a task-sized graph.
+void BM_BuildWallFollowerGraph(benchmark::State& state) {
+  auto frame = std::make_shared<SensorFrame>();
+  Robot robot(nomadSpec(), [frame](const Instant&) -> const SensorFrame& { return *frame; });
+  for (auto _ : state) benchmark::DoNotOptimize(wallFollower(robot));
+}
+BENCHMARK(BM_BuildWallFollowerGraph);
+
+// One untilB firing per iteration: a switch to a freshly built behavior, then its first sample.
+Behavior<double> flipper() { return untilB(time(), after(0.005).map([] { return flipper(); })); }
+
+void BM_UntilBSwitch(benchmark::State& state) {
+  Behavior<double> b = flipper();  // at dt = 0.01 each copy's timer fires at its second sample: one switch per step
+  Clock clock(0.01);
+  for (auto _ : state) benchmark::DoNotOptimize(b.at(clock.advance()));
+}
+BENCHMARK(BM_UntilBSwitch);
+
+}  // namespace

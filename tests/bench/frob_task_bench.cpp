@@ -1,0 +1,53 @@
+// Cost of a task switch, and the per-step overhead of running a behavior inside a task.
+#include "frob/frob.hpp"
+
+#include <benchmark/benchmark.h>
+
+namespace {
+
+using namespace frob;
+
+Robot benchRobot() { return Robot(nomadSpec(), ScriptedSensors{}); }
+
+// A task that ends at the first step after it starts (one switch per step).
+Task<Wheels> oneStep() {
+  return mkTask([](const TaskState&) { return std::pair{wheels(0.1, 0.2), after(1e-6)}; });
+}
+
+Task<Wheels> switchEveryStep() {
+  for (;;) co_await oneStep();
+}
+
+// End of one atomic task -> the next task's first sample, including building its graph.
+void BM_TaskSwitch(benchmark::State& state) {
+  Behavior<Wheels> c = runTask(benchRobot(), switchEveryStep());
+  Clock clock(0.01);
+  for (auto _ : state) benchmark::DoNotOptimize(c.at(clock.advance()));
+}
+BENCHMARK(BM_TaskSwitch);
+
+Behavior<Wheels> typical(const Robot& r) {
+  Behavior<double> front = frontSonar(r);
+  Behavior<double> side = leftSonar(r);
+  return wheels(clamp((front - 0.5) * 0.8, 0.0, 0.4), (0.6 - side) * 1.5 + 0.1 * derivative(side));
+}
+
+void BM_BareBehaviorStep(benchmark::State& state) {
+  Robot r = benchRobot();
+  Behavior<Wheels> c = typical(r);
+  Clock clock(0.01);
+  for (auto _ : state) benchmark::DoNotOptimize(c.at(clock.advance()));
+}
+BENCHMARK(BM_BareBehaviorStep);
+
+// The same behavior as the body of a running task that never ends.
+void BM_BehaviorInTaskStep(benchmark::State& state) {
+  Robot r = benchRobot();
+  Behavior<Wheels> c =
+      runTask(r, mkTask([](const TaskState& ts) { return std::pair{typical(ts.robot()), never()}; }));
+  Clock clock(0.01);
+  for (auto _ : state) benchmark::DoNotOptimize(c.at(clock.advance()));
+}
+BENCHMARK(BM_BehaviorInTaskStep);
+
+}  // namespace

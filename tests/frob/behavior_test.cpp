@@ -1,0 +1,94 @@
+#include "frob/behavior.hpp"
+#include "frob/sampling.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+namespace frob {
+namespace {
+
+using namespace literals;
+
+TEST(Behavior, ConstantsLiftImplicitlyAndMixWithPlainValues) {
+  Behavior<double> ten = 10;
+  Behavior<double> b = ten * 2 + 1.5 - constant(0.5);
+  EXPECT_EQ(sample(b, 0.1, 3), (std::vector<double>{21.0, 21.0, 21.0}));
+  Behavior<bool> cmp = 3.0 < ten && !(ten == 11.0);
+  EXPECT_TRUE(sample(cmp, 0.1, 1)[0]);
+}
+
+TEST(Behavior, TimeCountsFromTheFirstSample) {
+  Behavior<double> t = time();
+  EXPECT_EQ(sample(t, 0.25, 4), (std::vector<double>{0.0, 0.25, 0.5, 0.75}));
+}
+
+TEST(Behavior, LiftAppliesAnyFunctionPointwise) {
+  Behavior<double> t = time();
+  auto b = lift([](double x, int k, double y) { return x * k + y; }, t, 3, t * t);
+  std::vector<double> s = sample(b, 0.5, 3);
+  EXPECT_EQ(s, (std::vector<double>{0.0, 1.75, 4.0}));
+}
+
+TEST(Behavior, VectorArithmeticStoresPlainVectors) {
+  Behavior<Vec2> v = Vec2{1, 2};
+  Behavior<Vec2> w = v * time() + Vec2{0, 1};  // an Eigen expression, evaluated into a Vec2
+  std::vector<Vec2> s = sample(w, 1.0, 3);
+  EXPECT_EQ(s[2], Vec2(2, 5));
+  EXPECT_DOUBLE_EQ(sample(norm(Behavior<Vec2>(Vec2{3, 4})), 1.0, 1)[0], 5.0);
+  EXPECT_DOUBLE_EQ(sample(distance(Behavior<Point2>(Point2{1, 1}), Point2{4, 5}), 1.0, 1)[0], 5.0);
+}
+
+TEST(Behavior, MathFunctionsArePointwise) {
+  Behavior<double> t = time();
+  std::vector<double> s = sample(sin(t) + abs(-t) + max(t, 0.5) + min(t, 0.5) + clamp(t, 0.2, 0.4), 0.5, 3);
+  ASSERT_EQ(s.size(), 3u);
+  EXPECT_DOUBLE_EQ(s[0], 0.0 + 0.0 + 0.5 + 0.0 + 0.2);
+  EXPECT_DOUBLE_EQ(s[2], std::sin(1.0) + 1.0 + 1.0 + 0.5 + 0.4);
+  EXPECT_DOUBLE_EQ(sample(atan2(constant(1.0), 1.0), 1.0, 1)[0], pi / 4);
+  EXPECT_DOUBLE_EQ(sample(wrapAngle(constant(3 * pi / 2)), 1.0, 1)[0], wrapAngle(3 * pi / 2));
+}
+
+TEST(Behavior, GlitchFreedomEvaluatesASharedNodeOncePerInstant) {
+  int evaluations = 0;
+  Behavior<double> counted = lift(
+      [&evaluations](double t) {
+        ++evaluations;
+        return t;
+      },
+      time());
+  Behavior<double> diamond = counted + counted;  // two paths to one node
+  Behavior<double> deeper = diamond * counted - counted;
+  std::vector<double> s = sample(deeper, 1.0, 5);
+  EXPECT_EQ(evaluations, 5);  // once per instant, not once per use
+  EXPECT_DOUBLE_EQ(s[3], (3.0 + 3.0) * 3.0 - 3.0);
+}
+
+TEST(Behavior, RepeatedRunsAreBitIdentical) {
+  auto build = [] {
+    Behavior<double> t = time();
+    return sin(t * 3.7) * exp(-t) + sqrt(t + 1.0) / (1.0 + t * t);
+  };
+  std::vector<double> a = sample(build(), 0.01, 1000);
+  std::vector<double> b = sample(build(), 0.01, 1000);
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
+}
+
+TEST(Behavior, ThePapersRerrorReadsLikeThePaper) {
+  // rerror r = limit (velocity r * sin thetamax) (setpoint - leftSonar r)
+  //   where limit m v = (-m) `max` v `min` m
+  auto limit = [](const Behavior<double>& m, const Behavior<double>& v) { return min(max(-m, v), m); };
+  Behavior<double> velocity = 0.5;
+  Behavior<double> left = 1.0 - time();  // the wall comes closer
+  double setpoint = 0.6;
+  double thetamax = 30_deg;
+  Behavior<double> rerror = limit(velocity * std::sin(thetamax), setpoint - left);
+  std::vector<double> s = sample(rerror, 0.1, 11);
+  EXPECT_DOUBLE_EQ(s[0], -0.25);            // far from the wall: clipped at -m
+  EXPECT_NEAR(s[4], 0.6 - 0.6, 1e-12);      // at the setpoint
+  EXPECT_DOUBLE_EQ(s[10], 0.25);            // too close: clipped at +m
+}
+
+}  // namespace
+}  // namespace frob

@@ -1,0 +1,112 @@
+#include "frob/frob.hpp"
+
+#include <gtest/gtest.h>
+
+namespace frob {
+namespace {
+
+Robot idleRobot() { return Robot(nomadSpec(), ScriptedSensors{}); }
+
+Task<Wheels> drive(double forward, double seconds) {
+  return mkTask([=](const TaskState&) { return std::pair{wheels(forward, 0), after(seconds)}; });
+}
+Task<Wheels> forever(double forward) {
+  return mkTask([=](const TaskState&) { return std::pair{wheels(forward, 0), never()}; });
+}
+Task<Wheels, int> turnFor(double turn, double seconds, int result) {
+  return mkTask([=](const TaskState&) { return std::pair{wheels(0, turn), after(seconds).map([result] { return result; })}; });
+}
+Wheels add(const Wheels& a, const Wheels& b) { return {a.forward + b.forward, a.turn + b.turn}; }
+
+std::vector<Wheels> run(Task<Wheels> t, int steps) { return sample(runTask(idleRobot(), std::move(t)), 0.1, steps); }
+
+TEST(Parallel, WithTaskShowsEachTheOthersOutputAndTheFirstsEnd) {
+  std::optional<Outcome<int>> firstEnd;
+  auto t = withTask(
+      // The first turns, then ends with 7; it sees the second's output one step late.
+      [](Behavior<Wheels> second) {
+        return mkTask([second](const TaskState&) {
+          return std::pair{lift([](const Wheels& s) { return Wheels{0, s.forward}; }, second),
+                           after(0.3).map([] { return 7; })};
+        });
+      },
+      // The second copies the first's turn into its forward speed at once, until the first ends.
+      [&firstEnd](Behavior<Wheels> first, Event<Outcome<int>> end) -> Task<Wheels> {
+        firstEnd = co_await mkTask([first, end](const TaskState&) {
+          return std::pair{lift([](const Wheels& f) { return Wheels{1 + f.turn, 0}; }, first), end};
+        });
+      });
+  std::vector<Wheels> s = run(std::move(t), 5);
+  // Step 0: first sees 0 (nothing before) and turns 0; second drives 1 + 0.
+  // Step 1: first sees 1 and turns 1; second drives 1 + 1 = 2 at once. Step 2: 3.
+  EXPECT_EQ(s[0].forward, 1);
+  EXPECT_EQ(s[1].forward, 2);
+  EXPECT_EQ(s[2].forward, 3);
+  ASSERT_TRUE(firstEnd);
+  EXPECT_TRUE(firstEnd->ok());
+  EXPECT_EQ(*firstEnd->value, 7);
+  EXPECT_EQ(s[3].forward, 0);  // the second ended at t = 0.3 when the first did: final output
+}
+
+TEST(Parallel, ParallelMergesOutputsAndWaitsForBoth) {
+  std::pair<int, Unit> results;
+  auto t = [&results]() -> Task<Wheels> {
+    results = co_await parallel(turnFor(1, 0.4, 5), drive(2, 0.2), add);
+  };
+  std::vector<Wheels> s = run(t(), 6);
+  EXPECT_EQ(s[0], (Wheels{2, 1}));  // both
+  EXPECT_EQ(s[2], (Wheels{0, 1}));  // the first alone
+  EXPECT_EQ(s[4], (Wheels{0, 0}));  // both ended
+  EXPECT_EQ(results.first, 5);
+}
+
+TEST(Parallel, AnErrorInEitherBranchFailsTheParallel) {
+  auto failing = mkTaskE([](const TaskState&) {
+    return std::tuple{wheels(0, 1), never(), after(0.2).map([] { return RoboErr("branch broke"); })};
+  });
+  std::string caught;
+  auto t = [&]() -> Task<Wheels> {
+    try {
+      co_await parallel(std::move(failing), forever(1), add);
+    } catch (const RoboErr& e) {
+      caught = e.what();
+    }
+  };
+  (void)run(t(), 4);
+  EXPECT_NE(caught.find("branch broke"), std::string::npos) << caught;
+}
+
+TEST(Parallel, DisableEndsWithTheFirstToFinishAndAbortsTheOther) {
+  std::variant<int, Unit> winner;
+  long frames0 = liveTaskFrames();
+  long during = 0;
+  auto t = [&]() -> Task<Wheels> {
+    winner = co_await disable(turnFor(1, 0.2, 9), forever(3), add);
+    during = liveTaskFrames() - frames0;
+    co_await forever(0);
+  };
+  std::vector<Wheels> s = run(t(), 4);
+  EXPECT_EQ(s[0], (Wheels{3, 1}));
+  EXPECT_EQ(winner.index(), 0u);
+  EXPECT_EQ(std::get<0>(winner), 9);
+  EXPECT_LE(during, 3);  // the aborted forever(3) is gone
+  EXPECT_EQ(s[3], (Wheels{0, 0}));
+}
+
+TEST(Parallel, SyncLoopAlternatesForever) {
+  std::vector<Wheels> s = run(syncLoop([] { return drive(1, 0.2); }, [] { return drive(2, 0.1); }), 7);
+  std::vector<double> f;
+  for (const Wheels& w : s) f.push_back(w.forward);
+  EXPECT_EQ(f, (std::vector<double>{1, 1, 2, 1, 1, 2, 1}));
+}
+
+TEST(Parallel, AsyncLoopRunsEachQBesideTheRestOfTheLoop) {
+  // P drives 1 for 0.2 s; each Q turns 1 for 0.3 s beside the loop, so Q's overlap.
+  std::vector<Wheels> s = run(asyncLoop([] { return drive(1, 0.2); }, [] { return turnFor(1, 0.3, 0); }, add), 8);
+  std::vector<double> turn;
+  for (const Wheels& w : s) turn.push_back(w.turn);
+  EXPECT_EQ(turn, (std::vector<double>{0, 0, 1, 1, 2, 1, 2, 1}));
+}
+
+}  // namespace
+}  // namespace frob

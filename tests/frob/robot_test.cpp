@@ -1,0 +1,81 @@
+#include "frob/calculus.hpp"
+#include "frob/robot.hpp"
+#include "frob/sampling.hpp"
+
+#include <gtest/gtest.h>
+
+namespace frob {
+namespace {
+
+using namespace literals;
+
+Robot approachingWall() {
+  // The front sonar sees a wall 1 m away closing at 0.5 m/s; every other sonar reads its own index.
+  return Robot(nomadSpec(), ScriptedSensors{
+                                .sonar = [](double t, int i) { return i == 0 ? 1.0 - 0.5 * t : 1.0 + i; },
+                                .odometry = [](double t) { return Pose2{Point2{0.5 * t, 0.0}, 0.1}; },
+                                .velocity = [](double) { return 0.5; },
+                                .bumps = [](double t) {
+                                  return t > 1.95 && t < 2.05 ? std::vector<BumperHit>{{0, 0.0}}
+                                                              : std::vector<BumperHit>{};
+                                },
+                            });
+}
+
+TEST(Robot, NamedSonarsPointWhereTheirNamesSay) {
+  Robot r = approachingWall();
+  EXPECT_EQ(r.sonarNearest(0.0), 0);
+  EXPECT_EQ(r.sonarNearest(pi / 2), 4);
+  EXPECT_EQ(r.sonarNearest(-pi / 2), 12);
+  EXPECT_EQ(r.sonarNearest(pi), 8);
+  EXPECT_EQ(sample(leftSonar(r), 0.1, 1)[0], 5.0);
+  EXPECT_EQ(sample(rightSonar(r), 0.1, 1)[0], 13.0);
+  EXPECT_EQ(sample(backSonar(r), 0.1, 1)[0], 9.0);
+  EXPECT_EQ(sample(sonar(r, 17), 0.1, 1)[0], 2.0);  // index taken modulo the ring
+  EXPECT_EQ(sample(sonars(r), 0.1, 1)[0].size(), 16u);
+}
+
+TEST(Robot, OdometryAndVelocityReadTheFrame) {
+  Robot r = approachingWall();
+  std::vector<Point2> p = sample(place(r), 0.5, 3);
+  EXPECT_EQ(p[2], Point2(0.5, 0.0));
+  EXPECT_EQ(sample(orientation(r), 0.5, 1)[0], 0.1);
+  EXPECT_EQ(sample(velocity(r), 0.5, 1)[0], 0.5);
+}
+
+TEST(Robot, BumperOccursWhenTheFrameReportsAContact) {
+  auto hits = occurrences(bumper(approachingWall()), 0.1, 30);
+  ASSERT_EQ(hits.size(), 1u);
+  EXPECT_NEAR(hits[0].first, 2.0, 1e-12);
+  EXPECT_EQ(hits[0].second.bumper, 0);
+}
+
+TEST(Robot, ThePapersStopitEvent) {
+  // stopit r = predicate (time > timeMax || frontSonar r < 20)
+  Robot r = approachingWall();
+  double timeMax = 5.0;
+  Event<Unit> stopit = predicate(time() > timeMax || frontSonar(r) < 20_cm);
+  std::optional<double> t = firstOccurrence(stopit, 0.01, 1000);
+  ASSERT_TRUE(t);
+  EXPECT_NEAR(*t, 1.6, 0.01);  // 1 - 0.5 t < 0.2 from t = 1.6, found within one step
+}
+
+TEST(Robot, SensorsAreReadOncePerInstantHoweverOftenUsed) {
+  int reads = 0;
+  Robot r(nomadSpec(8), ScriptedSensors{.sonar = [&reads](double, int i) {
+                                          if (i == 0) ++reads;
+                                          return 1.0;
+                                        }});
+  Behavior<double> f = frontSonar(r);
+  (void)sample(f + f * sonar(r, 0) + leftSonar(r), 0.1, 10);
+  EXPECT_EQ(reads, 10);
+}
+
+TEST(Robot, WheelsPairsForwardAndTurn) {
+  Behavior<Wheels> w = wheels(10_cm, time());
+  std::vector<Wheels> s = sample(w, 0.5, 2);
+  EXPECT_EQ(s[1], (Wheels{0.1, 0.5}));
+}
+
+}  // namespace
+}  // namespace frob

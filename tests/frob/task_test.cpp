@@ -1,0 +1,330 @@
+#include "frob/frob.hpp"
+#include "kinematic_robot.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <limits>
+
+namespace frob {
+namespace {
+
+using namespace literals;
+using testing::KinematicRobot;
+
+Robot idleRobot() { return Robot(nomadSpec(), ScriptedSensors{}); }
+
+// Runs `b` for `steps` of `dt`, collecting its samples.
+std::vector<Wheels> samples(const Behavior<Wheels>& b, double dt, int steps) { return sample(b, dt, steps); }
+
+Task<Wheels> forwardFor(double speed, double seconds) {
+  return mkTask([=](const TaskState&) { return std::pair{wheels(speed, 0), after(seconds)}; });
+}
+
+Task<Wheels, int> countTo(int n) {
+  return mkTask([n](const TaskState&) {
+    return std::pair{wheels(0, n), every(0.1).filter([n](std::int64_t k) { return k == n; }).map([](std::int64_t k) {
+                       return static_cast<int>(k);
+                     })};
+  });
+}
+
+TEST(Task, MkTaskRunsItsBehaviorUntilItsEventAndSwitchesInThatStep) {
+  auto seq = []() -> Task<Wheels> {
+    co_await forwardFor(1.0, 0.3);
+    co_await forwardFor(2.0, 0.2);
+  };
+  std::vector<Wheels> s = samples(runTask(idleRobot(), seq()), 0.1, 7);
+  std::vector<double> forward;
+  for (const Wheels& w : s) forward.push_back(w.forward);
+  // The first task's event occurs at t = 0.3: the second drives from that very step.
+  EXPECT_EQ(forward, (std::vector<double>{1, 1, 1, 2, 2, 0, 0}));  // then the final behavior: stop
+}
+
+TEST(Task, CoAwaitYieldsTheResultOfTheEvent) {
+  int got = 0;
+  auto seq = [](int* out) -> Task<Wheels> { *out = co_await countTo(3); };
+  (void)samples(runTask(idleRobot(), seq(&got)), 0.1, 5);
+  EXPECT_EQ(got, 3);
+}
+
+TEST(Task, ATasksBehaviorsStartWithTheTask) {
+  // time() and integral built in the second task's mkTask count from that task's start.
+  auto seq = []() -> Task<Wheels> {
+    co_await forwardFor(0.0, 0.5);
+    co_await mkTask([](const TaskState&) { return std::pair{wheels(integral(constant(1.0)), time()), never()}; });
+  };
+  std::vector<Wheels> s = samples(runTask(idleRobot(), seq()), 0.1, 8);
+  EXPECT_EQ(s[5].forward, 0.0);
+  EXPECT_EQ(s[5].turn, 0.0);
+  EXPECT_NEAR(s[7].forward, 0.2, 1e-12);
+  EXPECT_NEAR(s[7].turn, 0.2, 1e-12);
+}
+
+TEST(Task, ChainsOfZeroDurationTasksRunInOneStep) {
+  auto instant = [](double v) {
+    return mkTask([v](const TaskState&) { return std::pair{wheels(v, 0), predicate(constant(true))}; });
+  };
+  auto seq = [&instant]() -> Task<Wheels> {
+    for (int i = 0; i < 50; ++i) co_await instant(i);
+    co_await forwardFor(99, 1.0);
+  };
+  EXPECT_EQ(samples(runTask(idleRobot(), seq()), 0.1, 1)[0].forward, 99.0);
+}
+
+Task<Wheels> alreadyDone() {
+  return mkTask([](const TaskState&) { return std::pair{wheels(1, 0), predicate(constant(true))}; });
+}
+
+TEST(Task, AnEndlessChainAtOneInstantIsAnErrorNamingTheTask) {
+  auto loop = []() -> Task<Wheels> {
+    for (;;) co_await alreadyDone();
+  };
+  Behavior<Wheels> b = runTask(idleRobot(), loop());
+  try {
+    (void)samples(b, 0.1, 1);
+    FAIL() << "no error";
+  } catch (const FrobError& e) {
+    std::string m = e.what();
+    EXPECT_NE(m.find("'alreadyDone'"), std::string::npos) << m;
+    EXPECT_NE(m.find("t = 0.000 s"), std::string::npos) << m;
+  }
+}
+
+TEST(Task, TaskStateCapturesThePoseAtEachTransition) {
+  // "Turn right 90 degrees": a task that can only be written with initialOrientation.
+  auto turnRight = []() {
+    return mkTask([](const TaskState& ts) {
+      double goal = wrapAngle(ts.initialOrientation() - 90_deg);
+      Behavior<double> error = wrapAngle(goal - orientation(ts.robot()));
+      return std::pair{wheels(0, clamp(error * 2.0, -1.0, 1.0)), predicate(abs(error) < 1_deg)};
+    });
+  };
+  auto seq = [&turnRight]() -> Task<Wheels> {
+    TaskState first = co_await getTaskState();
+    EXPECT_EQ(first.initialOrientation(), 0.3);
+    co_await turnRight();
+    TaskState after = co_await getTaskState();
+    EXPECT_NEAR(after.initialOrientation(), wrapAngle(0.3 - 90_deg), 1_deg);
+    EXPECT_GT(after.startTime(), 0.5);
+    co_await setTaskState(TaskState(after).setInitialOrientation(0.0));
+    EXPECT_EQ((co_await getTaskState()).initialOrientation(), 0.0);
+  };
+  KinematicRobot k(3.0, Pose2{Point2::Zero(), 0.3});
+  k.run(runTask(k.robot(), seq()), 0.01, 5.0);
+  EXPECT_NEAR(k.pose().heading, wrapAngle(0.3 - 90_deg), 1_deg);
+}
+
+Task<Wheels> failAfter(double seconds, std::string why) {
+  return mkTaskE([=](const TaskState&) {
+    return std::tuple{wheels(0.1, 0), never(), after(seconds).map([why] { return RoboErr(why); })};
+  });
+}
+Task<Wheels> level3() { co_await failAfter(0.2, "deep"); }
+Task<Wheels> level2() {
+  co_await level3();
+  ADD_FAILURE() << "the error did not unwind level2";
+}
+Task<Wheels> level1() { co_await level2(); }
+
+TEST(Task, AnErrorDeepInsidePropagatesToTheNearestCatch) {
+  std::string caught;
+  auto withTry = [](std::string* out) -> Task<Wheels> {
+    try {
+      co_await level1();
+    } catch (const RoboErr& e) {
+      *out = e.what();
+    }
+    co_await forwardFor(5, 1);
+  };
+  std::vector<Wheels> s = samples(runTask(idleRobot(), withTry(&caught)), 0.1, 4);
+  EXPECT_EQ(caught, "deep");
+  EXPECT_EQ(s[2].forward, 5.0);  // the error at t = 0.2 hands over in the same step
+
+  std::string handled;
+  auto recover = [&handled](const RoboErr& e) {
+    handled = e.what();
+    return forwardFor(7, 1);
+  };
+  std::vector<Wheels> t = samples(runTask(idleRobot(), taskCatch(level1(), recover)), 0.1, 4);
+  EXPECT_EQ(handled, "deep");
+  EXPECT_EQ(t[3].forward, 7.0);
+}
+
+TEST(Task, TaskErrorRaisesAsAnAwaitAndAsATask) {
+  auto viaAwait = []() -> Task<Wheels> { co_await taskError(RoboErr("by await")); };
+  auto viaReturn = []() -> Task<Wheels> { return taskError(RoboErr("by return")); };
+  std::string a, b;
+  (void)samples(runTask(idleRobot(), taskCatch(viaAwait(), [&a](const RoboErr& e) { a = e.what(); return forwardFor(0, 1); })), 0.1, 1);
+  (void)samples(runTask(idleRobot(), taskCatch(viaReturn(), [&b](const RoboErr& e) { b = e.what(); return forwardFor(0, 1); })), 0.1, 1);
+  EXPECT_EQ(a, "by await");
+  EXPECT_EQ(b, "by return");
+}
+
+Task<Wheels> throwsLogicError() {
+  co_await forwardFor(1, 0.3);
+  throw std::logic_error("student bug");
+}
+
+TEST(Task, AnUncaughtExceptionNamesTheTaskAndTheTime) {
+  Behavior<Wheels> b = runTask(idleRobot(), throwsLogicError());
+  try {
+    (void)samples(b, 0.1, 10);
+    FAIL();
+  } catch (const FrobError& e) {
+    std::string m = e.what();
+    EXPECT_NE(m.find("'throwsLogicError'"), std::string::npos) << m;
+    EXPECT_NE(m.find("t = 0.300 s"), std::string::npos) << m;
+    EXPECT_NE(m.find("student bug"), std::string::npos) << m;
+  }
+  Behavior<Wheels> c = runTask(idleRobot(), failAfter(0.5, "wall lost"));
+  try {
+    (void)samples(c, 0.1, 10);
+    FAIL();
+  } catch (const FrobError& e) {
+    std::string m = e.what();
+    EXPECT_NE(m.find("'failAfter'"), std::string::npos) << m;
+    EXPECT_NE(m.find("wall lost"), std::string::npos) << m;
+  }
+}
+
+TEST(Task, ANonFiniteOutputNamesTheTaskAndTheTime) {
+  auto divides = []() {
+    return mkTask([](const TaskState&) { return std::pair{wheels(1.0 / (0.4 - time()) * 0.0, 0), never()}; });
+  };
+  auto seq = [&divides]() -> Task<Wheels> { co_await divides(); };
+  try {
+    (void)samples(runTask(idleRobot(), seq()), 0.1, 10);
+    FAIL();
+  } catch (const FrobError& e) {
+    std::string m = e.what();
+    EXPECT_NE(m.find("non-finite"), std::string::npos) << m;
+    EXPECT_NE(m.find("t = 0.400 s"), std::string::npos) << m;
+    EXPECT_NE(m.find("'lambda in "), std::string::npos) << m;  // the lambda that made the task
+  }
+}
+
+TEST(Task, TheTimelineRecordsEveryTaskWithHowItEnded) {
+  auto seq = []() -> Task<Wheels> {
+    int n = co_await countTo(2);
+    EXPECT_EQ(n, 2);
+    try {
+      co_await failAfter(0.1, "bumped");
+    } catch (const RoboErr&) {
+    }
+  };
+  Robot r = idleRobot();
+  (void)samples(runTask(r, seq()), 0.1, 5);
+  std::vector<TaskRecord> ended = r.debugChannel()->timeline().drainEnded();
+  ASSERT_EQ(ended.size(), 3u);
+  EXPECT_EQ(ended[0].name, "countTo");
+  EXPECT_EQ(ended[0].how, TaskEnd::Returned);
+  EXPECT_EQ(ended[0].detail, "2");
+  EXPECT_NEAR(ended[0].end, 0.2, 1e-12);
+  EXPECT_EQ(ended[0].depth, 1);
+  EXPECT_EQ(ended[1].name, "failAfter");
+  EXPECT_EQ(ended[1].how, TaskEnd::Failed);
+  EXPECT_EQ(ended[1].detail, "error: bumped");
+  EXPECT_EQ(ended[2].depth, 0);
+  EXPECT_EQ(ended[2].how, TaskEnd::Returned);
+  EXPECT_NE(ended[1].where.find("task_test.cpp:"), std::string::npos);
+}
+
+Task<Wheels> goAhead() {
+  return mkTask([](const TaskState& ts) {
+    const Robot& r = ts.robot();
+    return std::pair{wheels(0.3, 0), predicate(frontSonar(r) < 50_cm)};
+  });
+}
+Task<Wheels> turnLeft() {
+  return mkTask([](const TaskState& ts) {
+    const Robot& r = ts.robot();
+    return std::pair{wheels(0, 1.0), predicate(frontSonar(r) > 2.0)};
+  });
+}
+Task<Wheels> runAround() {
+  co_await goAhead();
+  co_await turnLeft();
+  co_await become(runAround());  // the paper's recursive runAround
+}
+
+TEST(Task, RecursiveRunAroundRunsAnHourInBoundedMemory) {
+  long frames0 = liveTaskFrames();
+  long nodes0 = liveNodeCount();
+  KinematicRobot k(3.0);
+  long maxFrames = 0, maxNodes = 0, laps = 0;
+  double previous = 0;
+  {
+    Behavior<Wheels> c = runTask(k.robot(), runAround());
+    k.run(c, 0.01, 3600.0, [&](const Instant& now, const Wheels& w) {
+      if (now.step % 1000 == 0) {
+        maxFrames = std::max(maxFrames, liveTaskFrames() - frames0);
+        maxNodes = std::max(maxNodes, liveNodeCount() - nodes0);
+      }
+      if (w.turn > 0 && previous == 0) ++laps;
+      previous = w.turn;
+    });
+    k.robot().debugChannel()->timeline().drainEnded();
+  }
+  EXPECT_GT(laps, 500);           // it went round and round
+  EXPECT_LE(maxFrames, 3);        // runAround and its current subtask (and the mkTask awaiting)
+  EXPECT_LE(maxNodes, 60);        // one task's graph and the robot's sensors
+  EXPECT_EQ(liveTaskFrames(), frames0);  // destroying the controller frees every frame
+}
+
+Task<Wheels> bugLike(int* restarts);
+Task<Wheels> bugBody() {
+  co_await forwardFor(0.2, 1.0);
+  co_await failAfter(0.5, "wall lost");  // BUG's followWall losing the wall
+}
+// The paper's bug restarting itself from taskCatch's handler.
+Task<Wheels> bugLike(int* restarts) {
+  return taskCatch(bugBody(), [restarts](const RoboErr&) {
+    ++*restarts;
+    return bugLike(restarts);
+  });
+}
+
+TEST(Task, ABugThatRestartsFromTaskCatchRunsAnHourInBoundedMemory) {
+  long frames0 = liveTaskFrames();
+  int restarts = 0;
+  long maxFrames = 0;
+  Robot r = idleRobot();
+  Behavior<Wheels> c = runTask(r, bugLike(&restarts));
+  Clock clock(0.01);
+  for (int i = 0; i < 360'000; ++i) {
+    (void)c.at(i == 0 ? clock.now() : clock.advance());
+    if (i % 1000 == 0) {
+      maxFrames = std::max(maxFrames, liveTaskFrames() - frames0);
+      r.debugChannel()->timeline().drainEnded();
+    }
+  }
+  EXPECT_EQ(restarts, 2399);  // one every 1.5 s for an hour
+  EXPECT_LE(maxFrames, 5);
+}
+
+TEST(Task, SameInputsGiveTheSameOutputsAndTimelineBitForBit) {
+  auto once = [] {
+    KinematicRobot k(2.5, Pose2{Point2{0.3, -0.2}, 1.0});
+    std::vector<Wheels> out;
+    k.run(runTask(k.robot(), runAround()), 0.01, 60.0, [&out](const Instant&, const Wheels& w) { out.push_back(w); });
+    std::vector<double> times;
+    for (const TaskRecord& rec : k.robot().debugChannel()->timeline().drainEnded()) times.push_back(rec.end);
+    return std::pair{out, times};
+  };
+  auto [a, ta] = once();
+  auto [b, tb] = once();
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(Wheels)), 0);
+  EXPECT_EQ(ta, tb);
+  EXPECT_GT(ta.size(), 10u);
+}
+
+TEST(Task, RunTaskFollowsTheFinalBehaviorAfterTheTaskEnds) {
+  std::vector<Wheels> s = samples(runTask(TaskState(idleRobot()), forwardFor(1, 0.2), wheels(0, -1)), 0.1, 4);
+  EXPECT_EQ(s[1], (Wheels{1, 0}));
+  EXPECT_EQ(s[2], (Wheels{0, -1}));
+}
+
+}  // namespace
+}  // namespace frob

@@ -1,0 +1,174 @@
+#include "frob/frob.hpp"
+
+#include <gtest/gtest.h>
+
+namespace frob {
+namespace {
+
+using namespace literals;
+
+Robot idleRobot() { return Robot(nomadSpec(), ScriptedSensors{}); }
+
+Task<Wheels> drive(double forward, double seconds) {
+  return mkTask([=](const TaskState&) { return std::pair{wheels(forward, 0), after(seconds)}; });
+}
+Task<Wheels> forever(double forward) {
+  return mkTask([=](const TaskState&) { return std::pair{wheels(forward, 0), never()}; });
+}
+
+std::vector<double> forwardOf(const Behavior<Wheels>& b, int steps) {
+  std::vector<double> out;
+  for (const Wheels& w : sample(b, 0.1, steps)) out.push_back(w.forward);
+  return out;
+}
+
+TEST(Transformers, AddErrorCoversEverySubtaskAndEndsWithTheWrappedTask) {
+  // The error event occurs at t = 0.25 local to the scope, while the scope's second subtask runs.
+  auto seq = []() -> Task<Wheels> {
+    auto inner = []() -> Task<Wheels> {
+      co_await drive(1, 0.1);
+      co_await forever(2);
+    };
+    std::string caught;
+    try {
+      co_await addError(after(0.25).map([] { return RoboErr("scoped"); }), inner());
+    } catch (const RoboErr& e) {
+      caught = e.what();
+    }
+    EXPECT_EQ(caught, "scoped");
+    // A scope that ended no longer raises: its event at t = 0.1 after it began is ignored here.
+    co_await addError(after(0.1).map([] { return RoboErr("late"); }), drive(3, 0.05));
+    co_await drive(4, 1.0);
+  };
+  EXPECT_EQ(forwardOf(runTask(idleRobot(), seq()), 7), (std::vector<double>{1, 2, 2, 3, 4, 4, 4}));
+}
+
+TEST(Transformers, TimeLimitAbortsOrPassesTheResultThrough) {
+  std::optional<Unit> late;
+  std::optional<Unit> early;
+  auto seq = [&]() -> Task<Wheels> {
+    late = co_await timeLimit(forever(1), 0.3);
+    early = co_await timeLimit(drive(2, 0.1), 1.0);
+  };
+  std::vector<double> f = forwardOf(runTask(idleRobot(), seq()), 6);
+  EXPECT_FALSE(late.has_value());
+  EXPECT_TRUE(early.has_value());
+  EXPECT_EQ(f, (std::vector<double>{1, 1, 1, 2, 0, 0}));
+}
+
+TEST(Transformers, WithBPairsTheResultWithTheBehaviorAtTheEnd) {
+  std::pair<Unit, double> got;
+  auto seq = [&]() -> Task<Wheels> {
+    got = co_await withB([](const TaskState&) { return integral(constant(2.0)); }, drive(1, 0.5));
+  };
+  (void)forwardOf(runTask(idleRobot(), seq()), 8);
+  EXPECT_NEAR(got.second, 1.0, 1e-12);  // 2 m/s for the task's 0.5 s
+}
+
+TEST(Transformers, WithExitAbortsAndReturnsTheEventsValue) {
+  int value = 0;
+  std::string error;
+  auto seq = [&]() -> Task<Wheels> {
+    value = co_await withExit(after(0.2).map([] { return 42; }), forever(1));
+    try {
+      co_await withExit(after(5.0).map([] { return 0; }), drive(2, 0.1));
+    } catch (const RoboErr& e) {
+      error = e.what();
+    }
+  };
+  (void)forwardOf(runTask(idleRobot(), seq()), 6);
+  EXPECT_EQ(value, 42);
+  EXPECT_NE(error.find("ended before its withExit event"), std::string::npos) << error;
+}
+
+TEST(Transformers, WithMyResultSeesItsOwnOutputOneStepLate) {
+  // Output: 1 + my previous output, so 1, 2, 3, ... (and 1 at the start, from the zero before).
+  auto counting = withMyResult([](Behavior<Wheels> mine) {
+    return mkTask([mine](const TaskState&) {
+      return std::pair{lift([](const Wheels& w) { return Wheels{w.forward + 1, 0}; }, mine), never()};
+    });
+  });
+  EXPECT_EQ(forwardOf(runTask(idleRobot(), std::move(counting)), 4), (std::vector<double>{1, 2, 3, 4}));
+}
+
+TEST(Transformers, WithFilterAppliesToEverySubtaskAndStopsAfter) {
+  auto seq = []() -> Task<Wheels> {
+    auto inner = []() -> Task<Wheels> {
+      co_await drive(1, 0.1);
+      co_await drive(2, 0.1);
+    };
+    co_await withFilter([](const Wheels& w) { return Wheels{w.forward * 10, w.turn}; }, inner());
+    co_await withFilter([](Behavior<Wheels> b) { return lift([](Wheels w, double t) { return Wheels{w.forward + t, 0}; }, b, time()); },
+                        drive(3, 0.2));
+    co_await drive(4, 1);
+  };
+  std::vector<double> f = forwardOf(runTask(idleRobot(), seq()), 6);
+  EXPECT_EQ(f[0], 10);
+  EXPECT_EQ(f[1], 20);
+  EXPECT_NEAR(f[2], 3.0, 1e-12);
+  EXPECT_NEAR(f[3], 3.1, 1e-12);
+  EXPECT_EQ(f[4], 4);
+}
+
+Task<Wheels, bool> driveTo(Point2 goal) {
+  return mkTask([goal](const TaskState& ts) {
+    return std::pair{wheels(0.5, 0), predicate(distance(place(ts.robot()), goal) < 0.1).map([] { return true; })};
+  });
+}
+Task<Wheels, bool> driveToWithPicture(Point2 goal) {
+  return withPicture(paintAt(goal, withColor(red, circle(10_cm))), driveTo(goal));
+}
+
+TEST(Transformers, WithPictureIsPublishedWhileTheTaskRunsAtTheRightPlace) {
+  Robot r(nomadSpec(), ScriptedSensors{.odometry = [](double t) { return Pose2{Point2{0.5 * t, 0}, 0}; }});
+  auto seq = []() -> Task<Wheels> {
+    co_await withPicture(withColor(blue, text("outer")), driveToWithPicture(Point2{1, 0}));
+    co_await forever(0);
+  };
+  Behavior<Wheels> c = runTask(r, seq());
+  Clock clock(0.1);
+  (void)c.at(clock.now());
+  Picture during = r.debugChannel()->picture(clock.now());
+  ASSERT_EQ(during.shapes().size(), 2u);  // the outer text and the goal circle
+  EXPECT_EQ(during.shapes()[1].kind, Shape::Kind::Circle);
+  EXPECT_EQ(during.shapes()[1].points[0], Point2(1, 0));
+  EXPECT_EQ(during.shapes()[1].color, red);
+  EXPECT_DOUBLE_EQ(during.shapes()[1].radius, 0.1);
+  for (int i = 0; i < 30; ++i) (void)c.at(clock.advance());
+  EXPECT_TRUE(r.debugChannel()->picture(clock.now()).empty());  // the goal was reached at t = 1.8
+}
+
+TEST(Transformers, AbortedTasksFreeTheirFramesAndBehaviors) {
+  long frames0 = liveTaskFrames();
+  long nodes0 = 0;
+  Robot r = idleRobot();
+  auto nested = []() -> Task<Wheels> {
+    auto deep = []() -> Task<Wheels> {
+      co_await withPicture(circle(1), forever(1));
+    };
+    co_await withFilter([](const Wheels& w) { return w; }, deep());
+  };
+  auto seq = [&nested]() -> Task<Wheels> {
+    (void)co_await timeLimit(nested(), 0.3);
+    (void)co_await withExit(after(0.2).map([] { return 1; }), nested());
+    co_await forever(0);
+  };
+  Behavior<Wheels> c = runTask(r, seq());
+  Clock clock(0.1);
+  (void)c.at(clock.now());
+  long during = liveTaskFrames() - frames0;
+  for (int i = 0; i < 4; ++i) (void)c.at(clock.advance());
+  nodes0 = liveNodeCount();
+  for (int i = 0; i < 6; ++i) (void)c.at(clock.advance());
+  EXPECT_GE(during, 6);                           // seq, timeLimit, nested, filter, deep, picture, atomic
+  EXPECT_LE(liveTaskFrames() - frames0, 2);       // seq and its final forever
+  EXPECT_LT(liveNodeCount(), nodes0);             // the aborted graphs are gone
+  EXPECT_TRUE(r.debugChannel()->picture(clock.now()).empty());
+  std::vector<TaskRecord> ended = r.debugChannel()->timeline().drainEnded();
+  int aborted = 0;
+  for (const TaskRecord& rec : ended) aborted += rec.how == TaskEnd::Aborted;
+  EXPECT_GE(aborted, 8);
+}
+
+}  // namespace
+}  // namespace frob

@@ -1,0 +1,110 @@
+// The registry of reference worlds, and the golden-hash determinism test per reference world
+// (as Box2D's test_determinism.c): fixed dt, step count and scripted commands, hash of every pose.
+#include "frob/worlds/registry.hpp"
+
+#include "frob/worlds/recorder.hpp"
+#include "frob/worlds/simulation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cinttypes>
+#include <cstdio>
+#include <algorithm>
+#include <map>
+#include <string>
+
+namespace frob::worlds {
+namespace {
+
+TEST(Registry, EveryReferenceWorldLoadsAndHasARobot) {
+  ASSERT_GE(referenceWorlds().size(), 7u);
+  for (const WorldEntry& e : referenceWorlds()) {
+    EXPECT_TRUE(worldPath(e).is_absolute()) << e.name;
+    Loaded<WorldDef> w = loadWorld(worldPath(e));
+    ASSERT_TRUE(w.ok()) << e.name << ": " << w.error;
+    EXPECT_FALSE(w->robots.empty()) << e.name;
+    EXPECT_EQ(w->description, e.description) << e.name;  // the file and the registry agree
+  }
+}
+
+TEST(Registry, FindsWorldsByName) {
+  ASSERT_NE(findWorld("maze"), nullptr);
+  EXPECT_EQ(findWorld("maze")->file, "maze.toml");
+  EXPECT_EQ(findWorld("no such world"), nullptr);
+  EXPECT_EQ(loadReferenceWorld("nowhere").error, "no reference world called 'nowhere'");
+  EXPECT_TRUE(loadReferenceWorld("empty").ok());
+}
+
+TEST(Registry, TheReferenceWorldsHaveWhatTheySay) {
+  const WorldDef maze = *loadReferenceWorld("maze");
+  EXPECT_GE(maze.walls.size(), 180u);
+  EXPECT_LE(maze.walls.size(), 260u);
+  EXPECT_EQ(maze.size, Vec2(20, 20));
+  EXPECT_TRUE(findPoint(*loadReferenceWorld("obstacles"), "goal").has_value());
+  EXPECT_GE(loadReferenceWorld("arena")->robots.size(), 4u);
+  EXPECT_GT(loadReferenceWorld("mesh")->walls.size(), 10u);
+  const WorldDef office = *loadReferenceWorld("office");
+  EXPECT_GT(office.walls.size(), 10u);
+  EXPECT_LT(office.walls.size(), 100u);  // merged into few rectangles, not one per pixel
+}
+
+// A fixed scripted command for robot `i` at step `k`: alternating turns, and a speed that follows
+// the front sonar (so noise reaches the trajectory), backing off when it reads close.
+Wheels script(std::int64_t k, std::size_t i, const SensorFrame& f) {
+  const int phase = static_cast<int>((k / 150 + static_cast<std::int64_t>(i)) % 4);
+  const double front = f.sonar.empty() ? 6.5 : f.sonar[0];
+  if (front < 0.5) return {.forward = -0.1, .turn = 0.8};
+  return {.forward = std::min(0.5, 0.3 * front), .turn = phase == 1 ? 0.6 : phase == 3 ? -0.4 : 0.0};
+}
+
+// Runs `name` for `steps` steps under the script and returns the hash of every true pose.
+std::uint64_t trajectoryHash(const WorldDef& world, int steps, int threads = 1) {
+  Simulation sim(world, {.threads = threads});
+  Recorder rec({.keepSteps = false});
+  std::vector<Wheels> wheels(sim.robotCount());
+  for (int k = 0; k < steps; ++k) {
+    sim.sense();
+    for (std::size_t i = 0; i < sim.robotCount(); ++i) wheels[i] = script(k, i, sim.frame(i));
+    rec.record(sim, wheels);
+    sim.step(wheels);
+  }
+  return rec.trajectoryHash();
+}
+
+// Golden hashes for 1000 steps at 100 Hz. They hold for Debian 12 x86_64, g++ 12, Box2D 2.4.1,
+// -O2 -ffp-contract=off (RelWithDebInfo). Another compiler, flags or libm may change them; then
+// check the trajectories by eye (frob render) before updating the constants.
+TEST(Registry, GoldenTrajectoryHashPerReferenceWorld) {
+  const std::map<std::string, std::uint64_t> golden = {
+      {"empty", 0x62bbb3680c43e097ULL},     {"corridor", 0x0e16f03e3ba9dc30ULL}, {"maze", 0xa7376972f00b5d3aULL},
+      {"office", 0x66438899377916c7ULL},    {"obstacles", 0x9df2b9447fd67623ULL}, {"mesh", 0xa84a04508b5b7fc3ULL},
+      {"arena", 0xc7e5d28af12696cbULL},
+  };
+  for (const WorldEntry& e : referenceWorlds()) {
+    const std::uint64_t h = trajectoryHash(*loadReferenceWorld(e.name), 1000);
+    auto expected = golden.find(std::string(e.name));
+    ASSERT_NE(expected, golden.end()) << "no golden hash for " << e.name;
+    EXPECT_EQ(h, expected->second) << e.name << ": actual hash 0x" << std::hex << h;
+    if (h != expected->second) std::printf("      {\"%s\", 0x%016" PRIx64 "ULL},\n", e.name.data(), h);
+  }
+}
+
+TEST(Registry, HundredRepeatedRunsAreBitIdentical) {
+  const WorldDef maze = *loadReferenceWorld("maze");
+  const WorldDef arena = *loadReferenceWorld("arena");
+  const std::uint64_t first = trajectoryHash(maze, 300), arenaFirst = trajectoryHash(arena, 300);
+  for (int run = 1; run < 100; ++run) {
+    ASSERT_EQ(trajectoryHash(maze, 300), first) << "run " << run;
+    ASSERT_EQ(trajectoryHash(arena, 300, 1 + run % 3), arenaFirst) << "run " << run;
+  }
+}
+
+TEST(Registry, AnotherSeedGivesAnotherRunWhereNoiseMatters) {
+  WorldDef maze = *loadReferenceWorld("maze");  // its robot has noisy odometry and sonar
+  const std::uint64_t a = trajectoryHash(maze, 600);
+  maze.seed += 1;
+  EXPECT_NE(trajectoryHash(maze, 600), a);  // the script reacts to (noisy) sonar
+}
+
+}  // namespace
+}  // namespace frob::worlds

@@ -1,0 +1,30 @@
+#pragma once
+// Test helper: small scenes are written inline as TOML in the test that uses them.
+
+#include "frob/worlds/simulation.hpp"
+#include "frob/worlds/world_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string_view>
+#include <vector>
+
+namespace frob::worlds::testing {
+
+// The world described by `toml`; fails the calling test (and returns an empty world) on an error.
+inline WorldDef scene(std::string_view toml) {
+  Loaded<WorldDef> w = parseWorld(toml, "scene.toml");
+  EXPECT_TRUE(w.ok()) << w.error;
+  return w.ok() ? *w : WorldDef{};
+}
+
+// Runs `steps` steps, every robot driven by the same `wheels`, sensing before each step.
+inline void drive(Simulation& sim, int steps, Wheels wheels) {
+  const std::vector<Wheels> all(sim.robotCount(), wheels);
+  for (int k = 0; k < steps; ++k) {
+    sim.sense();
+    sim.step(all);
+  }
+}
+
+}  // namespace frob::worlds::testing

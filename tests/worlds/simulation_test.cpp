@@ -1,0 +1,268 @@
+// The simulation: driving, walls that stop robots, bumpers, odometry, keys, several robots, threads.
+#include "frob/worlds/simulation.hpp"
+
+#include "scene.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace frob::worlds {
+namespace {
+
+using namespace frob::literals;
+using testing::drive;
+using testing::scene;
+
+TEST(Simulation, TimeIsStepsTimesDt) {
+  Simulation sim(scene("size = [4, 4]\n[[robot]]\nstart = [2, 2]\n"), {.dt = 0.02});
+  drive(sim, 50, {});
+  EXPECT_EQ(sim.stepCount(), 50);
+  EXPECT_DOUBLE_EQ(sim.time(), 50 * 0.02);
+}
+
+TEST(Simulation, DrivesForwardAndTurnsWithinItsLimits) {
+  Simulation sim(scene(R"(
+    size = [20, 20]
+    [[robot]]
+    start = [2, 10]
+    drive = { max_speed = 0.5, acceleration = 1.0, max_turn_rate = 1.0, turn_acceleration = 2.0 }
+  )"));
+  drive(sim, 100, {.forward = 2.0});  // asks for more than the limit
+  // Accelerates at 1 m/s^2 to 0.5 m/s over 0.5 s (0.125 m), then cruises 0.5 s: 0.375 m in all.
+  EXPECT_NEAR(sim.truePose(0).position.x(), 2.375, 0.01);
+  sim.sense();
+  EXPECT_NEAR(sim.frame(0).velocity, 0.5, 1e-5);
+  drive(sim, 100, {.turn = 1.0});
+  sim.sense();
+  EXPECT_NEAR(sim.frame(0).turnRate, 1.0, 1e-5);
+}
+
+TEST(Simulation, AWallStopsARobotAndItsBumperFiresOnce) {
+  // A robot 2 m from a wall drives straight at it for 10 s: it must stop at the wall, not pass it.
+  Simulation sim(scene(R"(
+    size = [6, 4]
+    enclosed = false
+    [[wall]]
+    from = [4, 0]
+    to = [4, 4]
+    [[robot]]
+    start = [2, 2]
+    bumpers = 8
+  )"));
+  std::vector<BumperHit> hits;
+  for (int k = 0; k < 1000; ++k) {
+    sim.sense();
+    hits.insert(hits.end(), sim.frame(0).bumps.begin(), sim.frame(0).bumps.end());
+    sim.step(std::vector<Wheels>{{.forward = 0.6}});
+    ASSERT_LT(sim.truePose(0).position.x(), 4.0 - 0.23) << "at step " << k;
+  }
+  // Box2D keeps a skin of about 1 cm between shapes (b2_polygonRadius) minus its slop.
+  EXPECT_GT(sim.truePose(0).position.x(), 4.0 - 0.23 - 0.03);
+  ASSERT_EQ(hits.size(), 1u);
+  EXPECT_EQ(hits[0].bumper, 0);
+  EXPECT_NEAR(hits[0].angle, 0.0, 1_deg);
+}
+
+TEST(Simulation, BackingOffAndHittingAgainIsASecondContact) {
+  Simulation sim(scene(R"(
+    size = [6, 4]
+    [[robot]]
+    start = [5, 2]
+  )"));
+  int hits = 0;
+  for (int k = 0; k < 900; ++k) {
+    sim.sense();
+    hits += static_cast<int>(sim.frame(0).bumps.size());
+    const double forward = k < 300 ? 0.5 : k < 500 ? -0.3 : 0.5;  // in, out, in again
+    sim.step(std::vector<Wheels>{{.forward = forward}});
+  }
+  EXPECT_EQ(hits, 2);
+}
+
+TEST(Simulation, AFastRobotNeverTunnelsThroughAThinWall) {
+  Simulation sim(scene(R"(
+    size = [6, 4]
+    enclosed = false
+    [[wall]]
+    from = [3, 0]
+    to = [3, 4]
+    [[robot]]
+    start = [1, 2]
+    radius = 0.05
+    drive = { max_speed = 20, acceleration = 1000 }
+  )"));
+  drive(sim, 200, {.forward = 20});  // 20 cm per step, four times the robot's radius
+  EXPECT_LT(sim.truePose(0).position.x(), 3.0 - 0.05);
+}
+
+TEST(Simulation, BumperReportsTheContactAngleRelativeToTheHeading) {
+  // Heading 45 degrees into a wall on the east: the contact is 45 degrees to the right.
+  Simulation sim(scene(R"(
+    size = [6, 6]
+    enclosed = false
+    [[wall]]
+    from = [4, 0]
+    to = [4, 6]
+    [[robot]]
+    start = [3, 1]
+    heading_deg = 45
+    bumpers = 8
+  )"));
+  std::vector<BumperHit> hits;
+  for (int k = 0; k < 600; ++k) {
+    sim.sense();
+    hits.insert(hits.end(), sim.frame(0).bumps.begin(), sim.frame(0).bumps.end());
+    sim.step(std::vector<Wheels>{{.forward = 0.5}});
+  }
+  ASSERT_EQ(hits.size(), 1u);  // sliding along the wall keeps the same bumper pressed
+  EXPECT_NEAR(hits[0].angle, -45_deg, 1_deg);
+  EXPECT_EQ(hits[0].bumper, 7);  // sectors of 45 degrees counter-clockwise from the front
+  EXPECT_NEAR(sim.truePose(0).heading, 45_deg, 1e-6);  // walls do not turn a synchro-drive robot
+}
+
+TEST(Simulation, OdometryWithoutNoiseIsTheTruePose) {
+  Simulation sim(scene("size = [10, 10]\n[[robot]]\nstart = [5, 5]\nheading_deg = 30\n"));
+  for (int k = 0; k < 500; ++k) {
+    sim.sense();
+    EXPECT_EQ(sim.frame(0).odometry, sim.truePose(0));
+    sim.step(std::vector<Wheels>{{.forward = 0.3, .turn = k < 250 ? 0.8 : -0.5}});
+  }
+}
+
+// Statistics over many robots driving in parallel lanes, each with its own noise stream.
+struct Drift {
+  double alongVariance = 0, headingVariance = 0, distance = 0;
+};
+
+Drift measureDrift(double translation, double heading, int robots) {
+  WorldDef w{.size = {40.0, 2.0 * robots + 2.0}};
+  for (int i = 0; i < robots; ++i)
+    w.robots.push_back({.start = {.position = Point2(1.0, 2.0 + 2.0 * i)},
+                        .sonar = {.count = 0},
+                        .odometry = {.translation = translation, .heading = heading}});
+  Simulation sim(w);
+  drive(sim, 2000, {.forward = 0.6});  // about 11.7 m each
+  Drift d;
+  for (int i = 0; i < robots; ++i) {
+    const Pose2 t = sim.truePose(i), o = sim.odometry(i);
+    d.distance += (t.position.x() - 1.0) / robots;
+    d.alongVariance += std::pow(o.position.x() - t.position.x(), 2) / robots;  // mean is 0: no bias
+    d.headingVariance += std::pow(angleDiff(t.heading, o.heading), 2) / robots;
+  }
+  return d;
+}
+
+TEST(Simulation, OdometryDriftsAtTheConfiguredRate) {
+  // Along-track error is a random walk: variance translation^2 * distance. With 200 robots the
+  // sample variance has a relative standard error of sqrt(2/200) = 10%; we allow 35% (3.5 sigma).
+  const Drift along = measureDrift(0.05, 0.0, 200);
+  EXPECT_NEAR(along.alongVariance / (0.05 * 0.05 * along.distance), 1.0, 0.35);
+  const Drift turn = measureDrift(0.0, 0.02, 200);
+  EXPECT_NEAR(turn.headingVariance / (0.02 * 0.02 * turn.distance), 1.0, 0.35);
+  EXPECT_EQ(turn.alongVariance > 0, true);  // a heading error bends the believed path
+}
+
+TEST(Simulation, ScriptedKeysArriveAtTheirStep) {
+  WorldDef w = scene(R"(
+    size = [4, 4]
+    [[robot]]
+    start = [1, 1]
+    [[robot]]
+    start = [3, 3]
+    [[key]]
+    time = 0.05
+    key = "a"
+    [[key]]
+    time = 0.05
+    key = "b"
+    robot = 1
+  )");
+  Simulation sim(w, {.keys = {{.time = 0.1, .key = 'z'}}});
+  std::vector<std::vector<char>> seen(2);
+  for (int k = 0; k < 20; ++k) {
+    sim.sense();
+    for (int i = 0; i < 2; ++i)
+      for (char c : sim.frame(i).keys) {
+        seen[i].push_back(c);
+        EXPECT_TRUE(k == 5 || k == 10) << k;
+      }
+    sim.step(std::vector<Wheels>(2));
+  }
+  EXPECT_EQ(seen[0], (std::vector<char>{'a', 'z'}));
+  EXPECT_EQ(seen[1], (std::vector<char>{'a', 'b', 'z'}));
+}
+
+TEST(Simulation, RobotsCollideWithEachOtherAndBothFeelIt) {
+  Simulation sim(scene(R"(
+    size = [8, 4]
+    [[robot]]
+    start = [2, 2]
+    [[robot]]
+    start = [6, 2]
+    heading_deg = 180
+  )"));
+  int hits[2] = {0, 0};
+  for (int k = 0; k < 600; ++k) {
+    sim.sense();
+    for (int i = 0; i < 2; ++i) hits[i] += static_cast<int>(sim.frame(i).bumps.size());
+    sim.step(std::vector<Wheels>(2, {.forward = 0.5}));
+  }
+  EXPECT_EQ(hits[0], 1);
+  EXPECT_EQ(hits[1], 1);
+  EXPECT_GE(sim.truePose(1).position.x() - sim.truePose(0).position.x(), 2 * 0.23 - 0.02);
+}
+
+TEST(Simulation, NonFiniteCommandsStopTheRobotAndAreCounted) {
+  Simulation sim(scene("size = [4, 4]\n[[robot]]\nstart = [2, 2]\n"));
+  drive(sim, 10, {.forward = NAN, .turn = INFINITY});
+  EXPECT_EQ(sim.invalidCommands(0), 10u);
+  EXPECT_EQ(sim.truePose(0).position, Point2(2, 2));
+}
+
+TEST(Simulation, EnclosedWorldsHaveFourMoreWalls) {
+  Simulation sim(scene("size = [4, 4]\n[[wall]]\nfrom = [1, 1]\nto = [1, 2]\n"));
+  EXPECT_EQ(sim.world().walls.size(), 1u);
+  EXPECT_EQ(sim.walls().size(), 5u);
+  EXPECT_EQ(sim.robotCount(), 0u);
+  drive(sim, 3, {});  // a world without robots still steps
+}
+
+TEST(Simulation, SensingInParallelGivesBitIdenticalResults) {
+  WorldDef w = scene(R"(
+    size = [12, 12]
+    seed = 5
+    [[wall]]
+    circle = [6, 6]
+    radius = 1
+  )");
+  for (int i = 0; i < 30; ++i)
+    w.robots.push_back({.start = {.position = Point2(1.0 + (i % 6) * 2.0, 1.0 + (i / 6) * 2.0 + (i / 6 >= 2 ? 2.0 : 0.0)),
+                                  .heading = 0.3 * i},
+                        .sonar = {.noise = 0.05},
+                        .odometry = {.translation = 0.05, .heading = 0.05, .turn = 0.05}});
+  ASSERT_EQ(checkWorld(w), "");
+  auto run = [&](int threads) {
+    Simulation sim(w, {.threads = threads});
+    std::vector<double> all;
+    for (int k = 0; k < 300; ++k) {
+      sim.sense();
+      std::vector<Wheels> wheels;
+      for (std::size_t i = 0; i < sim.robotCount(); ++i) {
+        const SensorFrame& f = sim.frame(i);
+        all.insert(all.end(), f.sonar.begin(), f.sonar.end());
+        all.push_back(f.odometry.position.x());
+        wheels.push_back({.forward = f.sonar[0] > 1.0 ? 0.5 : 0.0, .turn = f.sonar[0] > 1.0 ? 0.0 : 1.0});
+      }
+      sim.step(wheels);
+    }
+    return all;
+  };
+  const std::vector<double> one = run(1);
+  EXPECT_EQ(run(2), one);
+  EXPECT_EQ(run(3), one);
+}
+
+}  // namespace
+}  // namespace frob::worlds

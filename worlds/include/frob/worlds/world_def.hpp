@@ -1,0 +1,118 @@
+#pragma once
+/// Definitions of a simulated world: plain structs with defaults, filled with designated initializers
+/// in code or by the world-file loader (world_file.hpp). All lengths in metres, angles in radians.
+
+#include "frob/geometry.hpp"
+#include "frob/robot_values.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace frob::worlds {
+
+/// The shape of one wall.
+enum class WallShape {
+  Segment,    ///< points = {from, to}; a thin wall
+  Polyline,   ///< points = vertices (>= 2), joined in order; closed joins the last to the first
+  Rectangle,  ///< points = {min corner, max corner}; a solid axis-aligned block
+  Circle,     ///< points = {centre}; radius; a solid round pillar
+};
+
+/// One static wall.
+struct WallDef {
+  WallShape shape = WallShape::Segment;  ///< which of the shapes below
+  std::vector<Point2> points;            ///< meaning depends on shape (see WallShape)
+  double radius = 0.0;                   ///< Circle radius, metres
+  bool closed = false;                   ///< Polyline: also join the last vertex to the first
+};
+
+/// A thin wall from `a` to `b`.
+[[nodiscard]] WallDef segmentWall(const Point2& a, const Point2& b);
+/// A solid axis-aligned block between corners `lo` and `hi`.
+[[nodiscard]] WallDef rectangleWall(const Point2& lo, const Point2& hi);
+/// A solid round pillar.
+[[nodiscard]] WallDef circleWall(const Point2& centre, double radius);
+/// Thin walls joining `vertices` in order (and back to the first when `closed`).
+[[nodiscard]] WallDef polylineWall(std::vector<Point2> vertices, bool closed = false);
+
+/// A named point of interest (a goal, a landmark).
+struct NamedPoint {
+  std::string name;                  ///< e.g. "goal"
+  Point2 position = Point2::Zero();  ///< metres
+};
+
+/// A ring of sonars on a robot. Each sonar is a cone sampled by `rays` rays; it reads the nearest
+/// echo among its rays. A ray meeting a surface further than `specularCutoff` from the surface
+/// normal is reflected away and reads `maxRange`.
+struct SonarDef {
+  int count = 16;                    ///< sonars evenly spaced counter-clockwise from the front, unless `angles` is set
+  std::vector<double> angles;        ///< explicit directions relative to heading, radians; empty: evenly spaced
+  double cone = 25.0 * pi / 180.0;   ///< full cone width, radians
+  int rays = 5;                      ///< rays per cone, spread evenly across it (1: the axis only)
+  double minRange = 0.15;            ///< closest reading, metres
+  double maxRange = 6.5;             ///< reading when nothing echoes, metres
+  double specularCutoff = 22.5 * pi / 180.0;  ///< largest angle from a surface normal that still echoes, radians
+  double noise = 0.01;               ///< Gaussian noise standard deviation as a fraction of the range
+};
+
+/// Dead-reckoning noise. Errors accumulate as random walks: after travelling d metres and turning
+/// a radians, the along-track error has standard deviation translation*sqrt(d) metres and the
+/// heading error sqrt(heading^2*d + turn^2*a) radians. All zero: odometry equals the true pose.
+struct OdometryDef {
+  double translation = 0.0;  ///< along-track error, m per sqrt(m) travelled
+  double heading = 0.0;      ///< heading drift, rad per sqrt(m) travelled
+  double turn = 0.0;         ///< heading error, rad per sqrt(rad) turned
+};
+
+/// Synchro drive limits: commanded speeds are clamped, then approached at bounded acceleration.
+struct DriveDef {
+  double maxSpeed = 0.6;          ///< m/s (Nomad 200: about 0.6)
+  double maxTurnRate = 1.0;       ///< rad/s
+  double acceleration = 1.0;      ///< m/s^2
+  double turnAcceleration = 3.0;  ///< rad/s^2
+};
+
+/// One robot: a disc (Nomad 200 style) with sonars, bumpers and odometry.
+struct RobotDef {
+  std::string name;                  ///< may be empty; then "robot<i>"
+  Pose2 start;                       ///< true starting pose
+  double radius = 0.23;              ///< body radius, metres
+  double density = 50.0;             ///< kg/m^2 (only matters when robots push each other)
+  int bumpers = 8;                   ///< bumper sectors around the body, counter-clockwise from the front
+  SonarDef sonar;                    ///< sonar ring
+  OdometryDef odometry;              ///< dead-reckoning noise
+  DriveDef drive;                    ///< speed and acceleration limits
+};
+
+/// A scripted key press, delivered in the sensor frame of the first step at or after `time`.
+struct KeyEventDef {
+  double time = 0.0;  ///< seconds of logical time
+  char key = ' ';     ///< the key
+  int robot = -1;     ///< robot index, or -1 for every robot
+};
+
+/// A whole world. The world spans [0, size.x] x [0, size.y]; everything lies inside it.
+struct WorldDef {
+  std::string description;              ///< one line for people, may be empty
+  Vec2 size{10.0, 10.0};                ///< metres
+  bool enclosed = true;                 ///< put thin walls along the four sides
+  std::vector<WallDef> walls;           ///< static walls (bitmap and mesh maps are already expanded here)
+  std::vector<NamedPoint> points;       ///< goals and landmarks
+  std::vector<RobotDef> robots;         ///< at least one for a useful run
+  std::vector<KeyEventDef> keys;        ///< scripted keyboard
+  std::uint64_t seed = 1;               ///< the one seed every random stream derives from
+};
+
+/// The fixed spec a controller may know about robot `r`: radius and sonar directions and ranges.
+[[nodiscard]] RobotSpec robotSpec(const RobotDef& r);
+/// Sonar directions of `s` relative to heading, radians (explicit `angles`, or `count` evenly spaced).
+[[nodiscard]] std::vector<double> sonarAngles(const SonarDef& s);
+/// The named point `name`, if the world has one.
+[[nodiscard]] std::optional<Point2> findPoint(const WorldDef& w, const std::string& name);
+/// Checks a world built in code for contradictions (robot inside a wall, outside the world, bad
+/// sizes). Returns an empty string when it is valid, else a readable message naming the field.
+[[nodiscard]] std::string checkWorld(const WorldDef& w);
+
+}  // namespace frob::worlds

@@ -1,0 +1,210 @@
+#include "ray_caster.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace frob::worlds::detail {
+namespace {
+
+constexpr std::uint32_t kPillar = 0x80000000u;  // marks a static item as a circle, not a segment
+constexpr int kMaxCells = 1 << 16;              // keeps the grid small enough to rebuild cheaply
+
+}  // namespace
+
+RayCaster::RayCaster(const std::vector<WallDef>& walls, const Point2& lo, const Point2& hi) {
+  auto addSeg = [&](const Point2& a, const Point2& b) {
+    const Vec2 d = b - a;
+    const Vec2 n = Vec2(-d.y(), d.x()).normalized();
+    segs_.push_back({a.x(), a.y(), d.x(), d.y(), n.x(), n.y()});
+  };
+  for (const WallDef& w : walls) {
+    const auto& v = w.points;
+    switch (w.shape) {
+      case WallShape::Segment: addSeg(v[0], v[1]); break;
+      case WallShape::Polyline:
+        for (std::size_t i = 0; i + 1 < v.size(); ++i) addSeg(v[i], v[i + 1]);
+        if (w.closed) addSeg(v.back(), v.front());
+        break;
+      case WallShape::Rectangle: {
+        const Point2 a = v[0], c = v[1], b(c.x(), a.y()), d(a.x(), c.y());
+        addSeg(a, b), addSeg(b, c), addSeg(c, d), addSeg(d, a);
+        break;
+      }
+      case WallShape::Circle: circles_.push_back({v[0].x(), v[0].y(), w.radius}); break;
+    }
+  }
+
+  // Cells about as wide as the mean spacing of walls, within bounds that keep the grid small.
+  x0_ = lo.x(), y0_ = lo.y();
+  const double w = std::max(hi.x() - lo.x(), 1e-3), h = std::max(hi.y() - lo.y(), 1e-3);
+  const double items = static_cast<double>(segs_.size() + circles_.size()) + 1.0;
+  cell_ = std::clamp(std::sqrt(w * h / items) * 0.75, 0.25, 8.0);
+  cell_ = std::max(cell_, std::sqrt(w * h / kMaxCells) * 1.01);
+  inv_ = 1.0 / cell_;
+  nx_ = std::max(1, static_cast<int>(std::ceil(w * inv_)));
+  ny_ = std::max(1, static_cast<int>(std::ceil(h * inv_)));
+
+  // Bin each item into every cell its bounding box touches (count, then fill).
+  const std::size_t cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
+  static_.start.assign(cells + 1, 0);
+  auto forEachCell = [&](std::uint32_t item, auto&& visit) {
+    double ax, ay, bx, by;
+    if (item & kPillar) {
+      const Circle& c = circles_[item & ~kPillar];
+      ax = c.cx - c.r, ay = c.cy - c.r, bx = c.cx + c.r, by = c.cy + c.r;
+    } else {
+      const Seg& s = segs_[item];
+      ax = std::min(s.ax, s.ax + s.dx), bx = std::max(s.ax, s.ax + s.dx);
+      ay = std::min(s.ay, s.ay + s.dy), by = std::max(s.ay, s.ay + s.dy);
+    }
+    int i0, j0, i1, j1;
+    cellRange(ax, ay, bx, by, i0, j0, i1, j1);
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i) visit(j * nx_ + i);
+  };
+  std::vector<std::uint32_t> all;
+  for (std::uint32_t s = 0; s < segs_.size(); ++s) all.push_back(s);
+  for (std::uint32_t c = 0; c < circles_.size(); ++c) all.push_back(c | kPillar);
+  for (auto item : all) forEachCell(item, [&](int c) { ++static_.start[c + 1]; });
+  for (std::size_t c = 0; c < cells; ++c) static_.start[c + 1] += static_.start[c];
+  static_.items.resize(static_.start[cells]);
+  std::vector<std::uint32_t> fill(static_.start.begin(), static_.start.end() - 1);
+  for (auto item : all) forEachCell(item, [&](int c) { static_.items[fill[c]++] = item; });
+  head_.assign(cells, -1);
+}
+
+void RayCaster::cellRange(double ax, double ay, double bx, double by, int& i0, int& j0, int& i1, int& j1) const {
+  auto clampCell = [](double v, int n) {
+    return static_cast<int>(std::clamp(std::floor(v), 0.0, static_cast<double>(n - 1)));
+  };
+  constexpr double eps = 1e-9;
+  i0 = clampCell((ax - x0_) * inv_ - eps, nx_), i1 = clampCell((bx - x0_) * inv_ + eps, nx_);
+  j0 = clampCell((ay - y0_) * inv_ - eps, ny_), j1 = clampCell((by - y0_) * inv_ + eps, ny_);
+}
+
+void RayCaster::setRobots(const std::vector<Point2>& centres, const std::vector<double>& radii) {
+  for (int c : touched_) head_[c] = -1;
+  touched_.clear();
+  links_.clear();
+  outside_.clear();
+  robots_.resize(centres.size());
+  const double x1 = x0_ + nx_ * cell_, y1 = y0_ + ny_ * cell_;
+  for (std::size_t k = 0; k < centres.size(); ++k) {
+    const Circle c{centres[k].x(), centres[k].y(), radii[k]};
+    robots_[k] = c;
+    if (centres.size() == 1) break;  // a robot never sees itself: nothing to bin
+    if (!(c.cx - c.r >= x0_ && c.cy - c.r >= y0_ && c.cx + c.r <= x1 && c.cy + c.r <= y1)) {
+      outside_.push_back(static_cast<int>(k));  // includes NaN positions: tested directly, never binned
+      continue;
+    }
+    int i0, j0, i1, j1;
+    cellRange(c.cx - c.r, c.cy - c.r, c.cx + c.r, c.cy + c.r, i0, j0, i1, j1);
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i) {
+        const int cell = j * nx_ + i;
+        if (head_[cell] < 0) touched_.push_back(cell);
+        links_.push_back({static_cast<int>(k), head_[cell]});
+        head_[cell] = static_cast<int>(links_.size() - 1);
+      }
+  }
+}
+
+namespace {
+
+// Ray against circle (cx, cy, r); updates `best` when nearer. A ray starting inside reads 0.
+inline void hitCircle(double cx, double cy, double r, double ox, double oy, double ux, double uy, RayHit& best) {
+  const double px = ox - cx, py = oy - cy;
+  const double b = px * ux + py * uy;
+  const double c = px * px + py * py - r * r;
+  if (c < 0) {
+    best = {0.0, 1.0};
+    return;
+  }
+  const double disc = b * b - c;
+  if (disc < 0 || b > 0) return;  // misses, or the circle is behind the origin
+  const double t = -b - std::sqrt(disc);
+  if (t >= best.distance) return;
+  const double nx = (px + t * ux) / r, ny = (py + t * uy) / r;
+  best = {t, std::abs(nx * ux + ny * uy)};
+}
+
+}  // namespace
+
+[[gnu::always_inline]] inline void RayCaster::testCell(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const {
+  for (std::uint32_t k = static_.start[cell], end = static_.start[cell + 1]; k < end; ++k) {
+    const std::uint32_t item = static_.items[k];
+    if (item & kPillar) [[unlikely]] {
+      const Circle& c = circles_[item & ~kPillar];
+      hitCircle(c.cx, c.cy, c.r, ox, oy, ux, uy, best);
+      continue;
+    }
+    // Ray o + t u against segment a + v d: t = tn / denom, v = vn / denom. Compared without
+    // dividing (the sign of denom folded in) so that only an accepted hit costs a division.
+    const Seg& s = segs_[item];
+    double denom = ux * s.dy - uy * s.dx;  // cross(u, d); 0 when parallel: an edge-on wall is never heard
+    const double wx = s.ax - ox, wy = s.ay - oy;
+    double tn = wx * s.dy - wy * s.dx;
+    double vn = wx * uy - wy * ux;
+    const double sign = std::copysign(1.0, denom);  // exact: flips signs only, and avoids a branch
+    denom *= sign, tn *= sign, vn *= sign;
+    if (!((tn >= 0.0) & (vn >= 0.0) & (vn <= denom) & (tn < best.distance * denom))) continue;
+    best = {tn / denom, std::abs(ux * s.nx + uy * s.ny)};
+  }
+  for (int l = head_[cell]; l >= 0; l = links_[l].next)
+    if (links_[l].robot != self) {
+      const Circle& c = robots_[links_[l].robot];
+      hitCircle(c.cx, c.cy, c.r, ox, oy, ux, uy, best);
+    }
+}
+
+RayHit RayCaster::cast(const Point2& origin, const Vec2& dir, double range, int self) const {
+  const double ox = origin.x(), oy = origin.y(), ux = dir.x(), uy = dir.y();
+  RayHit best{range, 1.0};
+  for (int k : outside_)
+    if (k != self) hitCircle(robots_[k].cx, robots_[k].cy, robots_[k].r, ox, oy, ux, uy, best);
+
+  // Clip [0, range] to the grid's box (slab method), unless the ray starts inside it (the usual case).
+  const double ix = 1.0 / ux, iy = 1.0 / uy;  // +-inf along an axis; the slabs and steps handle it
+  const double x1 = x0_ + nx_ * cell_, y1 = y0_ + ny_ * cell_;
+  double tmin = 0.0, tmax = range;
+  if (!(ox >= x0_ && ox <= x1 && oy >= y0_ && oy <= y1)) [[unlikely]] {
+    if (ux != 0.0) {
+      const double a = (x0_ - ox) * ix, b = (x1 - ox) * ix;
+      tmin = std::max(tmin, std::min(a, b)), tmax = std::min(tmax, std::max(a, b));
+    } else if (ox < x0_ || ox > x1) {
+      tmax = -1.0;
+    }
+    if (uy != 0.0) {
+      const double a = (y0_ - oy) * iy, b = (y1 - oy) * iy;
+      tmin = std::max(tmin, std::min(a, b)), tmax = std::min(tmax, std::max(a, b));
+    } else if (oy < y0_ || oy > y1) {
+      tmax = -1.0;
+    }
+  }
+  if (tmin <= tmax) {
+    // Walk the cells the ray crosses, nearest first; stop once the best hit lies within the cell.
+    const double px = (ox + tmin * ux - x0_) * inv_, py = (oy + tmin * uy - y0_) * inv_;  // >= 0 up to rounding
+    int i = std::min(std::max(static_cast<int>(px), 0), nx_ - 1);
+    int j = std::min(std::max(static_cast<int>(py), 0), ny_ - 1);
+    const int si = ux > 0 ? 1 : -1, sj = uy > 0 ? 1 : -1;
+    const double dtx = cell_ * std::abs(ix), dty = cell_ * std::abs(iy);
+    double tx = ux > 0 ? (x0_ + (i + 1) * cell_ - ox) * ix : ux < 0 ? (x0_ + i * cell_ - ox) * ix : INFINITY;
+    double ty = uy > 0 ? (y0_ + (j + 1) * cell_ - oy) * iy : uy < 0 ? (y0_ + j * cell_ - oy) * iy : INFINITY;
+    for (;;) {
+      testCell(j * nx_ + i, ox, oy, ux, uy, self, best);
+      const double exit = std::min(tx, ty);
+      if (best.distance <= exit || exit >= tmax) break;
+      if (tx < ty) {
+        i += si, tx += dtx;
+        if (static_cast<unsigned>(i) >= static_cast<unsigned>(nx_)) break;
+      } else {
+        j += sj, ty += dty;
+        if (static_cast<unsigned>(j) >= static_cast<unsigned>(ny_)) break;
+      }
+    }
+  }
+  if (best.distance >= range) best.distance = INFINITY;
+  return best;
+}
+
+}  // namespace frob::worlds::detail

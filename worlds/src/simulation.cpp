@@ -1,0 +1,332 @@
+#include "frob/worlds/simulation.hpp"
+
+#include "random.hpp"
+#include "ray_caster.hpp"
+#include "workers.hpp"
+
+#include <box2d/box2d.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace frob::worlds {
+namespace {
+
+constexpr int kVelocityIterations = 8;
+constexpr int kPositionIterations = 3;
+
+// One robot's state apart from its Box2D body.
+struct RobotState {
+  RobotDef def;
+  RobotSpec spec;
+  b2Body* body = nullptr;
+  std::vector<Vec2> rayDirs;       // per sonar, per ray: direction relative to heading
+  std::vector<Vec2> sonarOffsets;  // per sonar: sensor position relative to the centre, robot frame
+  double cosCutoff = 1.0;
+  double forward = 0.0, turn = 0.0;  // commands after acceleration limits
+  Pose2 odometry;
+  Pose2 previous;                    // true pose at the end of the last step
+  bool noiselessOdometry = true;
+  std::vector<int> pressed;          // per bumper: contacts touching it
+  std::vector<BumperHit> bumps;      // bumper contacts that began during the last step
+  std::size_t invalid = 0;
+  detail::Rng sonarRng, odometryRng;
+  SensorFrame frame;
+};
+
+// A touching contact and the bumper it pressed.
+struct Press {
+  b2Contact* contact;
+  int robot, bumper;
+};
+
+Pose2 poseOf(const b2Body* body) {
+  const b2Vec2 p = body->GetPosition();
+  return {Point2(p.x, p.y), wrapAngle(body->GetAngle())};
+}
+
+}  // namespace
+
+struct Simulation::Impl : b2ContactListener {
+  WorldDef world;
+  std::vector<WallDef> walls;
+  SimOptions options;
+  std::uint64_t seed = 1;
+  b2World physics{b2Vec2(0.0f, 0.0f)};
+  std::vector<RobotState> robots;
+  std::vector<Press> presses;
+  std::vector<std::pair<std::int64_t, KeyEventDef>> keys;  // (step, key), sorted by step
+  detail::RayCaster caster;
+  detail::Workers workers;
+  std::int64_t steps = 0;
+  std::vector<Point2> centres;
+  std::vector<double> radii;
+
+  Impl(const WorldDef& w, const SimOptions& o)
+      : world(w), walls(withEnclosure(w)), options(o), seed(o.seed.value_or(w.seed)),
+        caster(walls, Point2(-1.0, -1.0), w.size + Point2(1.0, 1.0)), workers(o.threads) {
+    assert(o.dt > 0 && std::isfinite(o.dt) && "SimOptions::dt must be positive");
+    physics.SetContactListener(this);
+    buildWalls();
+    for (std::size_t i = 0; i < w.robots.size(); ++i) addRobot(w.robots[i], i);
+    for (const auto& list : {w.keys, o.keys})
+      for (const KeyEventDef& k : list)
+        keys.emplace_back(static_cast<std::int64_t>(std::ceil(k.time / o.dt - 1e-9)), k);
+    std::stable_sort(keys.begin(), keys.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  }
+
+  static std::vector<WallDef> withEnclosure(const WorldDef& w) {
+    std::vector<WallDef> all = w.walls;
+    if (w.enclosed) {
+      const Point2 a(0, 0), b(w.size.x(), 0), c = w.size, d(0, w.size.y());
+      for (auto [p, q] : {std::pair{a, b}, {b, c}, {c, d}, {d, a}}) all.push_back(segmentWall(p, q));
+    }
+    return all;
+  }
+
+  void buildWalls() {
+    b2BodyDef def;
+    b2Body* ground = physics.CreateBody(&def);
+    auto v = [](const Point2& p) { return b2Vec2(static_cast<float>(p.x()), static_cast<float>(p.y())); };
+    auto edge = [&](const Point2& a, const Point2& b) {
+      b2EdgeShape e;
+      e.SetTwoSided(v(a), v(b));
+      ground->CreateFixture(&e, 0.0f);
+    };
+    for (const WallDef& w : walls) {
+      const auto& p = w.points;
+      switch (w.shape) {
+        case WallShape::Segment: edge(p[0], p[1]); break;
+        case WallShape::Polyline:
+          for (std::size_t i = 0; i + 1 < p.size(); ++i) edge(p[i], p[i + 1]);
+          if (w.closed) edge(p.back(), p.front());
+          break;
+        case WallShape::Rectangle: {
+          b2PolygonShape box;
+          const Vec2 half = (p[1] - p[0]) / 2;
+          box.SetAsBox(static_cast<float>(half.x()), static_cast<float>(half.y()), v(p[0] + half), 0.0f);
+          ground->CreateFixture(&box, 0.0f);
+          break;
+        }
+        case WallShape::Circle: {
+          b2CircleShape c;
+          c.m_p = v(p[0]);
+          c.m_radius = static_cast<float>(w.radius);
+          ground->CreateFixture(&c, 0.0f);
+          break;
+        }
+      }
+    }
+  }
+
+  void addRobot(const RobotDef& d, std::size_t index) {
+    RobotState r;
+    r.def = d;
+    r.spec = robotSpec(d);
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    def.position.Set(static_cast<float>(d.start.position.x()), static_cast<float>(d.start.position.y()));
+    def.angle = static_cast<float>(d.start.heading);
+    def.fixedRotation = true;  // synchro drive: the body turns only when commanded
+    r.body = physics.CreateBody(&def);
+    b2CircleShape disc;
+    disc.m_radius = static_cast<float>(d.radius);
+    b2FixtureDef fixture;
+    fixture.shape = &disc;
+    fixture.density = static_cast<float>(d.density);
+    fixture.friction = 0.0f;
+    fixture.restitution = 0.0f;
+    fixture.userData.pointer = index + 1;  // 0 marks walls
+    r.body->CreateFixture(&fixture);
+
+    // Ray directions spread evenly across each cone; sensors sit on the body's rim.
+    const SonarDef& s = d.sonar;
+    for (double a : r.spec.sonarAngles) {
+      r.sonarOffsets.push_back(d.radius * unitVector(a));
+      // Axis first, then alternately left and right moving outwards: 0, +1, -1, +2, -2 steps.
+      const double spacing = s.rays == 1 ? 0.0 : s.cone / (s.rays - 1);
+      const double centre = (s.rays - 1) / 2.0;
+      std::vector<double> offsets;
+      for (int k = 0; k < s.rays; ++k) offsets.push_back((k - centre) * spacing);
+      std::stable_sort(offsets.begin(), offsets.end(),
+                       [](double x, double y) { return std::abs(x) < std::abs(y) || (std::abs(x) == std::abs(y) && x > y); });
+      for (double off : offsets) r.rayDirs.push_back(unitVector(a + off));
+    }
+    r.cosCutoff = std::cos(s.specularCutoff);
+    r.previous = poseOf(r.body);
+    r.odometry = r.previous;
+    r.noiselessOdometry = d.odometry.translation == 0 && d.odometry.heading == 0 && d.odometry.turn == 0;
+    r.pressed.assign(static_cast<std::size_t>(d.bumpers), 0);
+    r.sonarRng = detail::Rng(seed, index, detail::Stream::Sonar);
+    r.odometryRng = detail::Rng(seed, index, detail::Stream::Odometry);
+    r.frame.sonar.assign(r.spec.sonarAngles.size(), s.maxRange);
+    r.frame.odometry = r.odometry;
+    robots.push_back(std::move(r));
+  }
+
+  // Box2D calls this during Step when two fixtures start touching.
+  void BeginContact(b2Contact* contact) override {
+    b2WorldManifold m;
+    contact->GetWorldManifold(&m);
+    const int n = contact->GetManifold()->pointCount;
+    if (n == 0) return;
+    b2Vec2 at = m.points[0];
+    if (n == 2) at = 0.5f * (m.points[0] + m.points[1]);
+    for (b2Fixture* f : {contact->GetFixtureA(), contact->GetFixtureB()}) {
+      const std::uintptr_t id = f->GetUserData().pointer;
+      if (id == 0) continue;
+      RobotState& r = robots[id - 1];
+      const b2Vec2 c = r.body->GetPosition();
+      const double angle = angleDiff(r.body->GetAngle(), std::atan2(double(at.y) - c.y, double(at.x) - c.x));
+      const double sector = 2.0 * pi / r.def.bumpers;
+      const int bumper = static_cast<int>(std::floor(std::fmod(angle + sector / 2 + 2 * pi, 2 * pi) / sector)) %
+                         r.def.bumpers;
+      presses.push_back({contact, static_cast<int>(id - 1), bumper});
+      // A bumper switch closes once however many things press it.
+      if (r.pressed[bumper]++ == 0) r.bumps.push_back({bumper, angle});
+    }
+  }
+
+  void EndContact(b2Contact* contact) override {
+    for (std::size_t k = 0; k < presses.size();) {
+      if (presses[k].contact == contact) {
+        --robots[presses[k].robot].pressed[presses[k].bumper];
+        presses[k] = presses.back();
+        presses.pop_back();
+      } else {
+        ++k;
+      }
+    }
+  }
+
+  // Sonar readings of robot `i`: per sonar the nearest echoing ray, with noise proportional to range.
+  void senseSonar(std::size_t i) {
+    RobotState& r = robots[i];
+    const SonarDef& s = r.def.sonar;
+    const Pose2 pose = poseOf(r.body);
+    const double c = std::cos(pose.heading), sn = std::sin(pose.heading);
+    auto rotate = [&](const Vec2& v) { return Vec2(c * v.x() - sn * v.y(), sn * v.x() + c * v.y()); };
+    const std::size_t rays = static_cast<std::size_t>(s.rays);
+    for (std::size_t j = 0; j < r.sonarOffsets.size(); ++j) {
+      const Point2 origin = pose.position + rotate(r.sonarOffsets[j]);
+      // Rays run from the cone's axis outwards, each only as far as the nearest echo so far: a
+      // surface beyond it cannot change the reading, and the shorter walk saves most of the work.
+      double nearest = s.maxRange;
+      for (std::size_t k = 0; k < rays; ++k) {
+        const detail::RayHit hit =
+            caster.cast(origin, rotate(r.rayDirs[j * rays + k]), nearest, static_cast<int>(i));
+        if (hit.cosIncidence >= r.cosCutoff) nearest = std::min(nearest, hit.distance);  // else reflected away
+      }
+      const double noise = r.sonarRng.gaussian();  // drawn for every sonar so the stream never depends on hits
+      r.frame.sonar[j] = nearest >= s.maxRange ? s.maxRange
+                                               : std::clamp(nearest * (1.0 + s.noise * noise), s.minRange, s.maxRange);
+    }
+  }
+
+  // Dead reckoning: the true motion of the last step in the robot's frame, with noise, added to the belief.
+  void updateOdometry(RobotState& r) {
+    const Pose2 now = poseOf(r.body);
+    const Pose2 before = r.previous;
+    r.previous = now;
+    if (r.noiselessOdometry) {
+      r.odometry = now;
+      return;
+    }
+    const double c = std::cos(before.heading), s = std::sin(before.heading);
+    const Vec2 d = now.position - before.position;
+    double dx = c * d.x() + s * d.y();
+    const double dy = -s * d.x() + c * d.y();
+    double dh = angleDiff(before.heading, now.heading);
+    const OdometryDef& o = r.def.odometry;
+    const double g1 = r.odometryRng.gaussian(), g2 = r.odometryRng.gaussian();
+    const double dist = std::abs(dx), turned = std::abs(dh);
+    dx += o.translation * std::sqrt(dist) * g1;
+    dh += std::sqrt(o.heading * o.heading * dist + o.turn * o.turn * turned) * g2;
+    const double oc = std::cos(r.odometry.heading), os = std::sin(r.odometry.heading);
+    r.odometry.position += Vec2(oc * dx - os * dy, os * dx + oc * dy);
+    r.odometry.heading = wrapAngle(r.odometry.heading + dh);
+  }
+};
+
+Simulation::Simulation(const WorldDef& world, const SimOptions& options)
+    : impl_(std::make_unique<Impl>(world, options)) {}
+Simulation::~Simulation() = default;
+Simulation::Simulation(Simulation&&) noexcept = default;
+Simulation& Simulation::operator=(Simulation&&) noexcept = default;
+
+void Simulation::sense() {
+  Impl& s = *impl_;
+  s.centres.resize(s.robots.size());
+  s.radii.resize(s.robots.size());
+  for (std::size_t i = 0; i < s.robots.size(); ++i) {
+    const b2Vec2 p = s.robots[i].body->GetPosition();
+    s.centres[i] = Point2(p.x, p.y);
+    s.radii[i] = s.robots[i].def.radius;
+  }
+  s.caster.setRobots(s.centres, s.radii);
+  // Ray casting is read-only on shared state and each robot has its own random stream, so robots
+  // may be sensed on any thread in any order with bit-identical results.
+  s.workers.run(s.robots.size(), [&s](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) s.senseSonar(i);
+  });
+  auto first = std::lower_bound(s.keys.begin(), s.keys.end(), s.steps,
+                                [](const auto& k, std::int64_t step) { return k.first < step; });
+  for (std::size_t i = 0; i < s.robots.size(); ++i) {
+    RobotState& r = s.robots[i];
+    SensorFrame& f = r.frame;
+    const Pose2 pose = poseOf(r.body);
+    const b2Vec2 v = r.body->GetLinearVelocity();
+    f.odometry = r.odometry;
+    f.velocity = std::cos(pose.heading) * v.x + std::sin(pose.heading) * v.y;
+    f.turnRate = r.body->GetAngularVelocity();
+    f.bumps = r.bumps;
+    f.keys.clear();
+    for (auto k = first; k != s.keys.end() && k->first == s.steps; ++k)
+      if (k->second.robot < 0 || static_cast<std::size_t>(k->second.robot) == i) f.keys.push_back(k->second.key);
+  }
+}
+
+const SensorFrame& Simulation::frame(std::size_t i) const { return impl_->robots.at(i).frame; }
+
+void Simulation::step(std::span<const Wheels> wheels) {
+  Impl& s = *impl_;
+  assert(wheels.size() == s.robots.size() && "step() needs one Wheels per robot");
+  const double dt = s.options.dt;
+  for (std::size_t i = 0; i < s.robots.size(); ++i) {
+    RobotState& r = s.robots[i];
+    r.bumps.clear();
+    Wheels w = i < wheels.size() ? wheels[i] : Wheels{};
+    if (!std::isfinite(w.forward) || !std::isfinite(w.turn)) {
+      ++r.invalid;
+      w = {};
+    }
+    // Clamp to the speed limits, then approach at bounded acceleration.
+    const DriveDef& d = r.def.drive;
+    const double forward = std::clamp(w.forward, -d.maxSpeed, d.maxSpeed);
+    const double turn = std::clamp(w.turn, -d.maxTurnRate, d.maxTurnRate);
+    r.forward += std::clamp(forward - r.forward, -d.acceleration * dt, d.acceleration * dt);
+    r.turn += std::clamp(turn - r.turn, -d.turnAcceleration * dt, d.turnAcceleration * dt);
+    const float heading = r.body->GetAngle();
+    r.body->SetLinearVelocity(static_cast<float>(r.forward) * b2Vec2(std::cos(heading), std::sin(heading)));
+    r.body->SetAngularVelocity(static_cast<float>(r.turn));
+  }
+  s.physics.Step(static_cast<float>(dt), kVelocityIterations, kPositionIterations);
+  for (RobotState& r : s.robots) s.updateOdometry(r);
+  ++s.steps;
+}
+
+std::size_t Simulation::robotCount() const { return impl_->robots.size(); }
+const RobotSpec& Simulation::spec(std::size_t i) const { return impl_->robots.at(i).spec; }
+const RobotDef& Simulation::robot(std::size_t i) const { return impl_->robots.at(i).def; }
+Pose2 Simulation::truePose(std::size_t i) const { return poseOf(impl_->robots.at(i).body); }
+Pose2 Simulation::odometry(std::size_t i) const { return impl_->robots.at(i).odometry; }
+std::size_t Simulation::invalidCommands(std::size_t i) const { return impl_->robots.at(i).invalid; }
+std::int64_t Simulation::stepCount() const { return impl_->steps; }
+double Simulation::time() const { return static_cast<double>(impl_->steps) * impl_->options.dt; }
+double Simulation::dt() const { return impl_->options.dt; }
+std::uint64_t Simulation::seed() const { return impl_->seed; }
+const WorldDef& Simulation::world() const { return impl_->world; }
+const std::vector<WallDef>& Simulation::walls() const { return impl_->walls; }
+
+}  // namespace frob::worlds

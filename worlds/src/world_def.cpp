@@ -1,0 +1,203 @@
+#include "frob/worlds/world_def.hpp"
+
+#include "check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace frob::worlds {
+
+WallDef segmentWall(const Point2& a, const Point2& b) { return {.shape = WallShape::Segment, .points = {a, b}}; }
+
+WallDef rectangleWall(const Point2& lo, const Point2& hi) {
+  return {.shape = WallShape::Rectangle, .points = {lo, hi}};
+}
+
+WallDef circleWall(const Point2& centre, double radius) {
+  return {.shape = WallShape::Circle, .points = {centre}, .radius = radius};
+}
+
+WallDef polylineWall(std::vector<Point2> vertices, bool closed) {
+  return {.shape = WallShape::Polyline, .points = std::move(vertices), .closed = closed};
+}
+
+std::vector<double> sonarAngles(const SonarDef& s) {
+  if (!s.angles.empty()) return s.angles;
+  std::vector<double> a;
+  for (int i = 0; i < s.count; ++i) a.push_back(wrapAngle(2.0 * pi * i / s.count));
+  return a;
+}
+
+RobotSpec robotSpec(const RobotDef& r) {
+  return {.radius = r.radius, .sonarAngles = sonarAngles(r.sonar), .sonarMinRange = r.sonar.minRange,
+          .sonarMaxRange = r.sonar.maxRange};
+}
+
+std::optional<Point2> findPoint(const WorldDef& w, const std::string& name) {
+  for (const auto& p : w.points)
+    if (p.name == name) return p.position;
+  return std::nullopt;
+}
+
+std::string checkWorld(const WorldDef& w) { return detail::checkWorld(w, detail::SourceLines{}); }
+
+namespace detail {
+
+std::string where(const SourceLines& at, int line) {
+  return line > 0 ? at.file + ":" + std::to_string(line) + ": " : at.file + ": ";
+}
+
+double distanceToSegment(const Point2& p, const Point2& a, const Point2& b) {
+  const Vec2 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).norm();
+}
+
+namespace {
+
+constexpr double kMinLength = 1e-3;   // shorter walls are degenerate for Box2D
+constexpr double kMaxSize = 1000.0;   // Box2D works in floats; keep coordinates modest
+constexpr std::size_t kMaxRobots = 1000;
+
+int lineAt(const std::vector<int>& lines, std::size_t i) { return i < lines.size() ? lines[i] : 0; }
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+bool finite(const Point2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
+
+// Distance from `p` to the nearest point of wall `wall` (0 inside a solid wall).
+double distanceToWall(const Point2& p, const WallDef& wall) {
+  const auto& v = wall.points;
+  switch (wall.shape) {
+    case WallShape::Segment: return distanceToSegment(p, v[0], v[1]);
+    case WallShape::Rectangle: {
+      const double dx = std::max({v[0].x() - p.x(), 0.0, p.x() - v[1].x()});
+      const double dy = std::max({v[0].y() - p.y(), 0.0, p.y() - v[1].y()});
+      return std::hypot(dx, dy);
+    }
+    case WallShape::Circle: return std::max(0.0, (p - v[0]).norm() - wall.radius);
+    case WallShape::Polyline: {
+      double d = INFINITY;
+      for (std::size_t i = 0; i + 1 < v.size(); ++i) d = std::min(d, distanceToSegment(p, v[i], v[i + 1]));
+      if (wall.closed) d = std::min(d, distanceToSegment(p, v.back(), v.front()));
+      return d;
+    }
+  }
+  return INFINITY;
+}
+
+// Empty if `wall` is well formed and inside the world, else what is wrong with which field.
+std::string checkWall(const WallDef& wall, const Vec2& size) {
+  const auto& v = wall.points;
+  const std::size_t need = wall.shape == WallShape::Circle ? 1 : 2;
+  if (v.size() < need || (wall.shape != WallShape::Polyline && v.size() != need))
+    return "points: expected " + std::to_string(need) + (wall.shape == WallShape::Polyline ? " or more" : "") +
+           " points, got " + std::to_string(v.size());
+  for (const auto& p : v) {
+    if (!finite(p)) return "points: coordinates must be finite";
+    if (p.x() < -1e-9 || p.y() < -1e-9 || p.x() > size.x() + 1e-9 || p.y() > size.y() + 1e-9)
+      return "points: (" + fmt(p.x()) + ", " + fmt(p.y()) + ") lies outside the world [0, " + fmt(size.x()) +
+             "] x [0, " + fmt(size.y()) + "]";
+  }
+  switch (wall.shape) {
+    case WallShape::Segment:
+      if ((v[1] - v[0]).norm() < kMinLength) return "to: the wall has (almost) zero length";
+      break;
+    case WallShape::Rectangle:
+      if (v[1].x() - v[0].x() < kMinLength || v[1].y() - v[0].y() < kMinLength)
+        return "rect: the max corner must exceed the min corner by at least 1 mm in x and y";
+      break;
+    case WallShape::Circle:
+      if (!(wall.radius >= kMinLength) || !std::isfinite(wall.radius)) return "radius: must be at least 0.001 m";
+      if (v[0].x() - wall.radius < -1e-9 || v[0].y() - wall.radius < -1e-9 ||
+          v[0].x() + wall.radius > size.x() + 1e-9 || v[0].y() + wall.radius > size.y() + 1e-9)
+        return "radius: the pillar reaches outside the world";
+      break;
+    case WallShape::Polyline:
+      for (std::size_t i = 0; i + 1 < v.size(); ++i)
+        if ((v[i + 1] - v[i]).norm() < kMinLength)
+          return "polyline: vertices " + std::to_string(i) + " and " + std::to_string(i + 1) + " coincide";
+      break;
+  }
+  return {};
+}
+
+std::string checkRobot(const RobotDef& r) {
+  auto bad = [](double v, double lo, double hi) { return !(v >= lo && v <= hi); };  // NaN is bad too
+  if (bad(r.radius, 0.01, 5.0)) return "radius: must lie in [0.01, 5] m";
+  if (bad(r.density, 1e-3, 1e6)) return "density: must lie in [0.001, 1e6] kg/m^2";
+  if (r.bumpers < 1 || r.bumpers > 64) return "bumpers: must lie in [1, 64]";
+  const SonarDef& s = r.sonar;
+  if (s.angles.empty() && (s.count < 0 || s.count > 64)) return "sonar.count: must lie in [0, 64]";
+  if (s.angles.size() > 64) return "sonar.angles: at most 64 sonars";
+  for (double a : s.angles)
+    if (!std::isfinite(a)) return "sonar.angles: must be finite";
+  if (s.rays < 1 || s.rays > 64) return "sonar.rays: must lie in [1, 64]";
+  if (bad(s.cone, 0.0, pi)) return "sonar.cone: must lie in [0, 180] degrees";
+  if (bad(s.minRange, 0.0, 100.0)) return "sonar.min_range: must lie in [0, 100] m";
+  if (bad(s.maxRange, s.minRange, 100.0) || s.maxRange <= s.minRange)
+    return "sonar.max_range: must exceed min_range and be at most 100 m";
+  if (bad(s.specularCutoff, 0.0, pi / 2)) return "sonar.specular_cutoff: must lie in [0, 90] degrees";
+  if (bad(s.noise, 0.0, 1.0)) return "sonar.noise: must lie in [0, 1]";
+  const OdometryDef& o = r.odometry;
+  if (bad(o.translation, 0.0, 10.0)) return "odometry.translation: must lie in [0, 10]";
+  if (bad(o.heading, 0.0, 10.0)) return "odometry.heading: must lie in [0, 10]";
+  if (bad(o.turn, 0.0, 10.0)) return "odometry.turn: must lie in [0, 10]";
+  const DriveDef& d = r.drive;
+  if (bad(d.maxSpeed, 0.0, 20.0)) return "drive.max_speed: must lie in [0, 20] m/s";
+  if (bad(d.maxTurnRate, 0.0, 50.0)) return "drive.max_turn_rate: must lie in [0, 50] rad/s";
+  if (bad(d.acceleration, 1e-6, 1e3)) return "drive.acceleration: must lie in (0, 1000] m/s^2";
+  if (bad(d.turnAcceleration, 1e-6, 1e4)) return "drive.turn_acceleration: must lie in (0, 10000] rad/s^2";
+  if (!finite(r.start.position) || !std::isfinite(r.start.heading)) return "start: must be finite";
+  return {};
+}
+
+}  // namespace
+
+std::string checkWorld(const WorldDef& w, const SourceLines& at) {
+  if (!(w.size.x() > 0 && w.size.y() > 0 && w.size.x() <= kMaxSize && w.size.y() <= kMaxSize))
+    return where(at, at.size) + "size: width and height must lie in (0, 1000] m, got [" + fmt(w.size.x()) + ", " +
+           fmt(w.size.y()) + "]";
+  for (std::size_t i = 0; i < w.walls.size(); ++i)
+    if (auto e = checkWall(w.walls[i], w.size); !e.empty())
+      return where(at, lineAt(at.walls, i)) + "wall[" + std::to_string(i) + "]." + e;
+  for (std::size_t i = 0; i < w.points.size(); ++i) {
+    const Point2& p = w.points[i].position;
+    if (!finite(p) || p.x() < 0 || p.y() < 0 || p.x() > w.size.x() || p.y() > w.size.y())
+      return where(at, lineAt(at.points, i)) + "points." + w.points[i].name + ": lies outside the world";
+  }
+  if (w.robots.size() > kMaxRobots) return where(at, 0) + "robot: at most 1000 robots";
+  for (std::size_t i = 0; i < w.robots.size(); ++i) {
+    const RobotDef& r = w.robots[i];
+    const std::string field = where(at, lineAt(at.robots, i)) + "robot[" + std::to_string(i) + "].";
+    if (auto e = checkRobot(r); !e.empty()) return field + e;
+    const Point2& p = r.start.position;
+    if (p.x() - r.radius < 0 || p.y() - r.radius < 0 || p.x() + r.radius > w.size.x() ||
+        p.y() + r.radius > w.size.y())
+      return field + "start: the robot (radius " + fmt(r.radius) + " m) reaches outside the world";
+    for (std::size_t k = 0; k < w.walls.size(); ++k)
+      if (distanceToWall(p, w.walls[k]) < r.radius)
+        return field + "start: the robot (radius " + fmt(r.radius) + " m) is inside or touching wall[" +
+               std::to_string(k) + "]";
+    for (std::size_t k = 0; k < i; ++k)
+      if ((w.robots[k].start.position - p).norm() < w.robots[k].radius + r.radius)
+        return field + "start: the robot overlaps robot[" + std::to_string(k) + "]";
+  }
+  for (std::size_t i = 0; i < w.keys.size(); ++i) {
+    const KeyEventDef& k = w.keys[i];
+    const std::string field = where(at, lineAt(at.keys, i)) + "key[" + std::to_string(i) + "].";
+    if (!(k.time >= 0 && k.time < 1e7)) return field + "time: must lie in [0, 1e7) s";
+    if (k.robot < -1 || k.robot >= static_cast<int>(w.robots.size()))
+      return field + "robot: no robot with index " + std::to_string(k.robot);
+  }
+  return {};
+}
+
+}  // namespace detail
+}  // namespace frob::worlds
