@@ -94,6 +94,16 @@ TEST(Renderer, SameSceneGivesIdenticalPixels) {
   EXPECT_EQ(r2.render(scene, plots).rgba, first.rgba);
 }
 
+TEST(Renderer, ChaseViewIsPureToo) {
+  Renderer r = make({.width = 160, .height = 120, .view = ViewMode::Chase});
+  const FrameScene scene = roomScene();
+  FrameScene other = scene;
+  other.robots[0].pose.heading += 1.0;
+  const Image first = r.render(scene);
+  EXPECT_NE(r.render(other).rgba, first.rgba);
+  EXPECT_EQ(r.render(scene).rgba, first.rgba);
+}
+
 TEST(Renderer, EmptySceneAndOddInputsDoNotCrash) {
   Renderer r = make({.width = 64, .height = 48, .view = ViewMode::Chase, .layout = PanelLayout::PlotRight});
   FrameScene scene;
