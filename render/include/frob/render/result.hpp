@@ -1,0 +1,55 @@
+#pragma once
+/// Results of the renderer's steps that can fail on outside data (files, sizes, paths).
+
+#include <optional>
+#include <string>
+#include <utility>
+
+namespace frob::render {
+
+/// Success, or a readable message saying what went wrong and with which file.
+class Status {
+ public:
+  Status() = default;  ///< success
+  /// A failure carrying `message`.
+  [[nodiscard]] static Status failure(std::string message) { return Status(std::move(message)); }
+  /// True when nothing went wrong.
+  [[nodiscard]] bool ok() const { return !failed_; }
+  /// True when nothing went wrong.
+  explicit operator bool() const { return ok(); }
+  /// The message; empty on success.
+  [[nodiscard]] const std::string& error() const { return message_; }
+
+ private:
+  explicit Status(std::string message) : message_(std::move(message)), failed_(true) {}
+  std::string message_;
+  bool failed_ = false;
+};
+
+/// A value of type T, or the readable message of why there is none.
+template <class T>
+class Result {
+ public:
+  /// A success holding `value`.
+  Result(T value) : value_(std::move(value)) {}  // NOLINT(google-explicit-constructor)
+  /// A failure carrying the message of `status` (which must have failed).
+  Result(Status status) : status_(std::move(status)) {}  // NOLINT(google-explicit-constructor)
+  /// True when a value is held.
+  [[nodiscard]] bool ok() const { return value_.has_value(); }
+  /// True when a value is held.
+  explicit operator bool() const { return ok(); }
+  /// The value; only when ok().
+  [[nodiscard]] T& value() { return *value_; }
+  /// The value; only when ok().
+  [[nodiscard]] const T& value() const { return *value_; }
+  /// The message; empty on success.
+  [[nodiscard]] const std::string& error() const { return status_.error(); }
+  /// The outcome without the value.
+  [[nodiscard]] const Status& status() const { return status_; }
+
+ private:
+  std::optional<T> value_;
+  Status status_;
+};
+
+}  // namespace frob::render

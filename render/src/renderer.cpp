@@ -1,0 +1,210 @@
+#include "frob/render/renderer.hpp"
+
+#include "chase_view.hpp"
+#include "draw.hpp"
+#include "font_atlas.hpp"
+#include "gl_context.hpp"
+#include "model.hpp"
+
+#include <GL/gl.h>
+
+#include <cstring>
+#include <optional>
+
+namespace frob::render {
+
+namespace {
+
+// The definition with empty asset paths replaced by the ones the build found.
+RenderDef withDefaults(RenderDef def) {
+  if (def.fontFile.empty()) def.fontFile = FROB_FONT_FILE;
+  if (def.monoFontFile.empty()) def.monoFontFile = FROB_MONO_FONT_FILE;
+  if (def.robotModelFile.empty()) def.robotModelFile = FROB_ROBOT_MODEL_FILE;
+  return def;
+}
+
+Status checkSizes(const RenderDef& def) {
+  if (def.width < 16 || def.height < 16 || def.width > 8192 || def.height > 8192) {
+    return Status::failure("render: frame size " + std::to_string(def.width) + "x" + std::to_string(def.height) +
+                           " is outside 16..8192 pixels");
+  }
+  if (def.layout != PanelLayout::WorldOnly && !(def.plotShare >= 0.05 && def.plotShare <= 0.95)) {
+    return Status::failure("render: plotShare " + std::to_string(def.plotShare) + " is outside 0.05..0.95");
+  }
+  return {};
+}
+
+// Draws a canvas with the current matrices, one call per run of triangles of the same mode.
+void drawBatch(const detail::Canvas& canvas) {
+  const std::vector<detail::Vertex>& v = canvas.vertices();
+  const std::vector<detail::Run>& runs = canvas.runs();
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const std::size_t first = runs[i].first, end = i + 1 < runs.size() ? runs[i + 1].first : v.size();
+    if (end == first) continue;
+    if (runs[i].mode == detail::Mode::Opaque) glDisable(GL_BLEND); else glEnable(GL_BLEND);
+    // Pointers start at the run so that Mesa uploads only this run's vertices.
+    glVertexPointer(3, GL_FLOAT, sizeof(detail::Vertex), &v[first].x);
+    glColorPointer(4, GL_UNSIGNED_BYTE, sizeof(detail::Vertex), &v[first].color);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(end - first));
+  }
+}
+
+}  // namespace
+
+struct Renderer::Impl {
+  RenderDef def;
+  std::unique_ptr<detail::GlContext> gl;
+  std::unique_ptr<detail::FontAtlas> fonts;
+  std::optional<detail::Mesh> model;
+  detail::Canvas overlay;
+  detail::ChaseLayers chase;
+
+  void begin(const Color& clear, Image& out);
+  void draw2d();
+  void finish(Image& out);
+};
+
+Status validate(const RenderDef& given) {
+  const RenderDef def = withDefaults(given);
+  if (Status s = checkSizes(def); !s) return s;
+  auto fonts = detail::FontAtlas::create(def.fontFile, def.monoFontFile, def.textPixels);
+  if (!fonts) return fonts.status();
+  if (def.view == ViewMode::Chase) {
+    if (auto model = detail::loadModel(def.robotModelFile); !model) return model.status();
+  }
+  return {};
+}
+
+Result<Renderer> Renderer::create(const RenderDef& given) {
+  auto impl = std::make_unique<Impl>();
+  impl->def = withDefaults(given);
+  const RenderDef& def = impl->def;
+  if (Status s = checkSizes(def); !s) return s;
+  auto fonts = detail::FontAtlas::create(def.fontFile, def.monoFontFile, def.textPixels);
+  if (!fonts) return fonts.status();
+  impl->fonts = std::move(fonts.value());
+  if (def.view == ViewMode::Chase) {
+    auto model = detail::loadModel(def.robotModelFile);
+    if (!model) return model.status();
+    impl->model = std::move(model.value());
+  }
+  auto gl = detail::GlContext::create(def.width, def.height, def.view == ViewMode::Chase, def.rasterThreads);
+  if (!gl) return gl.status();
+  impl->gl = std::move(gl.value());
+
+  // Fixed state: client vertex arrays, alpha blending (per run), alpha writes off so frames stay
+  // opaque. Text is not drawn by GL at all (see OverlayOp). A scratch buffer makes the context
+  // current for this; frames are drawn into the caller's image.
+  std::vector<std::uint8_t> scratch(static_cast<std::size_t>(def.width) * def.height * 4);
+  impl->gl->makeCurrent(scratch.data());
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glDisable(GL_DITHER);
+  glDisable(GL_CULL_FACE);
+  glDepthFunc(GL_LEQUAL);
+  return Renderer(std::move(impl));
+}
+
+Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
+Renderer::~Renderer() = default;
+
+const RenderDef& Renderer::def() const { return impl_->def; }
+
+void Renderer::Impl::begin(const Color& bg, Image& out) {
+  // GL draws straight into the caller's image: no copy afterwards.
+  out.width = def.width;
+  out.height = def.height;
+  out.rgba.resize(static_cast<std::size_t>(def.width) * def.height * 4);
+  gl->makeCurrent(out.rgba.data());
+  glViewport(0, 0, def.width, def.height);
+  glClearColor(bg.r, bg.g, bg.b, 1.0f);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  // Only the chase view has (and clears) a depth buffer: clearing is a good share of a frame's cost.
+  glClear(def.view == ViewMode::Chase ? GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT : GL_COLOR_BUFFER_BIT);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+  overlay.clear();
+}
+
+void Renderer::Impl::draw2d() {
+  glViewport(0, 0, def.width, def.height);
+  glDisable(GL_DEPTH_TEST);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, def.width, def.height, 0, -1, 1);  // pixels, y down
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  drawBatch(overlay);
+}
+
+void Renderer::Impl::finish(Image& out) {
+  gl->finish();
+  fonts->composite(overlay.overlay(), out.rgba.data(), out.width, out.height);
+}
+
+Image Renderer::render(const FrameScene& scene, const PlotSet& plots) {
+  Image out;
+  renderInto(scene, plots, out);
+  return out;
+}
+
+void Renderer::renderInto(const FrameScene& scene, const PlotSet& plots, Image& out) {
+  Impl& m = *impl_;
+  const bool topDown = m.def.view == ViewMode::TopDown;
+  m.begin(topDown ? detail::palette::floor : detail::palette::background, out);
+  const detail::Panels panels = detail::layoutPanels(m.def);
+  const auto& w = panels.world;
+  m.overlay.setClip(static_cast<int>(w.x), static_cast<int>(w.y), static_cast<int>(w.x + w.w), static_cast<int>(w.y + w.h));
+  if (m.def.view == ViewMode::TopDown) {
+    const detail::Mapping map = detail::fitTopDown(scene.bounds, m.def.margin, panels.world);
+    const detail::TextSink text = [&](const Point2& at, const std::string& s, Color col) {
+      m.fonts->draw(m.overlay, detail::Font::Sans, map.map(at), s, detail::rgba8(col));
+    };
+    detail::drawGround(m.overlay, *m.fonts, m.def, scene, map, true, text, &panels.world);
+  } else {
+    detail::buildChase(m.chase, m.overlay, *m.fonts, m.def, scene, *m.model, panels.world);
+    const auto& vp = panels.world;
+    glViewport(static_cast<GLint>(vp.x), static_cast<GLint>(m.def.height - vp.y - vp.h), static_cast<GLsizei>(vp.w),
+               static_cast<GLsizei>(vp.h));
+    glMatrixMode(GL_PROJECTION);
+    const Eigen::Matrix4f proj = m.chase.viewProj.cast<float>();
+    glLoadMatrixf(proj.data());
+    glMatrixMode(GL_MODELVIEW);
+    // The ground canvas has y pointing down the screen (y = -world y): flip it back.
+    const float flip[16] = {1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    glLoadMatrixf(flip);
+    glDisable(GL_DEPTH_TEST);
+    drawBatch(m.chase.ground);
+    glLoadIdentity();
+    glEnable(GL_DEPTH_TEST);
+    drawBatch(m.chase.solid);
+  }
+  if (m.def.hud) detail::drawHud(m.overlay, *m.fonts, scene, panels.world);
+  if (panels.plots.w > 0) {
+    const auto& p = panels.plots;
+    m.overlay.setClip(static_cast<int>(p.x), static_cast<int>(p.y), static_cast<int>(p.x + p.w), static_cast<int>(p.y + p.h));
+    detail::drawPlots(m.overlay, *m.fonts, plots, scene.time, panels.plots);
+  }
+  m.draw2d();
+  m.finish(out);
+}
+
+Image Renderer::renderPlots(const PlotSet& plots, double now) {
+  Impl& m = *impl_;
+  Image out;
+  m.begin(white, out);
+  detail::drawPlots(m.overlay, *m.fonts, plots, now,
+                    {0, 0, static_cast<double>(m.def.width), static_cast<double>(m.def.height)});
+  m.draw2d();
+  m.finish(out);
+  return out;
+}
+
+Vec2 Renderer::worldToPixel(const FrameScene& scene, const Point2& p) const {
+  const detail::Panels panels = detail::layoutPanels(impl_->def);
+  return detail::fitTopDown(scene.bounds, impl_->def.margin, panels.world).map(p);
+}
+
+}  // namespace frob::render

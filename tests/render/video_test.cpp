@@ -1,0 +1,163 @@
+// MP4 output decodes to what was written; bad setups fail before any frame; no partial files remain.
+#include "frob/render/video.hpp"
+
+#include <gtest/gtest.h>
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+}
+
+#include <filesystem>
+
+namespace frob::render {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::path(FROB_ACTUAL_DIR) / "video_test" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+Image solid(int w, int h, std::uint8_t shade) {
+  Image img{.width = w, .height = h, .rgba = std::vector<std::uint8_t>(static_cast<std::size_t>(w) * h * 4, shade)};
+  for (std::size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;
+  return img;
+}
+
+struct Decoded {
+  int frames = 0, width = 0, height = 0;
+  std::string codec;
+};
+
+// Decodes every frame of `path` with libavformat and libavcodec.
+Decoded decode(const std::string& path) {
+  Decoded out;
+  AVFormatContext* fmt = nullptr;
+  if (avformat_open_input(&fmt, path.c_str(), nullptr, nullptr) < 0) return out;
+  avformat_find_stream_info(fmt, nullptr);
+  const AVCodec* dec = nullptr;
+  const int stream = av_find_best_stream(fmt, AVMEDIA_TYPE_VIDEO, -1, -1, &dec, 0);
+  AVCodecContext* ctx = avcodec_alloc_context3(dec);
+  avcodec_parameters_to_context(ctx, fmt->streams[stream]->codecpar);
+  avcodec_open2(ctx, dec, nullptr);
+  out.codec = dec->name;
+  AVPacket* pkt = av_packet_alloc();
+  AVFrame* frame = av_frame_alloc();
+  auto drain = [&] {
+    while (avcodec_receive_frame(ctx, frame) == 0) {
+      ++out.frames;
+      out.width = frame->width;
+      out.height = frame->height;
+    }
+  };
+  while (av_read_frame(fmt, pkt) >= 0) {
+    if (pkt->stream_index == stream) {
+      avcodec_send_packet(ctx, pkt);
+      drain();
+    }
+    av_packet_unref(pkt);
+  }
+  avcodec_send_packet(ctx, nullptr);
+  drain();
+  av_frame_free(&frame);
+  av_packet_free(&pkt);
+  avcodec_free_context(&ctx);
+  avformat_close_input(&fmt);
+  return out;
+}
+
+TEST(Video, DecodesToTheFramesWritten) {
+  const fs::path dir = scratch("decode");
+  const std::string path = (dir / "run.mp4").string();
+  Result<VideoWriter> v = VideoWriter::open({.path = path, .width = 160, .height = 96, .fps = 30});
+  ASSERT_TRUE(v.ok()) << v.error();
+  EXPECT_FALSE(fs::exists(path)) << "the video must not appear under its name before close()";
+  EXPECT_TRUE(fs::exists(path + ".partial"));
+  for (int i = 0; i < 45; ++i) ASSERT_TRUE(v.value().write(solid(160, 96, static_cast<std::uint8_t>(i * 5))).ok());
+  EXPECT_EQ(v.value().frameCount(), 45);
+  const Status closed = v.value().close();
+  ASSERT_TRUE(closed.ok()) << closed.error();
+  EXPECT_FALSE(fs::exists(path + ".partial"));
+  const Decoded d = decode(path);
+  EXPECT_EQ(d.codec, "h264");
+  EXPECT_EQ(d.frames, 45);
+  EXPECT_EQ(d.width, 160);
+  EXPECT_EQ(d.height, 96);
+}
+
+TEST(Video, OddFrameSizeIsRejectedBeforeAnyFileExists) {
+  const fs::path dir = scratch("odd");
+  const VideoDef def{.path = (dir / "odd.mp4").string(), .width = 641, .height = 480};
+  const Status s = validate(def);
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.error(), "video: H.264 in yuv420p needs an even width and height; got 641x480");
+  EXPECT_EQ(VideoWriter::open(def).error(), s.error());
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
+TEST(Video, UnwritablePathIsNamed) {
+  const Status s = validate(VideoDef{.path = "/nonexistent/out/run.mp4"});
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.error(), "video: cannot write '/nonexistent/out/run.mp4': directory '/nonexistent/out' does not exist");
+  const fs::path dir = scratch("is_dir");
+  EXPECT_NE(validate(VideoDef{.path = dir.string()}).error().find("it is a directory"), std::string::npos);
+}
+
+TEST(Video, DestroyedWithoutCloseLeavesNothing) {
+  const fs::path dir = scratch("abandoned");
+  const std::string path = (dir / "run.mp4").string();
+  {
+    Result<VideoWriter> v = VideoWriter::open({.path = path, .width = 64, .height = 64});
+    ASSERT_TRUE(v.ok()) << v.error();
+    ASSERT_TRUE(v.value().write(solid(64, 64, 100)).ok());
+  }  // as if the run failed half way
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
+TEST(Video, WrongFrameSizeFailsAndCloseAfterCloseIsAnError) {
+  const fs::path dir = scratch("wrong_size");
+  const std::string path = (dir / "run.mp4").string();
+  Result<VideoWriter> v = VideoWriter::open({.path = path, .width = 64, .height = 64});
+  ASSERT_TRUE(v.ok()) << v.error();
+  const Status s = v.value().write(solid(32, 32, 0));
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.error(), "video: frame of 32x32 does not match the video's 64x64");
+  ASSERT_TRUE(v.value().write(solid(64, 64, 0)).ok());
+  ASSERT_TRUE(v.value().close().ok());
+  EXPECT_FALSE(v.value().close().ok());
+  EXPECT_EQ(decode(path).frames, 1);
+}
+
+TEST(FramePicker, ThirtyFpsFromAHundredHertzRun) {
+  const FramePicker picker(0.01, 30);
+  const std::vector<std::int64_t> steps = picker.steps(6000);  // 60 s
+  ASSERT_EQ(steps.size(), 1800u);
+  EXPECT_EQ(steps[0], 0);
+  EXPECT_EQ(steps[1], 3);   // 1/30 s = 0.0333 s: the last step at or before it is step 3 (0.03 s)
+  EXPECT_EQ(steps[2], 6);
+  EXPECT_EQ(steps[3], 10);  // 0.1 s exactly
+  EXPECT_EQ(steps.back(), 5996);
+  EXPECT_EQ(picker.framesAt(0), 1);
+  EXPECT_EQ(picker.framesAt(1), 0);
+}
+
+TEST(FramePicker, SlowSimulationRepeatsFrames) {
+  const FramePicker picker(0.1, 30);  // 10 Hz simulation, 30 fps video: three frames per step
+  EXPECT_EQ(picker.framesAt(0), 3);
+  EXPECT_EQ(picker.framesAt(7), 3);
+  EXPECT_EQ(picker.steps(10).size(), 30u);
+}
+
+TEST(FramePicker, EqualRatesGiveEveryStep) {
+  const FramePicker picker(1.0 / 30.0, 30);
+  const std::vector<std::int64_t> steps = picker.steps(300);
+  ASSERT_EQ(steps.size(), 300u);
+  for (std::int64_t i = 0; i < 300; ++i) EXPECT_EQ(steps[static_cast<std::size_t>(i)], i);
+}
+
+}  // namespace
+}  // namespace frob::render
