@@ -2,7 +2,8 @@
 # Installs the Debian 12 packages Frob Sandbox builds against; does nothing when all are present.
 set -euo pipefail
 packages=(
-  cmake ninja-build g++ pkg-config ccache          # toolchain
+  cmake ninja-build pkg-config ccache              # build tools
+  clang-16 libclang-rt-16-dev                      # the compiler (see README: GCC 12 breaks coroutines)
   libeigen3-dev libbox2d-dev libassimp-dev         # maths, physics, meshes
   libosmesa6-dev libpng-dev libfreetype-dev fonts-dejavu-core   # offscreen rendering and text
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev   # video encoding

@@ -9,26 +9,42 @@ namespace detail {
 
 std::atomic<long> liveFrames{0};
 
-std::string taskName(const char* functionName) {
-  // GCC gives e.g. "frob::Task<frob::Wheels, bool> driveTo(frob::Point2)": keep "driveTo".
-  std::string_view s(functionName);
+namespace {
+
+// The identifier a function's signature names, e.g. "frob::Task<Wheels> f(int)" -> "f".
+std::string identifierIn(std::string_view signature) {
   int depth = 0;
-  std::size_t open = std::string_view::npos;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    if (s[i] == '<') ++depth;
-    if (s[i] == '>') --depth;
-    if (s[i] == '(' && depth == 0) {
+  std::size_t open = signature.size();
+  for (std::size_t i = 0; i < signature.size(); ++i) {
+    char c = signature[i];
+    if (c == '<') ++depth;
+    if (c == '>') --depth;
+    if (c == '(' && depth == 0) {
       open = i;
       break;
     }
   }
-  std::string_view head = s.substr(0, open);
+  std::string_view head = signature.substr(0, open);
   std::size_t start = head.find_last_of(" :");
-  std::string_view name = start == std::string_view::npos ? head : head.substr(start + 1);
-  if (name.empty()) return std::string(s);
-  // A lambda's call operator appears as "f()::<lambda(...)>": name it after its enclosing function.
-  if (s.find("::<lambda", open) != std::string_view::npos) return "lambda in " + std::string(name);
-  return std::string(name);
+  return std::string(start == std::string_view::npos ? head : head.substr(start + 1));
+}
+
+void eraseAll(std::string& s, std::string_view what) {
+  for (std::size_t at = s.find(what); at != std::string::npos; at = s.find(what)) s.erase(at, what.size());
+}
+
+}  // namespace
+
+std::string taskName(const char* functionName) {
+  // GCC: "frob::Task<frob::Wheels, bool> driveTo(frob::Point2)", "main()::<lambda(...)>";
+  // clang: "Task<Wheels> frob::(anonymous namespace)::goAhead()", "f()::(anonymous class)::operator()() const".
+  std::string s(functionName);
+  eraseAll(s, "(anonymous namespace)");
+  std::size_t lambda = s.find("::<lambda");
+  if (lambda == std::string::npos) lambda = s.find("::(anonymous class)");
+  if (lambda != std::string::npos) return "lambda in " + identifierIn(s.substr(0, lambda));
+  std::string name = identifierIn(s);
+  return name.empty() ? std::string(functionName) : name;
 }
 
 std::string taskWhere(const std::source_location& loc) {

@@ -4,6 +4,13 @@
 
 #include "frob/detail/task_machinery.hpp"
 
+// GCC 12 constructs a lambda with captures written inside a co_await expression in one place and
+// destroys it from another (a double free), which corrupts ordinary controllers such as
+// `co_await mkTask([goal](const TaskState& ts) { ... })`. Clang 15 or later compiles them correctly.
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ < 13
+#error "Frob tasks need clang++-16 (Debian: apt-get install clang-16); GCC 12 miscompiles lambdas inside co_await"
+#endif
+
 namespace frob {
 
 /// The number of task coroutine frames alive in the process (to prove cancellation frees them).
@@ -234,8 +241,8 @@ auto TaskPromise<A, B>::await_transform(Become<A, B>&& b) {
     std::coroutine_handle<> await_suspend(std::coroutine_handle<TaskPromise> self) {
       TaskPromise& p = self.promise();
       p.end(TaskEnd::Replaced, "became " + next.name());
-      ResultSlot<R>& slot = *p.slot;
-      std::coroutine_handle<> h = next.startIn(slot, p.ctx, p.continuation, p.parentRecord);
+      ResultSlot<R>& mine = *p.slot;
+      std::coroutine_handle<> h = next.startIn(mine, p.ctx, p.continuation, p.parentRecord);
       self.destroy();  // destroys this awaiter too: nothing of it is touched after this line
       return h;
     }
