@@ -6,6 +6,8 @@ struct Instant;
 class Clock;
 template <class T>
 class Behavior;
+template <class R, class F, class... Args>
+class Pointwise;
 template <class T>
 class Event;
 struct Unit;
@@ -16,4 +18,10 @@ struct Wheels;
 struct Pose2;
 struct BumperHit;
 class Picture;
+class TaskState;
+class RoboErr;
+template <class A, class B>
+class Task;
+class DebugChannel;
+class Timeline;
 }  // namespace frob
