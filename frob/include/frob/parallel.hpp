@@ -115,7 +115,7 @@ template <class F1, class F2>
   return [](F1 first, F2 second) -> Task<A2, B2> {
     detail::RunContext<A2>* ctx = co_await detail::GetContext{};
     std::int64_t record = co_await detail::GetRecord{};
-    Behavior<A2> secondOut(std::make_shared<detail::DelayedNode<A2>>(ctx->output));
+    Behavior<A2> secondOut = ctx->delayedOutput();
     detail::Strand<A1, B1> strand = detail::startStrand(ctx->state, record, std::invoke(first, secondOut));
     detail::ScopeEntry<detail::Watcher> keep(ctx->watchers, detail::keepSampling(strand.output));
     if constexpr (std::is_void_v<B2>) {

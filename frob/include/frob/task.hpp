@@ -262,7 +262,8 @@ template <class A, class E>
 class AtomicAwaiter final : public AtomicBase<A> {
  public:
   AtomicAwaiter(Behavior<A> b, Event<E> exit, std::optional<Event<RoboErr>> error)
-      : behavior_(std::move(b)), exit_(std::move(exit)), error_(std::move(error)) {}
+      : behavior_(std::move(b)), exit_(std::move(exit)), error_(std::move(error)),
+        exitNever_(dynamic_cast<NeverNode<E>*>(exit_.node().get()) != nullptr) {}
 
   bool await_ready() noexcept { return false; }
   template <class P>
@@ -279,10 +280,25 @@ class AtomicAwaiter final : public AtomicBase<A> {
     return std::move(*result_);
   }
 
-  bool check(const Instant& now) override {
+  const A* step(const Instant& now) override {
+    if (!error_ && ctx_->interrupts.empty()) {  // the common case, kept short: it runs every step
+      if (!exitNever_) {
+        if (const std::optional<E>& exit = exit_.at(now)) {
+          result_ = *exit;
+          return nullptr;
+        }
+      }
+      return &this->output.at(now);
+    }
+    return check(now) ? nullptr : &this->output.at(now);
+  }
+  void fail(std::exception_ptr e) override { failure_ = std::move(e); }
+
+ private:
+  bool check(const Instant& now) {
+    const std::optional<E>& exit = exit_.at(now);
     // Every event is sampled each instant so stateful ones stay current; the exit wins ties, then
     // the task's own error, then the innermost scope.
-    const std::optional<E>& exit = exit_.at(now);
     const std::optional<RoboErr>* error = error_ ? &error_->at(now) : nullptr;
     const std::optional<std::exception_ptr>* interrupt = nullptr;
     for (auto it = ctx_->interrupts.rbegin(); it != ctx_->interrupts.rend(); ++it) {
@@ -300,12 +316,11 @@ class AtomicAwaiter final : public AtomicBase<A> {
     }
     return true;
   }
-  void fail(std::exception_ptr e) override { failure_ = std::move(e); }
 
- private:
   Behavior<A> behavior_;
   Event<E> exit_;
   std::optional<Event<RoboErr>> error_;
+  bool exitNever_;  // never() as the exit: nothing to sample
   RunContext<A>* ctx_ = nullptr;
   std::optional<E> result_;
   std::exception_ptr failure_;
@@ -408,6 +423,29 @@ class RunnerNode final : public BehaviorNode<A> {
   A compute(const Instant& now) override {
     ctx_.now = &now;
     ctx_.time = now.time;
+    // The common step: the current task goes on. Everything else is in advance().
+    if (AtomicBase<A>* atom = ctx_.current; atom != nullptr && ctx_.watchers.empty() && !ctx_.output) {
+      try {
+        if (const A* out = atom->step(now)) {
+          if constexpr (requires { isFinite(*out); }) {
+            if (!isFinite(*out)) fail(nonFiniteMessage(*atom->name, printable(*out), now));
+          }
+          return *out;
+        }
+      } catch (const FrobError&) {
+        throw;
+      } catch (...) {
+        atom->fail(std::current_exception());  // an event or behavior that throws fails its task
+      }
+      return advance(now, true);
+    }
+    return advance(now, false);
+  }
+
+ private:
+  // Starts the task, moves through every task that ends at `now` (`ended`: the current one has),
+  // then samples the current one; or the final behavior once the task is over.
+  [[gnu::noinline]] A advance(const Instant& now, bool ended) {
     if (failure_) std::rethrow_exception(failure_);
     if (!started_) {
       started_ = true;
@@ -418,35 +456,29 @@ class RunnerNode final : public BehaviorNode<A> {
       AtomicBase<A>* atom = ctx_.current;
       if (atom == nullptr) return finished(now);
       if (transitions > kMaxTransitionsPerInstant) fail(runawayMessage(*atom->name, now));
-      bool ended = false;
-      try {
-        ended = atom->check(now);
-      } catch (...) {
-        atom->fail(std::current_exception());  // an event that throws fails its task
-        ended = true;
-      }
       if (!ended) {
         try {
-          A out = atom->output.at(now);
-          for (const auto& watch : ctx_.watchers) watch(now);
-          if constexpr (requires { isFinite(out); }) {
-            if (!isFinite(out)) fail(nonFiniteMessage(*atom->name, printable(out), now));
+          if (const A* out = atom->step(now)) {
+            for (const auto& watch : ctx_.watchers) watch(now);
+            if constexpr (requires { isFinite(*out); }) {
+              if (!isFinite(*out)) fail(nonFiniteMessage(*atom->name, printable(*out), now));
+            }
+            if (ctx_.output) ctx_.output->write(now, *out);
+            return *out;
           }
-          ctx_.output->write(now, out);
-          return out;
         } catch (const FrobError&) {
           throw;
         } catch (...) {
-          atom->fail(std::current_exception());  // a behavior that throws fails its task
+          atom->fail(std::current_exception());  // an event or behavior that throws fails its task
         }
       }
+      ended = false;
       ctx_.current = nullptr;
       ctx_.snapshot(now);
       atom->waiter.resume();
     }
   }
 
- private:
   static constexpr int kMaxTransitionsPerInstant = 1000;
 
   A finished(const Instant& now) {
@@ -458,10 +490,11 @@ class RunnerNode final : public BehaviorNode<A> {
       fail("task '" + who + "' failed at t = " + seconds(now) + ": " + what);
     }
     A out = final_.at(now);
-    ctx_.output->write(now, out);
+    if (ctx_.output) ctx_.output->write(now, out);
     return out;
   }
   [[noreturn]] void fail(const std::string& message) {
+    ctx_.current = nullptr;  // every later sample takes the slow path, which rethrows
     failure_ = std::make_exception_ptr(FrobError(message));
     std::rethrow_exception(failure_);
   }

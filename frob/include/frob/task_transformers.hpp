@@ -163,7 +163,7 @@ template <class F>
   using B = typename std::invoke_result_t<F&, Behavior<A>>::result_type;
   return [](F make) -> Task<A, B> {
     detail::RunContext<A>* ctx = co_await detail::GetContext{};
-    Behavior<A> mine(std::make_shared<detail::DelayedNode<A>>(ctx->output));
+    Behavior<A> mine = ctx->delayedOutput();
     if constexpr (std::is_void_v<B>) {
       co_await std::invoke(make, mine);
     } else {

@@ -103,7 +103,8 @@ struct AtomicBase {
   Behavior<A> output;               // its behavior, with the enclosing filters applied
   std::coroutine_handle<> waiter;   // resumed when it ends
   const std::string* name = nullptr;
-  virtual bool check(const Instant& now) = 0;   // true when it ended at `now`
+  // Its output at `now`, or null when it ended at `now` (its result or error is then stored).
+  virtual const A* step(const Instant& now) = 0;
   virtual void fail(std::exception_ptr e) = 0;  // ends it with an error
   AtomicBase() = default;
   AtomicBase(const AtomicBase&) = delete;
@@ -123,7 +124,7 @@ struct RunContext {
   std::vector<Event<std::exception_ptr>> interrupts;             // scoped errors and exits, innermost last
   std::vector<std::function<Behavior<A>(Behavior<A>)>> filters;  // withFilter, outermost first
   std::vector<std::function<void(const Instant&)>> watchers;     // sampled every instant (withB, withTask)
-  std::shared_ptr<OutputCell<A>> output = std::make_shared<OutputCell<A>>();
+  std::shared_ptr<OutputCell<A>> output;  // made when a task first reads its own output
   std::exception_ptr origin;  // an unexpected exception, and the task it first left
   std::string originTask;
   std::int64_t nextScope = 0;
@@ -135,6 +136,11 @@ struct RunContext {
     state.setInitialPlace(state.robot().place().at(at))
         .setInitialOrientation(state.robot().orientation().at(at))
         .setStartTime(at.time);
+  }
+  // The run's output one instant late (withMyResult, withTask); the runner records it from now on.
+  Behavior<A> delayedOutput() {
+    if (!output) output = std::make_shared<OutputCell<A>>();
+    return Behavior<A>(std::make_shared<DelayedNode<A>>(output));
   }
   // `b` with every enclosing filter applied, innermost first.
   Behavior<A> filtered(Behavior<A> b) const {
