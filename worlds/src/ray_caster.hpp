@@ -25,7 +25,7 @@ class RayCaster {
   // The nearest hit of the ray from `origin` along unit `dir` within `range`, ignoring robot `self`.
   [[nodiscard]] RayHit cast(const Point2& origin, const Vec2& dir, double range, int self) const;
   // Number of static segments (rectangles and polylines count their sides).
-  [[nodiscard]] std::size_t segmentCount() const { return segs_.size(); }
+  [[nodiscard]] std::size_t segmentCount() const { return segmentCount_; }
 
  private:
   struct Seg {
@@ -34,25 +34,28 @@ class RayCaster {
   struct Circle {
     double cx, cy, r;
   };
-  // Compressed lists: cell c holds items[start[c] .. start[c+1]).
-  struct Bins {
-    std::vector<std::uint32_t> start, items;
+  struct Robot {
+    double cx, cy, r;
+    int index;  // into robots_, to skip the casting robot
+  };
+  // Per cell, the items a ray must test, stored by value so that a cell's walls are contiguous:
+  // a ray reads one run of segments, then pillars and robots, without chasing indices.
+  struct Span {
+    std::uint32_t begin = 0, end = 0;
   };
   void cellRange(double x0, double y0, double x1, double y1, int& i0, int& j0, int& i1, int& j1) const;
   void testCell(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const;
 
-  std::vector<Seg> segs_;
-  std::vector<Circle> circles_;   // static pillars
-  std::vector<Circle> robots_;
+  std::size_t segmentCount_ = 0;
+  std::vector<Robot> robots_;
   std::vector<int> outside_;      // robots not fully inside the grid: tested by every ray
-  Bins static_;                   // item: segment index, or pillar index with the top bit set
-  // Robots per cell as linked lists, so that re-binning costs only the cells robots touch.
-  struct Link {
-    int robot, next;
-  };
-  std::vector<int> head_;         // per cell: first link, or -1
-  std::vector<Link> links_;
-  std::vector<int> touched_;      // cells whose head_ is set
+  std::vector<std::uint32_t> segStart_, pillarStart_;  // cell c: [start[c], start[c + 1])
+  std::vector<Seg> cellSegs_;     // segments per cell, in index order (a wall is copied into each cell it spans)
+  std::vector<Circle> cellPillars_;
+  // Robots per cell, rebuilt each step: only the cells robots touch are set and later cleared.
+  std::vector<Span> robotSpan_;   // per cell
+  std::vector<Robot> cellRobots_; // per cell, in descending robot index
+  std::vector<int> touched_;      // cells whose robotSpan_ is set
   double x0_ = 0, y0_ = 0, cell_ = 1, inv_ = 1;
   int nx_ = 1, ny_ = 1;
 };
