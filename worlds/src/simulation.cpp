@@ -312,7 +312,10 @@ void Simulation::step(std::span<const Wheels> wheels) {
     r.body->SetAngularVelocity(static_cast<float>(r.turn));
   }
   s.physics.Step(static_cast<float>(dt), kVelocityIterations, kPositionIterations);
-  for (RobotState& r : s.robots) s.updateOdometry(r);
+  // Like sensing, odometry reads only its own body and draws from its own random stream.
+  s.workers.run(s.robots.size(), [&s](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) s.updateOdometry(s.robots[i]);
+  });
   ++s.steps;
 }
 
