@@ -76,6 +76,7 @@ RayCaster::RayCaster(const std::vector<WallDef>& walls, const Point2& lo, const 
   bin(circles, [](const Circle& c) { return std::array{c.cx - c.r, c.cy - c.r, c.cx + c.r, c.cy + c.r}; },
       pillarStart_, cellPillars_);
   robotSpan_.assign(cells, Span{});
+  x1_ = x0_ + nx_ * cell_, y1_ = y0_ + ny_ * cell_;
 }
 
 void RayCaster::cellRange(double ax, double ay, double bx, double by, int& i0, int& j0, int& i1, int& j1) const {
@@ -97,7 +98,7 @@ void RayCaster::setRobots(const std::vector<Point2>& centres, const std::vector<
   if (centres.size() == 1) return;  // a robot never sees itself: nothing to bin
 
   // Count per cell, then place; both passes run in descending index, the order rays test them in.
-  const double x1 = x0_ + nx_ * cell_, y1 = y0_ + ny_ * cell_;
+  const double x1 = x1_, y1 = y1_;
   auto inside = [&](const Robot& c) {
     return c.cx - c.r >= x0_ && c.cy - c.r >= y0_ && c.cx + c.r <= x1 && c.cy + c.r <= y1;  // false for NaN
   };
@@ -171,17 +172,46 @@ inline void hitCircle(double cx, double cy, double r, double ox, double oy, doub
   }
 }
 
+[[gnu::always_inline]] inline void RayCaster::walk(int i, int j, double bx0, double bx1, double by0, double by1, double ox,
+                                                   double oy, double ux, double uy, double tmax, int self,
+                                                   RayHit& best) const {
+  // Walk the cells the ray crosses, nearest first; stop once the best hit lies within the cell.
+  // bx0/bx1 (by0/by1): the offsets from the origin to cell i's (j's) lower and upper sides.
+  const double ix = 1.0 / ux, iy = 1.0 / uy;  // +-inf along an axis; the steps handle it
+  const int si = ux > 0 ? 1 : -1, sj = uy > 0 ? 1 : -1;
+  const double dtx = cell_ * std::abs(ix), dty = cell_ * std::abs(iy);
+  double tx = ux > 0 ? bx1 * ix : ux < 0 ? bx0 * ix : INFINITY;
+  double ty = uy > 0 ? by1 * iy : uy < 0 ? by0 * iy : INFINITY;
+  for (;;) {
+    testCell(j * nx_ + i, ox, oy, ux, uy, self, best);
+    const double exit = std::min(tx, ty);
+    if (best.distance <= exit || exit >= tmax) break;
+    if (tx < ty) {
+      i += si, tx += dtx;
+      if (static_cast<unsigned>(i) >= static_cast<unsigned>(nx_)) break;
+    } else {
+      j += sj, ty += dty;
+      if (static_cast<unsigned>(j) >= static_cast<unsigned>(ny_)) break;
+    }
+  }
+}
+
+[[gnu::always_inline]] inline void RayCaster::testOutside(double ox, double oy, double ux, double uy, int self,
+                                                          RayHit& best) const {
+  for (int k : outside_)
+    if (k != self) hitCircle(robots_[k].cx, robots_[k].cy, robots_[k].r, ox, oy, ux, uy, best);
+}
+
 RayHit RayCaster::cast(const Point2& origin, const Vec2& dir, double range, int self) const {
   const double ox = origin.x(), oy = origin.y(), ux = dir.x(), uy = dir.y();
   RayHit best{range, 1.0};
-  for (int k : outside_)
-    if (k != self) hitCircle(robots_[k].cx, robots_[k].cy, robots_[k].r, ox, oy, ux, uy, best);
+  testOutside(ox, oy, ux, uy, self, best);
 
   // Clip [0, range] to the grid's box (slab method), unless the ray starts inside it (the usual case).
-  const double ix = 1.0 / ux, iy = 1.0 / uy;  // +-inf along an axis; the slabs and steps handle it
-  const double x1 = x0_ + nx_ * cell_, y1 = y0_ + ny_ * cell_;
+  const double x1 = x1_, y1 = y1_;
   double tmin = 0.0, tmax = range;
   if (!(ox >= x0_ && ox <= x1 && oy >= y0_ && oy <= y1)) [[unlikely]] {
+    const double ix = 1.0 / ux, iy = 1.0 / uy;
     if (ux != 0.0) {
       const double a = (x0_ - ox) * ix, b = (x1 - ox) * ix;
       tmin = std::max(tmin, std::min(a, b)), tmax = std::min(tmax, std::max(a, b));
@@ -196,29 +226,42 @@ RayHit RayCaster::cast(const Point2& origin, const Vec2& dir, double range, int 
     }
   }
   if (tmin <= tmax) {
-    // Walk the cells the ray crosses, nearest first; stop once the best hit lies within the cell.
     const double px = (ox + tmin * ux - x0_) * inv_, py = (oy + tmin * uy - y0_) * inv_;  // >= 0 up to rounding
-    int i = std::min(std::max(static_cast<int>(px), 0), nx_ - 1);
-    int j = std::min(std::max(static_cast<int>(py), 0), ny_ - 1);
-    const int si = ux > 0 ? 1 : -1, sj = uy > 0 ? 1 : -1;
-    const double dtx = cell_ * std::abs(ix), dty = cell_ * std::abs(iy);
-    double tx = ux > 0 ? (x0_ + (i + 1) * cell_ - ox) * ix : ux < 0 ? (x0_ + i * cell_ - ox) * ix : INFINITY;
-    double ty = uy > 0 ? (y0_ + (j + 1) * cell_ - oy) * iy : uy < 0 ? (y0_ + j * cell_ - oy) * iy : INFINITY;
-    for (;;) {
-      testCell(j * nx_ + i, ox, oy, ux, uy, self, best);
-      const double exit = std::min(tx, ty);
-      if (best.distance <= exit || exit >= tmax) break;
-      if (tx < ty) {
-        i += si, tx += dtx;
-        if (static_cast<unsigned>(i) >= static_cast<unsigned>(nx_)) break;
-      } else {
-        j += sj, ty += dty;
-        if (static_cast<unsigned>(j) >= static_cast<unsigned>(ny_)) break;
-      }
-    }
+    const int i = std::min(std::max(static_cast<int>(px), 0), nx_ - 1);
+    const int j = std::min(std::max(static_cast<int>(py), 0), ny_ - 1);
+    walk(i, j, x0_ + i * cell_ - ox, x0_ + (i + 1) * cell_ - ox, y0_ + j * cell_ - oy, y0_ + (j + 1) * cell_ - oy,
+         ox, oy, ux, uy, tmax, self, best);
   }
   if (best.distance >= range) best.distance = INFINITY;
   return best;
+}
+
+double RayCaster::castCone(const Point2& origin, std::span<const Vec2> dirs, double range, int self,
+                           double cosCutoff) const {
+  const double ox = origin.x(), oy = origin.y();
+  double nearest = range;
+  if (!(ox >= x0_ && ox <= x1_ && oy >= y0_ && oy <= y1_)) [[unlikely]] {
+    for (const Vec2& d : dirs) {
+      const RayHit hit = cast(origin, d, nearest, self);
+      if (hit.cosIncidence >= cosCutoff) nearest = std::min(nearest, hit.distance);
+    }
+    return nearest;
+  }
+  // What cast() computes per ray from the origin alone (tmin = 0 inside the grid), done once.
+  const double px = (ox - x0_) * inv_, py = (oy - y0_) * inv_;
+  const int i = std::min(std::max(static_cast<int>(px), 0), nx_ - 1);
+  const int j = std::min(std::max(static_cast<int>(py), 0), ny_ - 1);
+  const double bx0 = x0_ + i * cell_ - ox, bx1 = x0_ + (i + 1) * cell_ - ox;
+  const double by0 = y0_ + j * cell_ - oy, by1 = y0_ + (j + 1) * cell_ - oy;
+  for (const Vec2& d : dirs) {
+    const double ux = d.x(), uy = d.y();
+    RayHit best{nearest, 1.0};
+    testOutside(ox, oy, ux, uy, self, best);
+    walk(i, j, bx0, bx1, by0, by1, ox, oy, ux, uy, nearest, self, best);
+    // As cast() then min(): a ray that met nothing nearer leaves `nearest` as it is.
+    if (best.distance < nearest && best.cosIncidence >= cosCutoff) nearest = best.distance;
+  }
+  return nearest;
 }
 
 }  // namespace frob::worlds::detail
