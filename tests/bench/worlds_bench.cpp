@@ -79,6 +79,12 @@ BENCHMARK(Ours)->ArgNames({"robots", "sonars", "rays", "threads"})
     ->Args({1, 16, 3, 1})     // as many rays as an e-puck given 16 long-range sensors
     ->Args({100, 16, 3, 1})
     ->UseRealTime()->Unit(benchmark::kMicrosecond);
+// A fixed number of steps from the same start, so that instruction counts (valgrind --tool=callgrind,
+// which counts independent of load) compare between builds:
+//   valgrind --tool=callgrind build/tests/bench/worlds_bench --benchmark_filter=OursFixedSteps
+BENCHMARK(Ours)->Name("OursFixedSteps")->ArgNames({"robots", "sonars", "rays", "threads"})
+    ->Args({1, 16, 5, 1})->Args({100, 16, 5, 1})->Iterations(300)
+    ->UseRealTime()->Unit(benchmark::kMicrosecond);
 
 // Enki, the same maze in centimetres, walls as static thin boxes. With range(1) == 8 the e-pucks
 // keep their own 8 infrared sensors (3 rays each, 12 cm range); with 16 they get 16 sensors of 3
