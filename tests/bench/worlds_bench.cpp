@@ -12,6 +12,7 @@
 #include <enki/PhysicalEngine.h>
 #include <enki/robots/e-puck/EPuck.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -78,6 +79,12 @@ BENCHMARK(Ours)->ArgNames({"robots", "sonars", "rays", "threads"})
     ->Args({100, 8, 3, 1})
     ->Args({1, 16, 3, 1})     // as many rays as an e-puck given 16 long-range sensors
     ->Args({100, 16, 3, 1})
+    ->UseRealTime()->Unit(benchmark::kMicrosecond);
+// A fixed number of steps from the same start, so that instruction counts (valgrind --tool=callgrind,
+// which counts independent of load) compare between builds:
+//   valgrind --tool=callgrind build/tests/bench/worlds_bench --benchmark_filter=OursFixedSteps
+BENCHMARK(Ours)->Name("OursFixedSteps")->ArgNames({"robots", "sonars", "rays", "threads"})
+    ->Args({1, 16, 5, 1})->Args({100, 16, 5, 1})->Iterations(300)
     ->UseRealTime()->Unit(benchmark::kMicrosecond);
 
 // Enki, the same maze in centimetres, walls as static thin boxes. With range(1) == 8 the e-pucks
@@ -188,6 +195,28 @@ void RayCastGrid(benchmark::State& state) {
   state.counters["rays/s"] = benchmark::Counter(1, benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(RayCastGrid);
+
+// The same rays as the axes of sonar cones of 5 rays (25 degrees wide, 22.5 degree specular
+// cutoff), cast as the simulation casts them; rays/s counts all five.
+void RayCastCone(benchmark::State& state) {
+  Simulation sim(maze());
+  const detail::RayCaster caster(sim.walls(), Point2(-1, -1), Point2(21, 21));
+  const std::vector<Ray> rays = mazeRays();
+  const double step = 25.0 * pi / 180.0 / 4.0, cosCutoff = std::cos(22.5 * pi / 180.0);
+  std::vector<std::array<Vec2, 5>> cones;  // axis first, then outwards, as the simulation orders them
+  for (const Ray& r : rays) {
+    const double a = std::atan2(r.dir.y(), r.dir.x());
+    cones.push_back({r.dir, unitVector(a + step), unitVector(a - step), unitVector(a + 2 * step),
+                     unitVector(a - 2 * step)});
+  }
+  std::size_t k = 0;
+  for (auto _ : state) {
+    const std::size_t c = k++ % rays.size();
+    benchmark::DoNotOptimize(caster.castCone(rays[c].origin, cones[c], 6.5, -1, cosCutoff));
+  }
+  state.counters["rays/s"] = benchmark::Counter(5, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(RayCastCone);
 
 // Prints the usual console table, then one line per (robots, rays) pairing ours with Enki.
 class PairingReporter : public benchmark::ConsoleReporter {

@@ -9,6 +9,7 @@
 
 #include <cinttypes>
 #include <cstdio>
+#include <cstring>
 #include <algorithm>
 #include <map>
 #include <string>
@@ -104,6 +105,49 @@ TEST(Registry, AnotherSeedGivesAnotherRunWhereNoiseMatters) {
   const std::uint64_t a = trajectoryHash(maze, 600);
   maze.seed += 1;
   EXPECT_NE(trajectoryHash(maze, 600), a);  // the script reacts to (noisy) sonar
+}
+
+// 100 robots in the maze, placed as in the benchmark (tests/bench/worlds_bench.cpp), each with 16
+// sonars of 5 rays: a golden hash of every sonar reading and pose, so that changes to the ray
+// caster's data layout or traversal (robots seeing robots, pillars, walls) stay bit-identical.
+// Same platform note as above; also holds for clang-16.
+TEST(Registry, GoldenSonarHashInACrowdedMaze) {
+  WorldDef w = *loadReferenceWorld("maze");
+  const RobotDef proto = w.robots.at(0);
+  w.robots.clear();
+  for (int k = 0; k < 100; ++k) {
+    const int cell = (k * 37) % 256;
+    RobotDef r = proto;
+    r.start = {.position = Point2((cell % 16 + 0.5) * 1.25, (cell / 16 + 0.5) * 1.25), .heading = 0.7 * k};
+    r.sonar.count = 16;
+    r.sonar.rays = 5;
+    w.robots.push_back(r);
+  }
+  auto run = [&](int threads) {
+    Simulation sim(w, {.threads = threads});
+    std::vector<Wheels> wheels(sim.robotCount());
+    std::uint64_t h = 0xcbf29ce484222325ULL;  // FNV-1a over the bits of every reading and pose
+    auto mix = [&](double v) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &v, sizeof bits);
+      for (int b = 0; b < 8; ++b) h = (h ^ ((bits >> (8 * b)) & 0xff)) * 0x100000001b3ULL;
+    };
+    for (int k = 0; k < 200; ++k) {
+      sim.sense();
+      for (std::size_t i = 0; i < sim.robotCount(); ++i) {
+        for (double s : sim.frame(i).sonar) mix(s);
+        const Pose2 p = sim.truePose(i);
+        mix(p.position.x()), mix(p.position.y()), mix(p.heading);
+        wheels[i] = script(k, i, sim.frame(i));
+      }
+      sim.step(wheels);
+    }
+    return h;
+  };
+  const std::uint64_t golden = 0x7a68ad875e825b10ULL;
+  const std::uint64_t h = run(1);
+  EXPECT_EQ(h, golden) << "actual hash 0x" << std::hex << h;
+  EXPECT_EQ(run(2), h);
 }
 
 }  // namespace

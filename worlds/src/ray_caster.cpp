@@ -1,21 +1,23 @@
 #include "ray_caster.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace frob::worlds::detail {
 namespace {
 
-constexpr std::uint32_t kPillar = 0x80000000u;  // marks a static item as a circle, not a segment
 constexpr int kMaxCells = 1 << 16;              // keeps the grid small enough to rebuild cheaply
 
 }  // namespace
 
 RayCaster::RayCaster(const std::vector<WallDef>& walls, const Point2& lo, const Point2& hi) {
+  std::vector<Seg> segs;
+  std::vector<Circle> circles;
   auto addSeg = [&](const Point2& a, const Point2& b) {
     const Vec2 d = b - a;
     const Vec2 n = Vec2(-d.y(), d.x()).normalized();
-    segs_.push_back({a.x(), a.y(), d.x(), d.y(), n.x(), n.y()});
+    segs.push_back({a.x(), a.y(), d.x(), d.y(), n.x(), n.y()});
   };
   for (const WallDef& w : walls) {
     const auto& v = w.points;
@@ -30,47 +32,51 @@ RayCaster::RayCaster(const std::vector<WallDef>& walls, const Point2& lo, const 
         addSeg(a, b), addSeg(b, c), addSeg(c, d), addSeg(d, a);
         break;
       }
-      case WallShape::Circle: circles_.push_back({v[0].x(), v[0].y(), w.radius}); break;
+      case WallShape::Circle: circles.push_back({v[0].x(), v[0].y(), w.radius}); break;
     }
   }
+  segmentCount_ = segs.size();
 
   // Cells about as wide as the mean spacing of walls, within bounds that keep the grid small.
   x0_ = lo.x(), y0_ = lo.y();
   const double w = std::max(hi.x() - lo.x(), 1e-3), h = std::max(hi.y() - lo.y(), 1e-3);
-  const double items = static_cast<double>(segs_.size() + circles_.size()) + 1.0;
+  const double items = static_cast<double>(segs.size() + circles.size()) + 1.0;
   cell_ = std::clamp(std::sqrt(w * h / items) * 0.75, 0.25, 8.0);
   cell_ = std::max(cell_, std::sqrt(w * h / kMaxCells) * 1.01);
   inv_ = 1.0 / cell_;
   nx_ = std::max(1, static_cast<int>(std::ceil(w * inv_)));
   ny_ = std::max(1, static_cast<int>(std::ceil(h * inv_)));
 
-  // Bin each item into every cell its bounding box touches (count, then fill).
+  // Copy each item into every cell its bounding box touches (count, then fill), keeping index order.
   const std::size_t cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
-  static_.start.assign(cells + 1, 0);
-  auto forEachCell = [&](std::uint32_t item, auto&& visit) {
-    double ax, ay, bx, by;
-    if (item & kPillar) {
-      const Circle& c = circles_[item & ~kPillar];
-      ax = c.cx - c.r, ay = c.cy - c.r, bx = c.cx + c.r, by = c.cy + c.r;
-    } else {
-      const Seg& s = segs_[item];
-      ax = std::min(s.ax, s.ax + s.dx), bx = std::max(s.ax, s.ax + s.dx);
-      ay = std::min(s.ay, s.ay + s.dy), by = std::max(s.ay, s.ay + s.dy);
-    }
+  auto forEachCell = [&](double ax, double ay, double bx, double by, auto&& visit) {
     int i0, j0, i1, j1;
     cellRange(ax, ay, bx, by, i0, j0, i1, j1);
     for (int j = j0; j <= j1; ++j)
-      for (int i = i0; i <= i1; ++i) visit(j * nx_ + i);
+      for (int i = i0; i <= i1; ++i) visit(static_cast<std::size_t>(j * nx_ + i));
   };
-  std::vector<std::uint32_t> all;
-  for (std::uint32_t s = 0; s < segs_.size(); ++s) all.push_back(s);
-  for (std::uint32_t c = 0; c < circles_.size(); ++c) all.push_back(c | kPillar);
-  for (auto item : all) forEachCell(item, [&](int c) { ++static_.start[c + 1]; });
-  for (std::size_t c = 0; c < cells; ++c) static_.start[c + 1] += static_.start[c];
-  static_.items.resize(static_.start[cells]);
-  std::vector<std::uint32_t> fill(static_.start.begin(), static_.start.end() - 1);
-  for (auto item : all) forEachCell(item, [&](int c) { static_.items[fill[c]++] = item; });
-  head_.assign(cells, -1);
+  auto bin = [&](const auto& items, auto bounds, std::vector<std::uint32_t>& start, auto& out) {
+    start.assign(cells + 1, 0);
+    for (const auto& item : items) {
+      const auto [ax, ay, bx, by] = bounds(item);
+      forEachCell(ax, ay, bx, by, [&](std::size_t c) { ++start[c + 1]; });
+    }
+    for (std::size_t c = 0; c < cells; ++c) start[c + 1] += start[c];
+    out.resize(start[cells]);
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (const auto& item : items) {
+      const auto [ax, ay, bx, by] = bounds(item);
+      forEachCell(ax, ay, bx, by, [&](std::size_t c) { out[fill[c]++] = item; });
+    }
+  };
+  bin(segs, [](const Seg& s) {
+    return std::array{std::min(s.ax, s.ax + s.dx), std::min(s.ay, s.ay + s.dy),
+                      std::max(s.ax, s.ax + s.dx), std::max(s.ay, s.ay + s.dy)};
+  }, segStart_, cellSegs_);
+  bin(circles, [](const Circle& c) { return std::array{c.cx - c.r, c.cy - c.r, c.cx + c.r, c.cy + c.r}; },
+      pillarStart_, cellPillars_);
+  robotSpan_.assign(cells, Span{});
+  x1_ = x0_ + nx_ * cell_, y1_ = y0_ + ny_ * cell_;
 }
 
 void RayCaster::cellRange(double ax, double ay, double bx, double by, int& i0, int& j0, int& i1, int& j1) const {
@@ -83,30 +89,41 @@ void RayCaster::cellRange(double ax, double ay, double bx, double by, int& i0, i
 }
 
 void RayCaster::setRobots(const std::vector<Point2>& centres, const std::vector<double>& radii) {
-  for (int c : touched_) head_[c] = -1;
+  for (int c : touched_) robotSpan_[c] = Span{};
   touched_.clear();
-  links_.clear();
   outside_.clear();
   robots_.resize(centres.size());
-  const double x1 = x0_ + nx_ * cell_, y1 = y0_ + ny_ * cell_;
-  for (std::size_t k = 0; k < centres.size(); ++k) {
-    const Circle c{centres[k].x(), centres[k].y(), radii[k]};
-    robots_[k] = c;
-    if (centres.size() == 1) break;  // a robot never sees itself: nothing to bin
-    if (!(c.cx - c.r >= x0_ && c.cy - c.r >= y0_ && c.cx + c.r <= x1 && c.cy + c.r <= y1)) {
-      outside_.push_back(static_cast<int>(k));  // includes NaN positions: tested directly, never binned
-      continue;
-    }
+  for (std::size_t k = 0; k < centres.size(); ++k)
+    robots_[k] = {centres[k].x(), centres[k].y(), radii[k], static_cast<int>(k)};
+  if (centres.size() == 1) return;  // a robot never sees itself: nothing to bin
+
+  // Count per cell, then place; both passes run in descending index, the order rays test them in.
+  const double x1 = x1_, y1 = y1_;
+  auto inside = [&](const Robot& c) {
+    return c.cx - c.r >= x0_ && c.cy - c.r >= y0_ && c.cx + c.r <= x1 && c.cy + c.r <= y1;  // false for NaN
+  };
+  auto forEachCell = [&](const Robot& c, auto&& visit) {
     int i0, j0, i1, j1;
     cellRange(c.cx - c.r, c.cy - c.r, c.cx + c.r, c.cy + c.r, i0, j0, i1, j1);
     for (int j = j0; j <= j1; ++j)
-      for (int i = i0; i <= i1; ++i) {
-        const int cell = j * nx_ + i;
-        if (head_[cell] < 0) touched_.push_back(cell);
-        links_.push_back({static_cast<int>(k), head_[cell]});
-        head_[cell] = static_cast<int>(links_.size() - 1);
-      }
+      for (int i = i0; i <= i1; ++i) visit(j * nx_ + i);
+  };
+  for (std::size_t k = 0; k < robots_.size(); ++k)
+    if (!inside(robots_[k])) outside_.push_back(static_cast<int>(k));  // tested directly, never binned
+  for (std::size_t k = robots_.size(); k-- > 0;)
+    if (inside(robots_[k]))
+      forEachCell(robots_[k], [&](int cell) {
+        if (robotSpan_[cell].end++ == 0) touched_.push_back(cell);
+      });
+  std::uint32_t total = 0;
+  for (int c : touched_) {
+    const std::uint32_t n = robotSpan_[c].end;
+    robotSpan_[c] = {total, total};
+    total += n;
   }
+  cellRobots_.resize(total);
+  for (std::size_t k = robots_.size(); k-- > 0;)
+    if (inside(robots_[k])) forEachCell(robots_[k], [&](int cell) { cellRobots_[robotSpan_[cell].end++] = robots_[k]; });
 }
 
 namespace {
@@ -131,16 +148,10 @@ inline void hitCircle(double cx, double cy, double r, double ox, double oy, doub
 }  // namespace
 
 [[gnu::always_inline]] inline void RayCaster::testCell(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const {
-  for (std::uint32_t k = static_.start[cell], end = static_.start[cell + 1]; k < end; ++k) {
-    const std::uint32_t item = static_.items[k];
-    if (item & kPillar) [[unlikely]] {
-      const Circle& c = circles_[item & ~kPillar];
-      hitCircle(c.cx, c.cy, c.r, ox, oy, ux, uy, best);
-      continue;
-    }
+  for (std::uint32_t k = segStart_[cell], end = segStart_[cell + 1]; k < end; ++k) {
     // Ray o + t u against segment a + v d: t = tn / denom, v = vn / denom. Compared without
     // dividing (the sign of denom folded in) so that only an accepted hit costs a division.
-    const Seg& s = segs_[item];
+    const Seg& s = cellSegs_[k];
     double denom = ux * s.dy - uy * s.dx;  // cross(u, d); 0 when parallel: an edge-on wall is never heard
     const double wx = s.ax - ox, wy = s.ay - oy;
     double tn = wx * s.dy - wy * s.dx;
@@ -150,24 +161,57 @@ inline void hitCircle(double cx, double cy, double r, double ox, double oy, doub
     if (!((tn >= 0.0) & (vn >= 0.0) & (vn <= denom) & (tn < best.distance * denom))) continue;
     best = {tn / denom, std::abs(ux * s.nx + uy * s.ny)};
   }
-  for (int l = head_[cell]; l >= 0; l = links_[l].next)
-    if (links_[l].robot != self) {
-      const Circle& c = robots_[links_[l].robot];
-      hitCircle(c.cx, c.cy, c.r, ox, oy, ux, uy, best);
+  for (std::uint32_t k = pillarStart_[cell], end = pillarStart_[cell + 1]; k < end; ++k) {
+    const Circle& c = cellPillars_[k];
+    hitCircle(c.cx, c.cy, c.r, ox, oy, ux, uy, best);
+  }
+  const Span robots = robotSpan_[cell];
+  for (std::uint32_t k = robots.begin; k < robots.end; ++k) {
+    const Robot& c = cellRobots_[k];
+    if (c.index != self) hitCircle(c.cx, c.cy, c.r, ox, oy, ux, uy, best);
+  }
+}
+
+[[gnu::always_inline]] inline void RayCaster::walk(int i, int j, double bx0, double bx1, double by0, double by1, double ox,
+                                                   double oy, double ux, double uy, double tmax, int self,
+                                                   RayHit& best) const {
+  // Walk the cells the ray crosses, nearest first; stop once the best hit lies within the cell.
+  // bx0/bx1 (by0/by1): the offsets from the origin to cell i's (j's) lower and upper sides.
+  const double ix = 1.0 / ux, iy = 1.0 / uy;  // +-inf along an axis; the steps handle it
+  const int si = ux > 0 ? 1 : -1, sj = uy > 0 ? 1 : -1;
+  const double dtx = cell_ * std::abs(ix), dty = cell_ * std::abs(iy);
+  double tx = ux > 0 ? bx1 * ix : ux < 0 ? bx0 * ix : INFINITY;
+  double ty = uy > 0 ? by1 * iy : uy < 0 ? by0 * iy : INFINITY;
+  for (;;) {
+    testCell(j * nx_ + i, ox, oy, ux, uy, self, best);
+    const double exit = std::min(tx, ty);
+    if (best.distance <= exit || exit >= tmax) break;
+    if (tx < ty) {
+      i += si, tx += dtx;
+      if (static_cast<unsigned>(i) >= static_cast<unsigned>(nx_)) break;
+    } else {
+      j += sj, ty += dty;
+      if (static_cast<unsigned>(j) >= static_cast<unsigned>(ny_)) break;
     }
+  }
+}
+
+[[gnu::always_inline]] inline void RayCaster::testOutside(double ox, double oy, double ux, double uy, int self,
+                                                          RayHit& best) const {
+  for (int k : outside_)
+    if (k != self) hitCircle(robots_[k].cx, robots_[k].cy, robots_[k].r, ox, oy, ux, uy, best);
 }
 
 RayHit RayCaster::cast(const Point2& origin, const Vec2& dir, double range, int self) const {
   const double ox = origin.x(), oy = origin.y(), ux = dir.x(), uy = dir.y();
   RayHit best{range, 1.0};
-  for (int k : outside_)
-    if (k != self) hitCircle(robots_[k].cx, robots_[k].cy, robots_[k].r, ox, oy, ux, uy, best);
+  testOutside(ox, oy, ux, uy, self, best);
 
   // Clip [0, range] to the grid's box (slab method), unless the ray starts inside it (the usual case).
-  const double ix = 1.0 / ux, iy = 1.0 / uy;  // +-inf along an axis; the slabs and steps handle it
-  const double x1 = x0_ + nx_ * cell_, y1 = y0_ + ny_ * cell_;
+  const double x1 = x1_, y1 = y1_;
   double tmin = 0.0, tmax = range;
   if (!(ox >= x0_ && ox <= x1 && oy >= y0_ && oy <= y1)) [[unlikely]] {
+    const double ix = 1.0 / ux, iy = 1.0 / uy;
     if (ux != 0.0) {
       const double a = (x0_ - ox) * ix, b = (x1 - ox) * ix;
       tmin = std::max(tmin, std::min(a, b)), tmax = std::min(tmax, std::max(a, b));
@@ -182,29 +226,42 @@ RayHit RayCaster::cast(const Point2& origin, const Vec2& dir, double range, int 
     }
   }
   if (tmin <= tmax) {
-    // Walk the cells the ray crosses, nearest first; stop once the best hit lies within the cell.
     const double px = (ox + tmin * ux - x0_) * inv_, py = (oy + tmin * uy - y0_) * inv_;  // >= 0 up to rounding
-    int i = std::min(std::max(static_cast<int>(px), 0), nx_ - 1);
-    int j = std::min(std::max(static_cast<int>(py), 0), ny_ - 1);
-    const int si = ux > 0 ? 1 : -1, sj = uy > 0 ? 1 : -1;
-    const double dtx = cell_ * std::abs(ix), dty = cell_ * std::abs(iy);
-    double tx = ux > 0 ? (x0_ + (i + 1) * cell_ - ox) * ix : ux < 0 ? (x0_ + i * cell_ - ox) * ix : INFINITY;
-    double ty = uy > 0 ? (y0_ + (j + 1) * cell_ - oy) * iy : uy < 0 ? (y0_ + j * cell_ - oy) * iy : INFINITY;
-    for (;;) {
-      testCell(j * nx_ + i, ox, oy, ux, uy, self, best);
-      const double exit = std::min(tx, ty);
-      if (best.distance <= exit || exit >= tmax) break;
-      if (tx < ty) {
-        i += si, tx += dtx;
-        if (static_cast<unsigned>(i) >= static_cast<unsigned>(nx_)) break;
-      } else {
-        j += sj, ty += dty;
-        if (static_cast<unsigned>(j) >= static_cast<unsigned>(ny_)) break;
-      }
-    }
+    const int i = std::min(std::max(static_cast<int>(px), 0), nx_ - 1);
+    const int j = std::min(std::max(static_cast<int>(py), 0), ny_ - 1);
+    walk(i, j, x0_ + i * cell_ - ox, x0_ + (i + 1) * cell_ - ox, y0_ + j * cell_ - oy, y0_ + (j + 1) * cell_ - oy,
+         ox, oy, ux, uy, tmax, self, best);
   }
   if (best.distance >= range) best.distance = INFINITY;
   return best;
+}
+
+double RayCaster::castCone(const Point2& origin, std::span<const Vec2> dirs, double range, int self,
+                           double cosCutoff) const {
+  const double ox = origin.x(), oy = origin.y();
+  double nearest = range;
+  if (!(ox >= x0_ && ox <= x1_ && oy >= y0_ && oy <= y1_)) [[unlikely]] {
+    for (const Vec2& d : dirs) {
+      const RayHit hit = cast(origin, d, nearest, self);
+      if (hit.cosIncidence >= cosCutoff) nearest = std::min(nearest, hit.distance);
+    }
+    return nearest;
+  }
+  // What cast() computes per ray from the origin alone (tmin = 0 inside the grid), done once.
+  const double px = (ox - x0_) * inv_, py = (oy - y0_) * inv_;
+  const int i = std::min(std::max(static_cast<int>(px), 0), nx_ - 1);
+  const int j = std::min(std::max(static_cast<int>(py), 0), ny_ - 1);
+  const double bx0 = x0_ + i * cell_ - ox, bx1 = x0_ + (i + 1) * cell_ - ox;
+  const double by0 = y0_ + j * cell_ - oy, by1 = y0_ + (j + 1) * cell_ - oy;
+  for (const Vec2& d : dirs) {
+    const double ux = d.x(), uy = d.y();
+    RayHit best{nearest, 1.0};
+    testOutside(ox, oy, ux, uy, self, best);
+    walk(i, j, bx0, bx1, by0, by1, ox, oy, ux, uy, nearest, self, best);
+    // As cast() then min(): a ray that met nothing nearer leaves `nearest` as it is.
+    if (best.distance < nearest && best.cosIncidence >= cosCutoff) nearest = best.distance;
+  }
+  return nearest;
 }
 
 }  // namespace frob::worlds::detail

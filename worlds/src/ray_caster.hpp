@@ -6,6 +6,7 @@
 #include "frob/worlds/world_def.hpp"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace frob::worlds::detail {
@@ -24,8 +25,14 @@ class RayCaster {
   void setRobots(const std::vector<Point2>& centres, const std::vector<double>& radii);
   // The nearest hit of the ray from `origin` along unit `dir` within `range`, ignoring robot `self`.
   [[nodiscard]] RayHit cast(const Point2& origin, const Vec2& dir, double range, int self) const;
+  // The sonar reading of a cone: rays from `origin` along the unit `dirs`, in order, each cast only
+  // as far as the nearest echo so far; a hit echoes when its cosIncidence >= `cosCutoff`. Returns
+  // the nearest echo, or `range` when none. Bit-identical to calling cast() per ray, but the work
+  // that depends on the origin alone is done once per cone.
+  [[nodiscard]] double castCone(const Point2& origin, std::span<const Vec2> dirs, double range, int self,
+                                double cosCutoff) const;
   // Number of static segments (rectangles and polylines count their sides).
-  [[nodiscard]] std::size_t segmentCount() const { return segs_.size(); }
+  [[nodiscard]] std::size_t segmentCount() const { return segmentCount_; }
 
  private:
   struct Seg {
@@ -34,26 +41,32 @@ class RayCaster {
   struct Circle {
     double cx, cy, r;
   };
-  // Compressed lists: cell c holds items[start[c] .. start[c+1]).
-  struct Bins {
-    std::vector<std::uint32_t> start, items;
+  struct Robot {
+    double cx, cy, r;
+    int index;  // into robots_, to skip the casting robot
+  };
+  // Per cell, the items a ray must test, stored by value so that a cell's walls are contiguous:
+  // a ray reads one run of segments, then pillars and robots, without chasing indices.
+  struct Span {
+    std::uint32_t begin = 0, end = 0;
   };
   void cellRange(double x0, double y0, double x1, double y1, int& i0, int& j0, int& i1, int& j1) const;
+  void walk(int i, int j, double bx0, double bx1, double by0, double by1, double ox, double oy, double ux,
+            double uy, double tmax, int self, RayHit& best) const;
+  void testOutside(double ox, double oy, double ux, double uy, int self, RayHit& best) const;
   void testCell(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const;
 
-  std::vector<Seg> segs_;
-  std::vector<Circle> circles_;   // static pillars
-  std::vector<Circle> robots_;
+  std::size_t segmentCount_ = 0;
+  std::vector<Robot> robots_;
   std::vector<int> outside_;      // robots not fully inside the grid: tested by every ray
-  Bins static_;                   // item: segment index, or pillar index with the top bit set
-  // Robots per cell as linked lists, so that re-binning costs only the cells robots touch.
-  struct Link {
-    int robot, next;
-  };
-  std::vector<int> head_;         // per cell: first link, or -1
-  std::vector<Link> links_;
-  std::vector<int> touched_;      // cells whose head_ is set
-  double x0_ = 0, y0_ = 0, cell_ = 1, inv_ = 1;
+  std::vector<std::uint32_t> segStart_, pillarStart_;  // cell c: [start[c], start[c + 1])
+  std::vector<Seg> cellSegs_;     // segments per cell, in index order (a wall is copied into each cell it spans)
+  std::vector<Circle> cellPillars_;
+  // Robots per cell, rebuilt each step: only the cells robots touch are set and later cleared.
+  std::vector<Span> robotSpan_;   // per cell
+  std::vector<Robot> cellRobots_; // per cell, in descending robot index
+  std::vector<int> touched_;      // cells whose robotSpan_ is set
+  double x0_ = 0, y0_ = 0, x1_ = 1, y1_ = 1, cell_ = 1, inv_ = 1;  // grid box [x0_, x1_] x [y0_, y1_]
   int nx_ = 1, ny_ = 1;
 };
 

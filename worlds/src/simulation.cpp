@@ -23,6 +23,7 @@ struct RobotState {
   b2Body* body = nullptr;
   std::vector<Vec2> rayDirs;       // per sonar, per ray: direction relative to heading
   std::vector<Vec2> sonarOffsets;  // per sonar: sensor position relative to the centre, robot frame
+  std::vector<Vec2> coneDirs;      // scratch while sensing: one cone's ray directions in the world frame
   double cosCutoff = 1.0;
   double forward = 0.0, turn = 0.0;  // commands after acceleration limits
   Pose2 odometry;
@@ -153,6 +154,7 @@ struct Simulation::Impl : b2ContactListener {
                        [](double x, double y) { return std::abs(x) < std::abs(y) || (std::abs(x) == std::abs(y) && x > y); });
       for (double off : offsets) r.rayDirs.push_back(unitVector(a + off));
     }
+    r.coneDirs.resize(static_cast<std::size_t>(s.rays));
     r.cosCutoff = std::cos(s.specularCutoff);
     r.previous = poseOf(r.body);
     r.odometry = r.previous;
@@ -212,12 +214,9 @@ struct Simulation::Impl : b2ContactListener {
       const Point2 origin = pose.position + rotate(r.sonarOffsets[j]);
       // Rays run from the cone's axis outwards, each only as far as the nearest echo so far: a
       // surface beyond it cannot change the reading, and the shorter walk saves most of the work.
-      double nearest = s.maxRange;
-      for (std::size_t k = 0; k < rays; ++k) {
-        const detail::RayHit hit =
-            caster.cast(origin, rotate(r.rayDirs[j * rays + k]), nearest, static_cast<int>(i));
-        if (hit.cosIncidence >= r.cosCutoff) nearest = std::min(nearest, hit.distance);  // else reflected away
-      }
+      // A hit whose cosIncidence is below the cutoff is reflected away and does not echo.
+      for (std::size_t k = 0; k < rays; ++k) r.coneDirs[k] = rotate(r.rayDirs[j * rays + k]);
+      const double nearest = caster.castCone(origin, r.coneDirs, s.maxRange, static_cast<int>(i), r.cosCutoff);
       const double noise = r.sonarRng.gaussian();  // drawn for every sonar so the stream never depends on hits
       r.frame.sonar[j] = nearest >= s.maxRange ? s.maxRange
                                                : std::clamp(nearest * (1.0 + s.noise * noise), s.minRange, s.maxRange);
@@ -312,7 +311,10 @@ void Simulation::step(std::span<const Wheels> wheels) {
     r.body->SetAngularVelocity(static_cast<float>(r.turn));
   }
   s.physics.Step(static_cast<float>(dt), kVelocityIterations, kPositionIterations);
-  for (RobotState& r : s.robots) s.updateOdometry(r);
+  // Like sensing, odometry reads only its own body and draws from its own random stream.
+  s.workers.run(s.robots.size(), [&s](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) s.updateOdometry(s.robots[i]);
+  });
   ++s.steps;
 }
 
