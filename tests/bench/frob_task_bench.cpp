@@ -1,11 +1,12 @@
 // Cost of a task switch, and the per-step overhead of running a behavior inside a task.
-#include "frob/frob.hpp"
+#include "wall_follower.hpp"
 
 #include <benchmark/benchmark.h>
 
 namespace {
 
 using namespace frob;
+using namespace bench;
 
 Robot benchRobot() { return Robot(nomadSpec(), ScriptedSensors{}); }
 
@@ -49,5 +50,33 @@ void BM_BehaviorInTaskStep(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(c.at(clock.advance()));
 }
 BENCHMARK(BM_BehaviorInTaskStep);
+
+// The paper's wall follower, bare and as the behavior of a running task.
+void BM_BareWallFollowerStep(benchmark::State& state) {
+  auto frame = std::make_shared<SensorFrame>();
+  Robot robot(nomadSpec(), [frame](const Instant&) -> const SensorFrame& { return *frame; });
+  Behavior<Wheels> c = wallFollower(robot);
+  Clock clock(0.01);
+  for (auto _ : state) {
+    const Instant& now = clock.advance();
+    fillFrame(*frame, now.step);
+    benchmark::DoNotOptimize(c.at(now));
+  }
+}
+BENCHMARK(BM_BareWallFollowerStep);
+
+void BM_WallFollowerInTaskStep(benchmark::State& state) {
+  auto frame = std::make_shared<SensorFrame>();
+  Robot robot(nomadSpec(), [frame](const Instant&) -> const SensorFrame& { return *frame; });
+  Behavior<Wheels> c =
+      runTask(robot, mkTask([](const TaskState& ts) { return std::pair{wallFollower(ts.robot()), never()}; }));
+  Clock clock(0.01);
+  for (auto _ : state) {
+    const Instant& now = clock.advance();
+    fillFrame(*frame, now.step);
+    benchmark::DoNotOptimize(c.at(now));
+  }
+}
+BENCHMARK(BM_WallFollowerInTaskStep);
 
 }  // namespace
