@@ -1,5 +1,6 @@
 #pragma once
-/// The offscreen renderer: FrameScenes (plus plots) to RGBA images, through OSMesa (llvmpipe).
+/// The offscreen renderer: FrameScenes (plus plots) to RGBA images. The top-down view and plots are
+/// rasterized on the CPU; the chase view goes through OSMesa (llvmpipe).
 
 #include "frob/geometry.hpp"
 #include "frob/render/image.hpp"
@@ -44,7 +45,7 @@ struct RenderDef {
   std::string fontFile;                  ///< proportional font; empty: DejaVuSans from the build
   std::string monoFontFile;              ///< fixed-width font for the HUD; empty: DejaVuSansMono
   std::string robotModelFile;            ///< chase-view robot mesh (assimp); empty: render/models/robot.obj
-  int rasterThreads = 0;                 ///< llvmpipe threads (LP_NUM_THREADS, read at the process's first context); -1: leave it
+  int rasterThreads = 0;                 ///< chase view: llvmpipe threads (LP_NUM_THREADS, read at the process's first context); -1: leave it
 };
 
 /// Checks a RenderDef without building anything heavy: sizes, fonts and (for Chase) the model.
