@@ -129,6 +129,32 @@ void triangle(const Vertex& v0, const Vertex& v1, const Vertex& v2, bool blend, 
   }
 }
 
+// Triangles (a, b, c) and (a, c, d), as Canvas::quad makes them, when they form an axis-aligned
+// rectangle of one colour: filled straight, with the coverage the two triangles would give
+// (columns with centres in [x0, x1), rows with centres in (y0, y1]). Most of a frame's
+// triangles are such: dashes, fills, grid and axis lines, walls along the axes.
+bool axisRect(const Vertex* v, bool blend, std::uint8_t* rgba, int width, int height) {
+  const Vertex &a = v[0], &b = v[1], &c = v[2];
+  if (!(v[3].x == a.x && v[3].y == a.y && v[4].x == c.x && v[4].y == c.y)) return false;
+  const Vertex& d = v[5];
+  const Rgba8 col = a.color;
+  for (const Vertex* w : {&b, &c, &v[3], &v[4], &d}) {
+    if (w->color.r != col.r || w->color.g != col.g || w->color.b != col.b || w->color.a != col.a) return false;
+  }
+  const bool rowsFirst = a.y == b.y && b.x == c.x && c.y == d.y && d.x == a.x;
+  const bool colsFirst = a.x == b.x && b.y == c.y && c.x == d.x && d.y == a.y;
+  if (!rowsFirst && !colsFirst) return false;
+  const double x0 = snap(std::min(a.x, c.x)), x1 = snap(std::max(a.x, c.x));
+  const double y0 = snap(std::min(a.y, c.y)), y1 = snap(std::max(a.y, c.y));
+  if (!(x0 > -1e7 && x1 < 1e7 && y0 > -1e7 && y1 < 1e7)) return true;  // non-finite or absurd: nothing
+  const int c0 = std::max(0, static_cast<int>(std::ceil(x0 - 0.5)));
+  const int c1 = std::min(width, static_cast<int>(std::ceil(x1 - 0.5)));
+  const int r0 = std::max(0, static_cast<int>(std::floor(y0 - 0.5)) + 1);
+  const int r1 = std::min(height - 1, static_cast<int>(std::floor(y1 - 0.5)));
+  for (int r = r0; r <= r1 && c1 > c0; ++r) span(rgba + static_cast<std::size_t>(r) * width * 4, c0, c1, col, blend);
+  return true;
+}
+
 }  // namespace
 
 void fillRgba(std::uint8_t* rgba, int width, int height, Rgba8 clear) {
@@ -154,8 +180,13 @@ void rasterize(const Canvas& canvas, std::uint8_t* rgba, int width, int height, 
     const std::size_t first = std::max(runs[i].first, firstVertex);
     const std::size_t end = std::min(i + 1 < runs.size() ? runs[i + 1].first : v.size(), endVertex);
     const bool blend = runs[i].mode == Mode::Blend;
-    for (std::size_t k = first; k + 3 <= end; k += 3) {
+    for (std::size_t k = first; k + 3 <= end;) {
+      if (k + 6 <= end && axisRect(&v[k], blend, rgba, width, height)) {
+        k += 6;
+        continue;
+      }
       triangle(v[k], v[k + 1], v[k + 2], blend, rgba, width, height);
+      k += 3;
     }
   }
 }
