@@ -51,8 +51,8 @@ struct RenderDef {
 /// Checks a RenderDef without building anything heavy: sizes, fonts and (for Chase) the model.
 [[nodiscard]] Status validate(const RenderDef& def);
 
-/// Draws frames into an offscreen OpenGL context of fixed size. Output is a pure function of the
-/// inputs: the same scene and plots give the same pixels. Not thread-safe; one per thread.
+/// Draws frames of fixed size: the top-down view and plots on the CPU, the chase view in an offscreen
+/// OpenGL context. Output is a pure function of the inputs: the same scene and plots give the same pixels. Not thread-safe; one per thread.
 /// Typical use (see tests/render/pipeline_test.cpp): validate() the RenderDef and VideoDef before
 /// the run, create() and VideoWriter::open(), then per step renderInto() as often as
 /// FramePicker::framesAt() says and VideoWriter::write(), and finally VideoWriter::close().
