@@ -1,4 +1,5 @@
 #include "font_atlas.hpp"
+#include "raster.hpp"
 
 #include <ft2build.h>
 #include FT_FREETYPE_H
@@ -110,8 +111,7 @@ void FontAtlas::composite(const std::vector<OverlayOp>& ops, std::uint8_t* rgba,
     const int cx1 = std::min(width, op.clip[2]), cy1 = std::min(height, op.clip[3]);
     if (op.kind == OverlayOp::Kind::Fill) {
       for (int y = std::max(cy0, op.y0); y < std::min(cy1, op.y1); ++y)
-        for (int x = std::max(cx0, op.x0); x < std::min(cx1, op.x1); ++x)
-          blend(rgba + (static_cast<std::size_t>(y) * width + x) * 4, op.color, op.color.a);
+        span(rgba + static_cast<std::size_t>(y) * width * 4, std::max(cx0, op.x0), std::min(cx1, op.x1), op.color, true);
       continue;
     }
     int px = op.x0;

@@ -5,11 +5,13 @@
 #include "font_atlas.hpp"
 #include "gl_context.hpp"
 #include "model.hpp"
+#include "raster.hpp"
 
 #include <GL/gl.h>
 
 #include <cstring>
 #include <optional>
+#include <type_traits>
 
 namespace frob::render {
 
@@ -58,10 +60,18 @@ struct Renderer::Impl {
   std::optional<detail::Mesh> model;
   detail::Canvas overlay;
   detail::ChaseLayers chase;
+  // The top-down view's static world (floor, grid, obstacles, walls, point markers) as drawn
+  // pixels, and a hash of the scene parts it was drawn from; each frame starts from a copy.
+  std::vector<std::uint8_t> staticPixels;
+  std::uint64_t staticKey = 0;
 
   void begin(const Color& clear, Image& out);
   void draw2d();
   void finish(Image& out);
+  // The flat 2D path (top-down view, plots): the canvas is rasterized on the CPU, no GL at all.
+  void begin2d(const Color& clear, Image& out);
+  void finish2d(Image& out);
+  std::size_t overlayFrom = 0;  // vertices before this are already in the frame
 };
 
 Status validate(const RenderDef& given) {
@@ -88,21 +98,24 @@ Result<Renderer> Renderer::create(const RenderDef& given) {
     if (!model) return model.status();
     impl->model = std::move(model.value());
   }
-  auto gl = detail::GlContext::create(def.width, def.height, def.view == ViewMode::Chase, def.rasterThreads);
-  if (!gl) return gl.status();
-  impl->gl = std::move(gl.value());
+  // Only the chase view needs OpenGL: the top-down view and the plots are rasterized on the CPU.
+  if (def.view == ViewMode::Chase) {
+    auto gl = detail::GlContext::create(def.width, def.height, true, def.rasterThreads);
+    if (!gl) return gl.status();
+    impl->gl = std::move(gl.value());
 
-  // Fixed state: client vertex arrays, alpha blending (per run), alpha writes off so frames stay
-  // opaque. Text is not drawn by GL at all (see OverlayOp). A scratch buffer makes the context
-  // current for this; frames are drawn into the caller's image.
-  std::vector<std::uint8_t> scratch(static_cast<std::size_t>(def.width) * def.height * 4);
-  impl->gl->makeCurrent(scratch.data());
-  glEnableClientState(GL_VERTEX_ARRAY);
-  glEnableClientState(GL_COLOR_ARRAY);
-  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-  glDisable(GL_DITHER);
-  glDisable(GL_CULL_FACE);
-  glDepthFunc(GL_LEQUAL);
+    // Fixed state: client vertex arrays, alpha blending (per run), alpha writes off so frames stay
+    // opaque. Text is not drawn by GL at all (see OverlayOp). A scratch buffer makes the context
+    // current for this; frames are drawn into the caller's image.
+    std::vector<std::uint8_t> scratch(static_cast<std::size_t>(def.width) * def.height * 4);
+    impl->gl->makeCurrent(scratch.data());
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDisable(GL_DITHER);
+    glDisable(GL_CULL_FACE);
+    glDepthFunc(GL_LEQUAL);
+  }
   return Renderer(std::move(impl));
 }
 
@@ -127,6 +140,55 @@ void Renderer::Impl::begin(const Color& bg, Image& out) {
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
   overlay.clear();
 }
+
+void Renderer::Impl::begin2d(const Color& bg, Image& out) {
+  out.width = def.width;
+  out.height = def.height;
+  out.rgba.resize(static_cast<std::size_t>(def.width) * def.height * 4);
+  detail::fillRgba(out.rgba.data(), out.width, out.height, detail::rgba8(bg));
+  overlay.clear();
+  overlayFrom = 0;
+}
+
+void Renderer::Impl::finish2d(Image& out) {
+  detail::rasterize(overlay, out.rgba.data(), out.width, out.height, overlayFrom);
+  fonts->composite(overlay.overlay(), out.rgba.data(), out.width, out.height);
+}
+
+namespace {
+
+// FNV-1a over the bytes of the scene parts the static world is drawn from.
+class StaticKey {
+ public:
+  template <class T>
+  void add(const T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const auto* p = reinterpret_cast<const unsigned char*>(&v);
+    for (std::size_t i = 0; i < sizeof(T); ++i) h_ = (h_ ^ p[i]) * 0x100000001b3ULL;
+  }
+  void add(const Point2& p) { add(p.x()), add(p.y()); }
+  [[nodiscard]] std::uint64_t value() const { return h_; }
+
+ private:
+  std::uint64_t h_ = 0xcbf29ce484222325ULL;
+};
+
+std::uint64_t staticKeyOf(const FrameScene& s) {
+  StaticKey k;
+  k.add(s.bounds.min), k.add(s.bounds.max);
+  k.add(s.walls.size()), k.add(s.blocks.size()), k.add(s.pillars.size()), k.add(s.points.size());
+  for (const Wall& w : s.walls) k.add(w.a), k.add(w.b), k.add(w.thickness);
+  for (const Block& b : s.blocks) k.add(b.center), k.add(b.halfExtents.x()), k.add(b.halfExtents.y()), k.add(b.angle);
+  for (const Pillar& p : s.pillars) k.add(p.center), k.add(p.radius);
+  for (const NamedPoint& p : s.points) {
+    k.add(p.at);
+    const Color c = p.color.value_or(Color{-1, -1, -1, -1});
+    k.add(c.r), k.add(c.g), k.add(c.b), k.add(c.a);
+  }
+  return k.value();
+}
+
+}  // namespace
 
 void Renderer::Impl::draw2d() {
   glViewport(0, 0, def.width, def.height);
@@ -153,7 +215,7 @@ Image Renderer::render(const FrameScene& scene, const PlotSet& plots) {
 void Renderer::renderInto(const FrameScene& scene, const PlotSet& plots, Image& out) {
   Impl& m = *impl_;
   const bool topDown = m.def.view == ViewMode::TopDown;
-  m.begin(topDown ? detail::palette::floor : detail::palette::background, out);
+  if (topDown) m.begin2d(detail::palette::floor, out); else m.begin(detail::palette::background, out);
   const detail::Panels panels = detail::layoutPanels(m.def);
   const auto& w = panels.world;
   m.overlay.setClip(static_cast<int>(w.x), static_cast<int>(w.y), static_cast<int>(w.x + w.w), static_cast<int>(w.y + w.h));
@@ -162,7 +224,19 @@ void Renderer::renderInto(const FrameScene& scene, const PlotSet& plots, Image& 
     const detail::TextSink text = [&](const Point2& at, const std::string& s, Color col) {
       m.fonts->draw(m.overlay, detail::Font::Sans, map.map(at), s, detail::rgba8(col));
     };
-    detail::drawGround(m.overlay, *m.fonts, m.def, scene, map, true, text, &panels.world);
+    std::size_t staticEnd = 0;
+    detail::drawGround(m.overlay, *m.fonts, m.def, scene, map, true, text, &panels.world, &staticEnd);
+    // The static world is drawn once per change of the walls (usually once per renderer) and copied
+    // into each frame: re-rasterizing its long thin triangles was a good share of a frame.
+    const std::uint64_t key = staticKeyOf(scene);
+    if (m.staticPixels.size() != out.rgba.size() || key != m.staticKey) {
+      detail::rasterize(m.overlay, out.rgba.data(), out.width, out.height, 0, staticEnd);
+      m.staticPixels = out.rgba;
+      m.staticKey = key;
+    } else {
+      std::memcpy(out.rgba.data(), m.staticPixels.data(), out.rgba.size());
+    }
+    m.overlayFrom = staticEnd;
   } else {
     detail::buildChase(m.chase, m.overlay, *m.fonts, m.def, scene, *m.model, panels.world);
     const auto& vp = panels.world;
@@ -187,6 +261,10 @@ void Renderer::renderInto(const FrameScene& scene, const PlotSet& plots, Image& 
     m.overlay.setClip(static_cast<int>(p.x), static_cast<int>(p.y), static_cast<int>(p.x + p.w), static_cast<int>(p.y + p.h));
     detail::drawPlots(m.overlay, *m.fonts, plots, scene.time, panels.plots);
   }
+  if (topDown) {
+    m.finish2d(out);
+    return;
+  }
   m.draw2d();
   m.finish(out);
 }
@@ -194,11 +272,10 @@ void Renderer::renderInto(const FrameScene& scene, const PlotSet& plots, Image& 
 Image Renderer::renderPlots(const PlotSet& plots, double now) {
   Impl& m = *impl_;
   Image out;
-  m.begin(white, out);
+  m.begin2d(white, out);
   detail::drawPlots(m.overlay, *m.fonts, plots, now,
                     {0, 0, static_cast<double>(m.def.width), static_cast<double>(m.def.height)});
-  m.draw2d();
-  m.finish(out);
+  m.finish2d(out);
   return out;
 }
 

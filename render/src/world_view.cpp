@@ -155,7 +155,7 @@ void drawPicture(Canvas& c, const Picture& picture, const Mapping& m, const Text
 }
 
 void drawGround(Canvas& c, const FontAtlas& fonts, const RenderDef& def, const FrameScene& scene, const Mapping& m,
-                bool bodies, const TextSink& text, const Viewport* clearedFloor) {
+                bool bodies, const TextSink& text, const Viewport* clearedFloor, std::size_t* staticEnd) {
   const Bounds& b = scene.bounds;
   const Vec2 lo = m.map(b.min), hi = m.map(b.max);
   if (clearedFloor == nullptr) {
@@ -192,6 +192,8 @@ void drawGround(Canvas& c, const FontAtlas& fonts, const RenderDef& def, const F
     c.quad(q + Vec2(0, -s), q + Vec2(s, 0), q + Vec2(0, s), q + Vec2(-s, 0), rgba8(col));
     if (!p.name.empty()) text(p.at + Vec2(7 * m.pixel / m.scale, -4 * m.pixel / m.scale), p.name, darker(col));
   }
+
+  if (staticEnd != nullptr) *staticEnd = c.vertices().size();
 
   // Paths: the odometry path dashed beneath the true path.
   if (def.paths) {

@@ -1,5 +1,6 @@
 #pragma once
-/// The offscreen renderer: FrameScenes (plus plots) to RGBA images, through OSMesa (llvmpipe).
+/// The offscreen renderer: FrameScenes (plus plots) to RGBA images. The top-down view and plots are
+/// rasterized on the CPU; the chase view goes through OSMesa (llvmpipe).
 
 #include "frob/geometry.hpp"
 #include "frob/render/image.hpp"
@@ -44,14 +45,14 @@ struct RenderDef {
   std::string fontFile;                  ///< proportional font; empty: DejaVuSans from the build
   std::string monoFontFile;              ///< fixed-width font for the HUD; empty: DejaVuSansMono
   std::string robotModelFile;            ///< chase-view robot mesh (assimp); empty: render/models/robot.obj
-  int rasterThreads = 0;                 ///< llvmpipe threads (LP_NUM_THREADS, read at the process's first context); -1: leave it
+  int rasterThreads = 0;                 ///< chase view: llvmpipe threads (LP_NUM_THREADS, read at the process's first context); -1: leave it
 };
 
 /// Checks a RenderDef without building anything heavy: sizes, fonts and (for Chase) the model.
 [[nodiscard]] Status validate(const RenderDef& def);
 
-/// Draws frames into an offscreen OpenGL context of fixed size. Output is a pure function of the
-/// inputs: the same scene and plots give the same pixels. Not thread-safe; one per thread.
+/// Draws frames of fixed size: the top-down view and plots on the CPU, the chase view in an offscreen
+/// OpenGL context. Output is a pure function of the inputs: the same scene and plots give the same pixels. Not thread-safe; one per thread.
 /// Typical use (see tests/render/pipeline_test.cpp): validate() the RenderDef and VideoDef before
 /// the run, create() and VideoWriter::open(), then per step renderInto() as often as
 /// FramePicker::framesAt() says and VideoWriter::write(), and finally VideoWriter::close().

@@ -19,12 +19,13 @@ struct VideoDef {
   int fps = 30;                     ///< frames per second of the video
   int crf = 23;                     ///< x264 constant rate factor: lower is better and larger
   std::string preset = "ultrafast";  ///< x264 preset: ultrafast (fastest, larger files) ... veryslow
+  int threads = 2;                  ///< x264 encoding threads (frames are converted to YUV on the writer's thread); 0: x264 picks
 };
 
 /// Checks a VideoDef without writing anything: sizes, frame rate, encoder, output directory.
 [[nodiscard]] Status validate(const VideoDef& def);
 
-/// Encodes frames into an MP4 on a worker thread (write() copies the frame and returns). The file
+/// Encodes frames into an MP4 on a worker thread (write() converts the frame to YUV and returns). The file
 /// appears under its name only when close() succeeds; on failure or destruction without close()
 /// the temporary is removed.
 class VideoWriter {
