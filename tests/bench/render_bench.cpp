@@ -6,6 +6,7 @@
 #include "frob/render/video.hpp"
 
 #include <benchmark/benchmark.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -135,7 +136,7 @@ void BM_WritePng(benchmark::State& state) {
   Result<Renderer> r = Renderer::create({.rasterThreads = rasterThreads()});
   if (!r) return state.SkipWithError(r.error().c_str());
   const Image img = r.value().render(run().scene(3000));
-  const std::string path = (std::filesystem::temp_directory_path() / "frob_render_bench.png").string();
+  const std::string path = (std::filesystem::temp_directory_path() / ("frob_render_bench." + std::to_string(::getpid()) + ".png")).string();
   for (auto _ : state) {
     if (Status s = writePng(path, img); !s) return state.SkipWithError(s.error().c_str());
   }
@@ -150,7 +151,7 @@ void BM_Encode(benchmark::State& state, const char* preset) {
   if (!r) return state.SkipWithError(r.error().c_str());
   std::vector<Image> frames;
   for (int k = 0; k < 90; ++k) frames.push_back(r.value().render(run().scene(2000 + 10 * k), run().plots));
-  const std::string path = (std::filesystem::temp_directory_path() / "frob_render_bench_enc.mp4").string();
+  const std::string path = (std::filesystem::temp_directory_path() / ("frob_render_bench_enc." + std::to_string(::getpid()) + ".mp4")).string();
   Result<VideoWriter> v = VideoWriter::open({.path = path, .fps = 30, .preset = preset});
   if (!v) return state.SkipWithError(v.error().c_str());
   std::size_t k = 0;
@@ -168,7 +169,7 @@ BENCHMARK_CAPTURE(BM_Encode, ultrafast, "ultrafast")->Unit(benchmark::kMilliseco
 // The whole 60 s run: build each frame's scene, render it with plots, encode it to MP4.
 void BM_SixtySecondRunToMp4(benchmark::State& state) {
   const RenderDef def{.layout = PanelLayout::PlotRight, .rasterThreads = rasterThreads()};
-  const std::string path = (std::filesystem::temp_directory_path() / "frob_render_bench.mp4").string();
+  const std::string path = (std::filesystem::temp_directory_path() / ("frob_render_bench." + std::to_string(::getpid()) + ".mp4")).string();
   const FramePicker picker(kDt, 30);
   const std::vector<std::int64_t> steps = picker.steps(static_cast<std::int64_t>(kRunSeconds / kDt));
   (void)run();  // the simulated run itself is not part of the figure

@@ -10,6 +10,7 @@
 #include "frob/worlds/registry.hpp"
 
 #include <benchmark/benchmark.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -113,7 +114,7 @@ BENCHMARK_CAPTURE(BM_RenderRun, empty, RenderDef{}, kEmpty)->UseRealTime();
 // The whole 60 s run: simulate, view, render frames with plots at 30 fps, encode (or not).
 void BM_SixtySecondMazeRun(benchmark::State& state, bool render, bool video) {
   const RenderDef def{.layout = PanelLayout::PlotRight, .rasterThreads = rasterThreads()};
-  const std::string path = (std::filesystem::temp_directory_path() / "frob_render_run_bench.mp4").string();
+  const std::string path = (std::filesystem::temp_directory_path() / ("frob_render_run_bench." + std::to_string(::getpid()) + ".mp4")).string();
   const worlds::WorldDef world = maze3();
   for (auto _ : state) {
     worlds::Run run(world, {}, {wanderer});
