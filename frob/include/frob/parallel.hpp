@@ -1,6 +1,7 @@
 #pragma once
 /// Tasks in parallel (the paper's section 3.3) and Lyons' process compositions (section 4.2).
 
+#include "frob/run_task.hpp"
 #include "frob/task_transformers.hpp"
 
 #include <variant>

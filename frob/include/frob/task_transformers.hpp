@@ -73,6 +73,30 @@ Task<A, ResultOf<B>> resultOf(Task<A, B> body) {
 
 }  // namespace detail
 
+/// The paper's taskCatch: runs `t`; if it fails with a RoboErr, becomes `handler(error)`.
+/// The handler takes this task's place (a tail call), so a task that restarts itself from its
+/// handler, as the paper's `bug` does, runs in constant memory.
+template <class A, class B, class H>
+  requires std::invocable<H&, const RoboErr&>
+[[nodiscard]] Task<A, B> taskCatch(Task<A, B> t, H handler,
+                                   std::source_location loc = std::source_location::current()) {
+  std::string inner = t.name();
+  return [](Task<A, B> body, H h) -> Task<A, B> {
+    std::optional<RoboErr> caught;
+    try {
+      if constexpr (std::is_void_v<B>) {
+        co_await std::move(body);
+        co_return;
+      } else {
+        co_return co_await std::move(body);
+      }
+    } catch (const RoboErr& e) {
+      caught = e;
+    }
+    co_await become(Task<A, B>(std::invoke(h, *caught)));
+  }(std::move(t), std::move(handler)).at(loc).named("taskCatch(" + inner + ")");
+}
+
 /// The paper's addError: `error` fails every subtask of `t` while `t` runs (scoped).
 template <class A, class B>
 [[nodiscard]] Task<A, B> addError(Event<RoboErr> error, Task<A, B> t,
