@@ -26,8 +26,6 @@ class RunnerNode final : public BehaviorNode<A> {
     if (slot_.frame) slot_.frame.destroy();  // stops every task still running, innermost last
   }
 
-  /// The run's shared context (for parallel tasks built on it).
-  RunContext<A>& context() { return ctx_; }
   /// The task's result or error once it has ended (done() is true).
   [[nodiscard]] bool done() const { return slot_.value.has_value() || slot_.error != nullptr; }
   [[nodiscard]] const ResultSlot<ResultOf<B>>& result() const { return slot_; }
