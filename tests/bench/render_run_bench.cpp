@@ -9,6 +9,8 @@
 #include "frob/render/video.hpp"
 #include "frob/worlds/registry.hpp"
 
+#include "../support/wanderer.hpp"
+
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
@@ -22,32 +24,6 @@ using namespace frob::literals;
 
 int rasterThreads() { return std::getenv("LP_NUM_THREADS") != nullptr ? -1 : 0; }
 
-Behavior<double> frontArc(const Robot& r) {
-  std::vector<double> angles = r.spec().sonarAngles;
-  return lift(
-      [angles](const std::vector<double>& ranges) {
-        double nearest = 1e9;
-        for (std::size_t i = 0; i < ranges.size(); ++i) {
-          if (std::abs(angles[i]) <= 45_deg + 1e-9) nearest = std::min(nearest, ranges[i]);
-        }
-        return nearest;
-      },
-      sonars(r));
-}
-Task<Wheels> goAhead() {
-  return mkTask([](const TaskState& ts) {
-    const Robot& r = ts.robot();
-    return std::pair{wheels(0.4, 0), predicate(frontArc(r) < 60_cm) | bumper(r).map([] { return Unit{}; })};
-  });
-}
-Task<Wheels> turnLeft() {
-  return mkTask([](const TaskState& ts) { return std::pair{wheels(0, 0.8), predicate(frontArc(ts.robot()) > 1.5)}; });
-}
-Task<Wheels> runAround() {
-  co_await goAhead();
-  co_await turnLeft();
-  co_await become(runAround());
-}
 // runAround with a picture that follows the robot: a ring round it and an arrow ahead.
 Behavior<Wheels> wanderer(const Robot& r) {
   Behavior<Picture> pic = lift(
@@ -56,7 +32,7 @@ Behavior<Wheels> wanderer(const Robot& r) {
         return paintAt(at, circle(0.35)) + withColor(red, arrow(at, ahead)) + paintAt(at + Vec2(0.3, 0.3), text("seek"));
       },
       Behavior<Point2>(place(r)), Behavior<double>(orientation(r)));
-  return runTask(r, withPicture(pic, runAround()));
+  return runTask(r, withPicture(pic, support::runAround(0.4)));
 }
 
 // The reference maze with two more robots: three in all.

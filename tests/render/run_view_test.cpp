@@ -7,6 +7,8 @@
 #include "frob/render/video.hpp"
 #include "frob/worlds/registry.hpp"
 
+#include "../support/wanderer.hpp"
+
 #include <gtest/gtest.h>
 
 extern "C" {
@@ -25,35 +27,9 @@ using namespace frob::literals;
 constexpr Color kMagenta{1.0f, 0.0f, 1.0f};
 const Point2 kMarker(1.875, 1.875);  // where the controller's picture puts its disc, metres
 
-// The paper's runAround (as in tests/worlds/run_test.cpp), publishing a magenta disc at kMarker.
-Behavior<double> frontArc(const Robot& r) {
-  std::vector<double> angles = r.spec().sonarAngles;
-  return lift(
-      [angles](const std::vector<double>& ranges) {
-        double nearest = 1e9;
-        for (std::size_t i = 0; i < ranges.size(); ++i) {
-          if (std::abs(angles[i]) <= 45_deg + 1e-9) nearest = std::min(nearest, ranges[i]);
-        }
-        return nearest;
-      },
-      sonars(r));
-}
-Task<Wheels> goAhead() {
-  return mkTask([](const TaskState& ts) {
-    const Robot& r = ts.robot();
-    return std::pair{wheels(0.3, 0), predicate(frontArc(r) < 60_cm) | bumper(r).map([] { return Unit{}; })};
-  });
-}
-Task<Wheels> turnLeft() {
-  return mkTask([](const TaskState& ts) { return std::pair{wheels(0, 0.8), predicate(frontArc(ts.robot()) > 1.5)}; });
-}
-Task<Wheels> runAround() {
-  co_await goAhead();
-  co_await turnLeft();
-  co_await become(runAround());
-}
+// The paper's runAround, publishing a magenta disc at kMarker.
 Behavior<Wheels> wanderer(const Robot& r) {
-  return runTask(r, withPicture(paintAt(kMarker, withColor(kMagenta, disc(0.3))), runAround()));
+  return runTask(r, withPicture(paintAt(kMarker, withColor(kMagenta, disc(0.3))), support::runAround()));
 }
 
 worlds::WorldDef world(std::string_view name) {

@@ -2,6 +2,7 @@
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/run.hpp"
 #include "scene.hpp"
+#include "../support/wanderer.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,36 +28,8 @@ constexpr std::string_view kTwoRobots = R"(
   heading_deg = 180
 )";
 
-// The nearest echo among the sonars within 45 degrees of straight ahead: one sonar alone misses
-// walls it meets at a grazing angle (they reflect its ping away).
-Behavior<double> frontArc(const Robot& r) {
-  std::vector<double> angles = r.spec().sonarAngles;
-  return lift(
-      [angles](const std::vector<double>& ranges) {
-        double nearest = 1e9;
-        for (std::size_t i = 0; i < ranges.size(); ++i) {
-          if (std::abs(angles[i]) <= 45_deg + 1e-9) nearest = std::min(nearest, ranges[i]);
-        }
-        return nearest;
-      },
-      sonars(r));
-}
-Task<Wheels> goAhead() {
-  return mkTask([](const TaskState& ts) {
-    const Robot& r = ts.robot();
-    return std::pair{wheels(0.3, 0), predicate(frontArc(r) < 60_cm) | bumper(r).map([] { return Unit{}; })};
-  });
-}
-Task<Wheels> turnLeft() {
-  return mkTask([](const TaskState& ts) {
-    return std::pair{wheels(0, 0.8), predicate(frontArc(ts.robot()) > 1.5)};
-  });
-}
-Task<Wheels> runAround() {
-  co_await goAhead();
-  co_await turnLeft();
-  co_await become(runAround());
-}
+using support::runAround;
+
 Behavior<Wheels> wanderer(const Robot& r) { return runTask(r, withPicture(circle(0.3), runAround())); }
 
 TEST(Run, ThePapersRunAroundWandersTheEmptyRoomWithoutTouchingAWall) {
