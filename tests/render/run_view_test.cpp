@@ -8,13 +8,10 @@
 #include "frob/worlds/registry.hpp"
 
 #include "../support/wanderer.hpp"
+#include "decode.hpp"
 
 #include <gtest/gtest.h>
 
-extern "C" {
-#include <libavcodec/avcodec.h>
-#include <libavformat/avformat.h>
-}
 
 #include <filesystem>
 
@@ -166,38 +163,6 @@ std::uint64_t trajectory(double seconds, const std::string& video, const std::st
   return run.recorder().trajectoryHash();
 }
 
-// Decoded frames of the MP4 at `path`.
-int decodedFrames(const std::string& path) {
-  int frames = 0;
-  AVFormatContext* fmt = nullptr;
-  if (avformat_open_input(&fmt, path.c_str(), nullptr, nullptr) < 0) return -1;
-  avformat_find_stream_info(fmt, nullptr);
-  const AVCodec* dec = nullptr;
-  const int stream = av_find_best_stream(fmt, AVMEDIA_TYPE_VIDEO, -1, -1, &dec, 0);
-  AVCodecContext* ctx = avcodec_alloc_context3(dec);
-  avcodec_parameters_to_context(ctx, fmt->streams[stream]->codecpar);
-  avcodec_open2(ctx, dec, nullptr);
-  AVPacket* pkt = av_packet_alloc();
-  AVFrame* frame = av_frame_alloc();
-  auto drain = [&] {
-    while (avcodec_receive_frame(ctx, frame) == 0) ++frames;
-  };
-  while (av_read_frame(fmt, pkt) >= 0) {
-    if (pkt->stream_index == stream) {
-      avcodec_send_packet(ctx, pkt);
-      drain();
-    }
-    av_packet_unref(pkt);
-  }
-  avcodec_send_packet(ctx, nullptr);
-  drain();
-  av_frame_free(&frame);
-  av_packet_free(&pkt);
-  avcodec_free_context(&ctx);
-  avformat_close_input(&fmt);
-  return frames;
-}
-
 TEST(RunView, RenderingNeverChangesSimulationResultsAndFiveSecondsMake150Frames) {
   const fs::path dir = fs::path(FROB_ACTUAL_DIR) / "run_view_test";
   fs::remove_all(dir);
@@ -208,7 +173,7 @@ TEST(RunView, RenderingNeverChangesSimulationResultsAndFiveSecondsMake150Frames)
   EXPECT_EQ(rendered, plain) << std::hex << rendered << " vs " << plain;
   EXPECT_NE(rendered, worlds::kFnvOffset);
   // 500 steps at 100 Hz, one frame every 1/30 s: frames 0 .. 149.
-  EXPECT_EQ(decodedFrames(video), 150);
+  EXPECT_EQ(testing::decode(video).frames, 150);
   EXPECT_TRUE(fs::exists(dir / "frames" / "frame_000004.png"));
 }
 
