@@ -3,6 +3,7 @@
 
 #include "frob/behavior.hpp"
 #include "frob/calculus.hpp"
+#include "frob/controller.hpp"
 #include "frob/debug.hpp"
 #include "frob/errors.hpp"
 #include "frob/event.hpp"

@@ -2,6 +2,7 @@
 /// One run of a world with its controllers, step by step: sensors, then every controller's
 /// behavior sampled once at the instant, then physics; each instant recorded.
 
+#include "frob/controller.hpp"
 #include "frob/robot.hpp"
 #include "frob/worlds/recorder.hpp"
 #include "frob/worlds/simulation.hpp"
@@ -14,7 +15,7 @@
 namespace frob::worlds {
 
 /// A controller (the paper's runController argument): from a robot's sensors to its wheels.
-using Controller = std::function<Behavior<Wheels>(const Robot&)>;
+using Controller = frob::Controller;
 
 /// A controller that failed: it threw, gave a non-finite command, or its tasks ran away. Its robot
 /// stands still from then on; the others go on.

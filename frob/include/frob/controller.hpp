@@ -1,0 +1,80 @@
+#pragma once
+/// A controller file's one line: `FROB_CONTROLLER(runAround)` names the function that drives the
+/// robot (the paper's `runController` argument) and is what `frob run my_controller.cpp` loads.
+///
+///   Task<Wheels> runAround() { for (;;) { co_await goAhead(); co_await turnRight(); } }
+///   FROB_CONTROLLER(runAround)                                        // defaults: empty room, 60 s
+///   FROB_CONTROLLER(bug, .world = "obstacles", .seconds = 120)        // or with options
+
+#include "frob/behavior.hpp"
+#include "frob/robot.hpp"
+#include "frob/run_task.hpp"
+#include "frob/task.hpp"
+
+#include <functional>
+#include <string>
+#include <type_traits>
+
+namespace frob {
+
+/// A controller: from a robot's sensors to its wheels.
+using Controller = std::function<Behavior<Wheels>(const Robot&)>;
+
+/// Where and how long `frob run` runs a controller when the command line does not say.
+struct ControllerOptions {
+  std::string world = "empty";  ///< reference world name or world file
+  double seconds = 60.0;        ///< simulated seconds (a controller whose task returns ends the run sooner)
+  std::string summary;          ///< one line saying what the controller does, for `frob list`
+};
+
+/// What FROB_CONTROLLER declares.
+struct ControllerEntry {
+  std::string name;           ///< the function's name
+  Controller make;            ///< builds the controller for one robot
+  ControllerOptions options;  ///< defaults for `frob run`
+};
+
+namespace detail {
+template <class T>
+struct IsTask : std::false_type {};
+template <class A, class B>
+struct IsTask<Task<A, B>> : std::true_type {};
+
+// A controller's result as wheels: a task is run from where the robot stands, a behavior taken as it is.
+template <class R>
+Behavior<Wheels> controllerWheels(const Robot& r, R&& result) {
+  if constexpr (IsTask<std::remove_cvref_t<R>>::value) {
+    return runTask(r, std::forward<R>(result));
+  } else {
+    static_assert(BehaviorType<R> && std::is_same_v<frob::ValueOf<R>, Wheels>,
+                  "FROB_CONTROLLER: the function must give a Behavior<Wheels> or a Task<Wheels, ...>");
+    return toBehavior(result);
+  }
+}
+}  // namespace detail
+
+/// `f` as a Controller: f(const Robot&) or f() giving a Behavior<Wheels> or a Task<Wheels, B>.
+template <class F>
+[[nodiscard]] Controller makeController(F f) {
+  if constexpr (std::is_invocable_v<F, const Robot&>) {
+    return [f](const Robot& r) { return detail::controllerWheels(r, std::invoke(f, r)); };
+  } else {
+    static_assert(std::is_invocable_v<F>, "FROB_CONTROLLER: the function must take a const Robot& or nothing");
+    return [f](const Robot& r) { return detail::controllerWheels(r, std::invoke(f)); };
+  }
+}
+
+}  // namespace frob
+
+/// The symbol `frob run` looks up in a compiled controller file (a build may rename it).
+#ifndef FROB_CONTROLLER_SYMBOL
+#define FROB_CONTROLLER_SYMBOL frob_controller_v1
+#endif
+
+/// Names this file's controller function, optionally with ControllerOptions fields.
+#define FROB_CONTROLLER(function, ...)                                                        \
+  extern "C" const ::frob::ControllerEntry* FROB_CONTROLLER_SYMBOL() {                       \
+    static const ::frob::ControllerEntry entry{#function, ::frob::makeController(function),  \
+                                               ::frob::ControllerOptions{__VA_ARGS__}};      \
+    return &entry;                                                                            \
+  }

@@ -1,0 +1,68 @@
+// FROB_CONTROLLER and makeController: every accepted shape of controller function gives the same
+// wheels as writing the behavior by hand, and the declared options reach the entry.
+#include "frob/frob.hpp"
+
+#include <gtest/gtest.h>
+
+namespace frob {
+namespace {
+
+using namespace frob::literals;
+
+Robot scripted() {
+  return Robot(nomadSpec(), ScriptedSensors{.sonar = [](double t, int) { return 2.0 - t; }});
+}
+
+// Forward at the front sonar's range: a behavior.
+Behavior<Wheels> follow(const Robot& r) { return wheels(frontSonar(r), 0.0); }
+// The same as a task that ends when the range drops under 1 m (then the robot stops).
+Task<Wheels> followTask() {
+  return mkTask([](const TaskState& ts) {
+    return std::pair{follow(ts.robot()), predicate(frontSonar(ts.robot()) < 1.0)};
+  });
+}
+Task<Wheels> followTaskOf(const Robot&) { return followTask(); }
+
+std::vector<double> forwardAt(const Controller& c, int steps) {
+  Robot r = scripted();
+  Behavior<Wheels> b = c(r);
+  Clock clock(0.25);
+  std::vector<double> out;
+  for (int i = 0; i < steps; ++i) out.push_back(b.at(i == 0 ? clock.now() : clock.advance()).forward);
+  return out;
+}
+
+TEST(Controller, BehaviorOfRobot) {
+  EXPECT_EQ(forwardAt(makeController(follow), 3), (std::vector<double>{2.0, 1.75, 1.5}));
+}
+
+TEST(Controller, PointwiseExpressionOfRobot) {
+  auto expr = [](const Robot& r) { return lift([](double d) { return Wheels{d, 0.0}; }, frontSonar(r)); };
+  EXPECT_EQ(forwardAt(makeController(expr), 2), (std::vector<double>{2.0, 1.75}));
+}
+
+TEST(Controller, TaskRunsUntilItEndsThenStops) {
+  // The range is under 1 m from t = 1.25: the task ends and the default final behavior stops.
+  const std::vector<double> expected{2.0, 1.75, 1.5, 1.25, 1.0, 0.0, 0.0};
+  EXPECT_EQ(forwardAt(makeController(followTask), 7), expected);
+  EXPECT_EQ(forwardAt(makeController(followTaskOf), 7), expected);
+}
+
+}  // namespace
+
+// The declaration a controller file ends with, here under a name of its own.
+#undef FROB_CONTROLLER_SYMBOL
+#define FROB_CONTROLLER_SYMBOL controllerTestEntry
+FROB_CONTROLLER(followTask, .world = "corridor", .seconds = 12.5, .summary = "follows")
+
+TEST(Controller, MacroDeclaresTheEntryWithItsOptions) {
+  const ControllerEntry* e = controllerTestEntry();
+  EXPECT_EQ(e->name, "followTask");
+  EXPECT_EQ(e->options.world, "corridor");
+  EXPECT_EQ(e->options.seconds, 12.5);
+  EXPECT_EQ(e->options.summary, "follows");
+  EXPECT_EQ(forwardAt(e->make, 2), (std::vector<double>{2.0, 1.75}));
+  EXPECT_EQ(controllerTestEntry(), e);  // one entry, built once
+}
+
+}  // namespace frob
