@@ -1,9 +1,8 @@
 #include "frob/render/image.hpp"
 
-#include "output_file.hpp"
+#include "frob/render/output_file.hpp"
 
 #include <png.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -11,43 +10,6 @@
 #include <filesystem>
 
 namespace frob::render {
-
-namespace detail {
-
-Status checkWritable(const std::string& path, const std::string& what) {
-  namespace fs = std::filesystem;
-  if (path.empty()) return Status::failure(what + ": no output path given");
-  const fs::path dir = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) {
-    const bool exists = fs::exists(dir, ec);
-    return Status::failure(what + ": cannot write '" + path + "': " + (exists ? "'" : "directory '") + dir.string() +
-                           (exists ? "' is not a directory" : "' does not exist"));
-  }
-  if (::access(dir.c_str(), W_OK | X_OK) != 0) {
-    return Status::failure(what + ": cannot write '" + path + "': directory '" + dir.string() +
-                           "' is not writable (" + std::strerror(errno) + ")");
-  }
-  if (fs::is_directory(path, ec)) return Status::failure(what + ": cannot write '" + path + "': it is a directory");
-  return {};
-}
-
-Status commitPartial(const std::string& path, const std::string& what) {
-  std::error_code ec;
-  std::filesystem::rename(partialPath(path), path, ec);
-  if (ec) {
-    discardPartial(path);
-    return Status::failure(what + ": cannot move the finished file into place at '" + path + "': " + ec.message());
-  }
-  return {};
-}
-
-void discardPartial(const std::string& path) {
-  std::error_code ec;
-  std::filesystem::remove(partialPath(path), ec);
-}
-
-}  // namespace detail
 
 namespace {
 
@@ -84,17 +46,17 @@ Status writePng(const std::string& path, const Image& image) {
       image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4) {
     return Status::failure("png: cannot write '" + path + "': the image is empty or its size does not match its pixels");
   }
-  if (Status s = detail::checkWritable(path, "png"); !s) return s;
-  const std::string tmp = detail::partialPath(path);
+  if (Status s = checkWritable(path, "png"); !s) return s;
+  const std::string tmp = partialPath(path);
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (f == nullptr) return Status::failure("png: cannot write '" + path + "': " + std::strerror(errno));
   bool ok = writePngStream(f, image);
   if (std::fclose(f) != 0) ok = false;
   if (!ok) {
-    detail::discardPartial(path);
+    discardPartial(path);
     return Status::failure("png: writing '" + path + "' failed (disk full?)");
   }
-  return detail::commitPartial(path, "png");
+  return commitPartial(path, "png");
 }
 
 Result<Image> readPng(const std::string& path) {
@@ -115,7 +77,7 @@ Result<Image> readPng(const std::string& path) {
 }
 
 Status validateOutputDirectory(const std::string& dir) {
-  return detail::checkWritable((std::filesystem::path(dir) / "frame_000000.png").string(), "frames");
+  return checkWritable((std::filesystem::path(dir) / "frame_000000.png").string(), "frames");
 }
 
 std::string framePath(const std::string& dir, long index) {

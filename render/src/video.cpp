@@ -1,6 +1,6 @@
 #include "frob/render/video.hpp"
 
-#include "output_file.hpp"
+#include "frob/render/output_file.hpp"
 
 extern "C" {
 #include <libavcodec/avcodec.h>
@@ -108,7 +108,7 @@ struct VideoWriter::Impl {
   ~Impl() {
     stopWorker(true);
     release();
-    if (!finished) detail::discardPartial(def.path);
+    if (!finished) discardPartial(def.path);
   }
   void release() {
     if (format != nullptr) {
@@ -130,7 +130,7 @@ struct VideoWriter::Impl {
   Status abandon(Status why) {
     stopWorker(true);
     release();
-    detail::discardPartial(def.path);
+    discardPartial(def.path);
     finished = true;
     return why;
   }
@@ -195,7 +195,7 @@ Status validate(const VideoDef& def) {
   if (avcodec_find_encoder_by_name("libx264") == nullptr) {
     return Status::failure("video: this libavcodec has no libx264 encoder (install libavcodec59 with x264)");
   }
-  return detail::checkWritable(def.path, "video");
+  return checkWritable(def.path, "video");
 }
 
 Result<VideoWriter> VideoWriter::open(const VideoDef& def) {
@@ -203,7 +203,7 @@ Result<VideoWriter> VideoWriter::open(const VideoDef& def) {
   av_log_set_level(AV_LOG_ERROR);  // libx264 prints its settings at the info level
   auto m = std::make_unique<Impl>();
   m->def = def;
-  const std::string tmp = detail::partialPath(def.path);
+  const std::string tmp = partialPath(def.path);
   // The muxer is named explicitly: the temporary's extension says nothing about the format.
   if (int err = avformat_alloc_output_context2(&m->format, nullptr, "mp4", tmp.c_str()); err < 0) return m->abandon(m->error("cannot set up MP4", err));
   const AVCodec* x264 = avcodec_find_encoder_by_name("libx264");
@@ -302,7 +302,7 @@ Status VideoWriter::close() {
   if (int err = avio_closep(&m.format->pb); err < 0) return m.abandon(m.error("cannot close the file", err));
   m.release();
   m.finished = true;
-  return detail::commitPartial(m.def.path, "video");
+  return commitPartial(m.def.path, "video");
 }
 
 FramePicker::FramePicker(double stepSeconds, double fps) : framesPerStep_(stepSeconds * fps) {}
