@@ -1,15 +1,204 @@
 // The frob command line: thin, it parses arguments and calls the libraries.
+#include "frob/course/examples.hpp"
+#include "frob/course/session.hpp"
+#include "frob/course/summary.hpp"
+#include "frob/render/output_file.hpp"
+#include "frob/render/run_view.hpp"
+#include "frob/worlds/registry.hpp"
+#include "progress.hpp"
+
 #include <CLI/CLI.hpp>
 
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <sstream>
+
+namespace frob::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+using course::Result;
+using course::Status;
+
+constexpr const char* kExamples = R"(Examples:
+  frob run                                  the demo: BUG in the obstacle field, written to bug.mp4
+  frob run my_controller.cpp --video my.mp4 compile and run your controller, watch the video
+  frob run bug --seconds 30 --trace bug.csv run a course example by name, write a per-step trace
+  frob run a.cpp b.cpp --world arena        one controller per robot
+  frob render maze --out maze.png           a picture of a world
+  frob list                                 the worlds and examples there are
+)";
+
+// Prints "frob: <message>" on stderr and gives the exit status of a failure.
+int fail(const std::string& message) {
+  std::cerr << "frob: " << message << "\n";
+  return 1;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A world by reference name or file path.
+Result<worlds::WorldDef> loadWorldNamed(const std::string& name) {
+  if (worlds::findWorld(name) == nullptr && !fs::exists(name)) {
+    return Status::failure("unknown world '" + name + "': not a reference world (see frob list) and no such file");
+  }
+  worlds::Loaded<worlds::WorldDef> w = worlds::findWorld(name) != nullptr ? worlds::loadReferenceWorld(name) : worlds::loadWorld(name);
+  if (!w) return Status::failure(w.error);
+  return *w;
+}
+
+// A controller by file (.cpp compiled, .so loaded) or by example name.
+Result<course::LoadedController> loadController(const std::string& name, bool quiet) {
+  const fs::path path(name);
+  if (path.extension() == ".so") return course::loadControllerModule(path, name);
+  if (path.extension() == ".cpp" || fs::exists(path)) {
+    const auto start = std::chrono::steady_clock::now();
+    Result<course::LoadedController> c = course::loadControllerFile(path);
+    if (c && c.value().compiled && !quiet) std::fprintf(stderr, "frob: compiled %s in %.1f s\n", name.c_str(), secondsSince(start));
+    return c;
+  }
+  if (std::optional<course::Example> e = course::findExample(name)) return course::loadExample(*e);
+  return Status::failure("unknown controller '" + name + "': not a file and not an example (see frob list)");
+}
+
+// "960x540" into a RenderDef's size.
+Status parseSize(const std::string& text, render::RenderDef& view) {
+  int w = 0, h = 0;
+  char x = 0;
+  std::istringstream in(text);
+  if (!(in >> w >> x >> h) || x != 'x' || !in.eof()) return Status::failure("--size must look like 854x480, not '" + text + "'");
+  view.width = w, view.height = h;
+  return {};
+}
+
+struct RunArgs {
+  std::vector<std::string> controllers;
+  std::string world, size = "854x480", view = "top";
+  std::optional<double> seconds;
+  std::optional<std::uint64_t> seed;
+  double dt = 0.01;
+  int fps = 30;
+  course::RunOutputs outputs;
+  bool json = false, quiet = false;
+};
+
+int runCommand(RunArgs a) {
+  const bool demo = a.controllers.empty();
+  if (demo) {
+    a.controllers.push_back("bug");
+    const course::RunOutputs& o = a.outputs;
+    if (o.video.empty() && o.frames.empty() && o.plot.empty() && o.trace.empty() && o.timeline.empty()) a.outputs.video = "bug.mp4";
+    if (!a.quiet) std::fprintf(stderr, "frob: no controller given, so here is the demo: the paper's BUG algorithm (course/examples/06_bug.cpp)\n");
+  }
+  course::RunDef def{.options = {.dt = a.dt, .seed = a.seed}, .outputs = a.outputs, .fps = a.fps};
+  for (const std::string& name : a.controllers) {
+    Result<course::LoadedController> c = loadController(name, a.quiet);
+    if (!c) return fail(c.error());
+    def.controllers.push_back(std::move(c.value()));
+  }
+  const ControllerOptions& defaults = def.controllers.front().entry.options;
+  def.worldName = a.world.empty() ? defaults.world : a.world;
+  Result<worlds::WorldDef> world = loadWorldNamed(def.worldName);
+  if (!world) return fail(world.error());
+  def.world = std::move(world.value());
+  def.seconds = a.seconds.value_or(defaults.seconds);
+  if (Status s = parseSize(a.size, def.view); !s) return fail(s.error());
+  def.view.view = a.view == "chase" ? render::ViewMode::Chase : render::ViewMode::TopDown;
+  if (Status s = course::validate(def); !s) return fail(s.error());
+
+  ProgressBar bar(!a.quiet, "frob: running " + def.controllers.front().entry.name + " in " + def.worldName);
+  char detail[48];
+  def.progress = [&](double done) {
+    std::snprintf(detail, sizeof detail, "%.1f / %.1f s", done * def.seconds, def.seconds);
+    bar.show(done, detail);
+  };
+  const auto start = std::chrono::steady_clock::now();
+  Result<course::Summary> summary = course::runSession(def);
+  const double wall = secondsSince(start);
+  bar.finish();
+  if (!summary) return fail(summary.error());
+  if (a.json) std::cout << course::summaryJson(summary.value(), wall);
+  for (const course::RobotSummary& r : summary.value().robots) {
+    if (!r.failure.empty()) return fail("the controller failed: " + r.failure + "; no output files were written");
+  }
+  if (!a.json) std::cout << course::formatSummary(summary.value(), wall);
+  if (demo && !a.quiet && !a.outputs.video.empty()) std::fprintf(stderr, "frob: now watch %s\n", a.outputs.video.c_str());
+  return 0;
+}
+
+// The world with its robots at their starts, drawn to a PNG.
+int renderCommand(const std::string& worldName, const std::string& out, const std::string& size) {
+  Result<worlds::WorldDef> world = loadWorldNamed(worldName);
+  if (!world) return fail(world.error());
+  render::RenderDef def;
+  if (Status s = parseSize(size, def); !s) return fail(s.error());
+  if (Status s = render::checkWritable(out, "png"); !s) return fail(s.error());
+  const worlds::Run run(world.value(), {}, {[](const Robot&) { return Behavior<Wheels>(Wheels{}); }});
+  const render::RunView view(run);
+  Result<render::Renderer> renderer = render::Renderer::create(def);
+  if (!renderer) return fail(renderer.error());
+  if (Status s = render::writePng(out, renderer.value().render(view.scene())); !s) return fail(s.error());
+  std::cout << "wrote " << out << "\n";
+  return 0;
+}
+
+int listCommand() {
+  std::cout << "Worlds (frob run --world NAME, frob render NAME):\n";
+  for (const worlds::WorldEntry& w : worlds::referenceWorlds()) std::printf("  %-10s %s\n", std::string(w.name).c_str(), std::string(w.description).c_str());
+  std::cout << "\nExamples (frob run NAME, or frob run course/examples/NAME.cpp):\n";
+  for (const course::Example& e : course::examples()) {
+    Result<course::LoadedController> c = course::loadExample(e);
+    const std::string about = c ? c.value().entry.options.summary + " [" + c.value().entry.options.world + "]" : c.error();
+    std::printf("  %-16s %s\n", e.name.c_str(), about.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+}  // namespace frob::app
 
 int main(int argc, char** argv) {
-  CLI::App app{"Frob Sandbox: functional reactive robot controllers, simulated headlessly", "frob"};
-  app.set_version_flag("--version", FROB_VERSION);
-  app.require_subcommand(0, 1);
-  CLI11_PARSE(app, argc, argv);
-  if (app.get_subcommands().empty()) {
-    std::cout << app.help();
-  }
+  CLI::App cli{"Frob Sandbox: functional reactive robot controllers, simulated headlessly", "frob"};
+  cli.set_version_flag("--version", FROB_VERSION);
+  cli.footer(frob::app::kExamples);
+  cli.require_subcommand(0, 1);
+
+  frob::app::RunArgs run;
+  CLI::App* runCmd = cli.add_subcommand("run", "Run controllers in a world; with none, the BUG demo");
+  runCmd->add_option("controllers", run.controllers, "Controller files (.cpp), or example names; one for all robots or one per robot");
+  runCmd->add_option("--world", run.world, "Reference world name or world file (default: the controller's)");
+  runCmd->add_option("--seconds", run.seconds, "Simulated seconds at most (default: the controller's)")->check(CLI::PositiveNumber);
+  runCmd->add_option("--seed", run.seed, "Random seed (default: the world's)");
+  runCmd->add_option("--dt", run.dt, "Simulation step, seconds")->capture_default_str()->check(CLI::Range(1e-4, 0.1));
+  runCmd->add_option("--video", run.outputs.video, "Write an MP4 video of the run");
+  runCmd->add_option("--frames", run.outputs.frames, "Write one PNG per video frame into this folder");
+  runCmd->add_option("--plot", run.outputs.plot, "Write plots of the run (sonar, goal distance, wheels, tasks) as PNG");
+  runCmd->add_option("--trace", run.outputs.trace, "Write a CSV row per robot per step");
+  runCmd->add_option("--timeline", run.outputs.timeline, "Write the task timeline as JSON for ui.perfetto.dev or chrome://tracing");
+  runCmd->add_option("--fps", run.fps, "Frames per second of video and frames")->capture_default_str()->check(CLI::Range(1, 240));
+  runCmd->add_option("--size", run.size, "Frame size, WIDTHxHEIGHT")->capture_default_str();
+  runCmd->add_option("--view", run.view, "top (from above) or chase (behind the first robot)")->capture_default_str()->check(CLI::IsMember({"top", "chase"}));
+  runCmd->add_flag("--json", run.json, "Print the summary as JSON");
+  runCmd->add_flag("-q,--quiet", run.quiet, "No progress bar or notes on stderr");
+
+  std::string renderWorld, renderOut, renderSize = "960x720";
+  CLI::App* renderCmd = cli.add_subcommand("render", "Draw a world with its robots at their starts to a PNG");
+  renderCmd->add_option("world", renderWorld, "Reference world name or world file")->required();
+  renderCmd->add_option("--out", renderOut, "PNG file to write")->required();
+  renderCmd->add_option("--size", renderSize, "Image size, WIDTHxHEIGHT")->capture_default_str();
+
+  CLI::App* listCmd = cli.add_subcommand("list", "List the reference worlds and the course examples");
+
+  CLI11_PARSE(cli, argc, argv);
+  if (runCmd->parsed()) return frob::app::runCommand(run);
+  if (renderCmd->parsed()) return frob::app::renderCommand(renderWorld, renderOut, renderSize);
+  if (listCmd->parsed()) return frob::app::listCommand();
+  std::cout << cli.help();
   return 0;
 }

@@ -1,0 +1,29 @@
+#pragma once
+/// The course's numbered examples (course/examples/NN_name.cpp): the paper's programs as controller
+/// files, prebuilt as modules so that `frob run bug` starts at once.
+
+#include "frob/course/controller_file.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace frob::course {
+
+/// One example: its file and its prebuilt module.
+struct Example {
+  std::string name;              ///< the file's stem, e.g. "06_bug"
+  std::filesystem::path source;  ///< the .cpp under course/examples
+  std::filesystem::path module;  ///< the module the build made of it (may be missing in a partial build)
+};
+
+/// Every example, in number order.
+[[nodiscard]] std::vector<Example> examples();
+/// The example called `name`, with or without its number ("06_bug" or "bug").
+[[nodiscard]] std::optional<Example> findExample(std::string_view name);
+/// Loads `example`: its prebuilt module, or its source compiled when the module is missing.
+[[nodiscard]] Result<LoadedController> loadExample(const Example& example);
+
+}  // namespace frob::course

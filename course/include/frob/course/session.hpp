@@ -1,0 +1,81 @@
+#pragma once
+/// One run of controllers in a world, with the files it writes and a summary: what `frob run` does.
+///
+///   RunDef def{.world = *worlds::loadReferenceWorld("obstacles"), .worldName = "obstacles",
+///              .controllers = {*loadExample(*findExample("bug"))}, .seconds = 120,
+///              .outputs = {.video = "bug.mp4"}};
+///   Result<Summary> s = runSession(def);   // a failed controller: s->failed(), and no files written
+
+#include "frob/course/controller_file.hpp"
+#include "frob/debug.hpp"
+#include "frob/render/renderer.hpp"
+#include "frob/worlds/run.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace frob::course {
+
+/// The files a run writes; an empty path is not written. Each appears only once the run has
+/// completed: a run whose controller fails leaves none of them behind.
+struct RunOutputs {
+  std::string video;     ///< MP4 of the run
+  std::string frames;    ///< folder for one PNG per video frame, frame_000000.png on (made if missing)
+  std::string plot;      ///< PNG of the plotted signals over the whole run
+  std::string trace;     ///< CSV, one row per robot per step: poses, wheels, sonars, bumper, current task
+  std::string timeline;  ///< task timeline as Chrome/Perfetto trace-event JSON
+};
+
+/// A run to make. Fill with designated initializers.
+struct RunDef {
+  worlds::WorldDef world;                     ///< the world, loaded
+  std::string worldName;                      ///< how the world was named, for the summary
+  worlds::SimOptions options;                 ///< dt, seed, scripted keys
+  std::vector<LoadedController> controllers;  ///< one per robot, or one for all robots
+  double seconds = 60.0;                      ///< simulated seconds at most; ends sooner once every controller's task returned
+  RunOutputs outputs;                         ///< files to write
+  int fps = 30;                               ///< frames per second of the video and frames
+  render::RenderDef view{.width = 854, .height = 480, .layout = render::PanelLayout::PlotRight};  ///< how frames look
+  std::function<void(double done)> progress;  ///< told the share of the run done (0 to 1) after each step
+};
+
+/// How close to the world's point named "goal" counts as reaching it, metres (true position).
+inline constexpr double kGoalRadius = 0.5;
+
+/// How one robot did.
+struct RobotSummary {
+  std::string name;                   ///< the robot's name in the world
+  std::string controller;             ///< its controller's function and file
+  double distance = 0.0;              ///< length of its true path, metres
+  int collisions = 0;                 ///< bumper contacts
+  std::optional<double> goalDistance; ///< its closest true approach to the goal, metres; empty without a goal
+  std::optional<double> goalTime;     ///< when it first came within kGoalRadius of the goal, seconds
+  std::optional<double> finishedAt;   ///< when its controller's task returned, seconds
+  std::vector<TaskRecord> lastTasks;  ///< the last tasks that ended, oldest first, then those still running
+  std::string failure;                ///< why its controller failed; empty when it did not
+};
+
+/// What a run did.
+struct Summary {
+  std::string world;                   ///< the world's name as given
+  std::uint64_t seed = 0;              ///< the seed used
+  double dt = 0.0;                     ///< step, seconds
+  double simulatedSeconds = 0.0;       ///< logical time reached
+  std::int64_t steps = 0;              ///< steps taken
+  std::uint64_t trajectoryHash = 0;    ///< hash of every true pose (equal runs, equal hashes)
+  std::vector<RobotSummary> robots;    ///< one per robot
+  std::vector<std::string> written;    ///< the files written, in order
+  /// True when a controller failed.
+  [[nodiscard]] bool failed() const;
+};
+
+/// Checks `def` before anything runs: controllers for the robots, times, frame size and output paths.
+[[nodiscard]] Status validate(const RunDef& def);
+/// Runs `def` and writes its outputs. Bad definitions and unwritable outputs give an error; a
+/// controller that fails ends the run, writes nothing, and is reported in the summary.
+[[nodiscard]] Result<Summary> runSession(const RunDef& def);
+
+}  // namespace frob::course

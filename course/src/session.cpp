@@ -1,0 +1,221 @@
+#include "frob/course/session.hpp"
+
+#include "frob/render/output_file.hpp"
+#include "frob/render/run_view.hpp"
+#include "frob/render/video.hpp"
+#include "session_outputs.hpp"
+
+#include <cmath>
+#include <deque>
+#include <filesystem>
+
+namespace frob::course {
+
+namespace {
+
+constexpr std::size_t kLastTasks = 5;  // ended tasks kept for the summary, per robot
+
+std::string robotName(const worlds::Simulation& sim, std::size_t i) {
+  const std::string& name = sim.robot(i).name;
+  return name.empty() ? "robot" + std::to_string(i) : name;
+}
+
+const worlds::NamedPoint* findGoal(const worlds::WorldDef& world) {
+  for (const worlds::NamedPoint& p : world.points) {
+    if (p.name == "goal") return &p;
+  }
+  return nullptr;
+}
+
+render::VideoDef videoDef(const RunDef& def) {
+  return {.path = def.outputs.video, .width = def.view.width, .height = def.view.height, .fps = def.fps};
+}
+
+// What a run keeps of one robot as it goes.
+struct RobotWatch {
+  RobotSummary summary;
+  std::deque<TaskRecord> lastEnded;  // the newest kLastTasks ended tasks
+  std::vector<TaskRecord> all;       // every task, when a timeline is written
+  std::optional<Point2> previous;    // last true position
+};
+
+}  // namespace
+
+bool Summary::failed() const {
+  for (const RobotSummary& r : robots) {
+    if (!r.failure.empty()) return true;
+  }
+  return false;
+}
+
+Status validate(const RunDef& def) {
+  const std::size_t robots = def.world.robots.size();
+  if (def.controllers.empty()) return Status::failure("no controller given");
+  if (def.controllers.size() != 1 && def.controllers.size() != robots) {
+    return Status::failure("the world '" + def.worldName + "' has " + std::to_string(robots) +
+                           " robots: give one controller for all of them or one per robot (" +
+                           std::to_string(def.controllers.size()) + " given)");
+  }
+  if (!(def.seconds > 0.0) || !std::isfinite(def.seconds)) return Status::failure("--seconds must be a positive number of seconds");
+  if (!(def.options.dt > 0.0) || def.options.dt > 0.1) return Status::failure("--dt must be a step in (0, 0.1] seconds");
+  if (def.fps <= 0 || def.fps > 240) return Status::failure("--fps must be between 1 and 240");
+  const RunOutputs& out = def.outputs;
+  if (!out.video.empty() || !out.frames.empty() || !out.plot.empty()) {
+    if (Status s = render::validate(def.view); !s) return s;
+  }
+  if (!out.video.empty()) {
+    if (Status s = render::validate(videoDef(def)); !s) return s;
+  }
+  if (!out.frames.empty()) {
+    Status s = std::filesystem::is_directory(out.frames) ? render::validateOutputDirectory(out.frames)
+                                                         : render::checkWritable(out.frames, "frames");
+    if (!s) return s;
+  }
+  for (const auto& [path, what] : {std::pair{out.plot, "plot"}, {out.trace, "trace"}, {out.timeline, "timeline"}}) {
+    if (path.empty()) continue;
+    if (Status s = render::checkWritable(path, what); !s) return s;
+  }
+  return {};
+}
+
+Result<Summary> runSession(const RunDef& def) {
+  if (Status s = validate(def); !s) return s;
+  const RunOutputs& out = def.outputs;
+  std::vector<Controller> controllers;
+  for (const LoadedController& c : def.controllers) controllers.push_back(c.entry.make);
+  worlds::Run run(def.world, def.options, controllers);
+  const worlds::Simulation& sim = run.simulation();
+  const std::size_t n = sim.robotCount();
+
+  // Outputs, opened before the first step so that a bad path fails at once.
+  const bool drawFrames = !out.video.empty() || !out.frames.empty();
+  std::optional<render::RunView> view;
+  if (drawFrames || !out.plot.empty()) view.emplace(run, render::RunViewDef{.plotSeconds = def.seconds});
+  std::optional<render::Renderer> renderer;
+  if (drawFrames || !out.plot.empty()) {
+    Result<render::Renderer> r = render::Renderer::create(def.view);
+    if (!r) return r.status();
+    renderer.emplace(std::move(r.value()));
+  }
+  std::optional<render::VideoWriter> video;
+  if (!out.video.empty()) {
+    Result<render::VideoWriter> v = render::VideoWriter::open(videoDef(def));
+    if (!v) return v.status();
+    video.emplace(std::move(v.value()));
+  }
+  std::optional<FrameFolder> frames;
+  if (!out.frames.empty()) {
+    Result<FrameFolder> f = FrameFolder::open(out.frames);
+    if (!f) return f.status();
+    frames.emplace(std::move(f.value()));
+  }
+  std::optional<TraceFile> trace;
+  if (!out.trace.empty()) {
+    std::size_t sonars = 0;
+    for (std::size_t i = 0; i < n; ++i) sonars = std::max(sonars, sim.spec(i).sonarAngles.size());
+    Result<TraceFile> t = TraceFile::open(out.trace, sonars);
+    if (!t) return t.status();
+    trace.emplace(std::move(t.value()));
+  }
+  // Nothing half-written stays behind when the run stops early.
+  auto discard = [&] {
+    if (frames) frames->discard();
+  };
+
+  const worlds::NamedPoint* goal = findGoal(sim.world());
+  std::vector<RobotWatch> watch(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const LoadedController& c = def.controllers.size() == 1 ? def.controllers.front() : def.controllers[i];
+    watch[i].summary.name = robotName(sim, i);
+    watch[i].summary.controller = c.entry.name + " (" + c.source + ")";
+  }
+
+  const render::FramePicker picker(sim.dt(), def.fps);
+  render::Image image;
+  while (sim.time() + 0.5 * sim.dt() < def.seconds && run.failures().empty()) {
+    const std::int64_t step = sim.stepCount();
+    run.step();
+    const worlds::StepRecord& rec = run.recorder().steps().back();
+    bool allFinished = true;
+    for (std::size_t i = 0; i < n; ++i) {
+      RobotWatch& w = watch[i];
+      const worlds::RobotRecord& r = rec.robots[i];
+      const Point2 at = r.truePose.position;
+      if (w.previous) w.summary.distance += (at - *w.previous).norm();
+      w.previous = at;
+      w.summary.collisions += static_cast<int>(r.bumps.size());
+      if (goal != nullptr) {
+        const double d = (at - goal->position).norm();
+        w.summary.goalDistance = std::min(d, w.summary.goalDistance.value_or(d));
+        if (d <= kGoalRadius && !w.summary.goalTime) w.summary.goalTime = rec.time;
+      }
+      Timeline& timeline = run.robot(i).debugChannel()->timeline();
+      for (TaskRecord& ended : timeline.drainEnded()) {
+        // The top task returning with nothing left running: this controller is done.
+        if (ended.parent < 0 && ended.how == TaskEnd::Returned && timeline.running().empty()) w.summary.finishedAt = ended.end;
+        if (!out.timeline.empty()) w.all.push_back(ended);
+        w.lastEnded.push_back(std::move(ended));
+        if (w.lastEnded.size() > kLastTasks) w.lastEnded.pop_front();
+      }
+      if (trace) trace->row(rec.time, i, r, timeline.current());
+      allFinished = allFinished && w.summary.finishedAt.has_value();
+    }
+    if (view) view->update(run);
+    for (int k = drawFrames ? picker.framesAt(step) : 0; k > 0; --k) {
+      renderer->renderInto(view->scene(), view->plots(), image);
+      if (video) {
+        if (Status s = video->write(image); !s) return discard(), s;
+      }
+      if (frames) {
+        if (Status s = frames->write(image); !s) return discard(), s;
+      }
+    }
+    if (def.progress) def.progress(std::min(1.0, sim.time() / def.seconds));
+    if (allFinished) break;
+  }
+
+  Summary summary{.world = def.worldName, .seed = sim.seed(), .dt = sim.dt(), .simulatedSeconds = sim.time(),
+                  .steps = sim.stepCount(), .trajectoryHash = run.recorder().trajectoryHash()};
+  for (std::size_t i = 0; i < n; ++i) {
+    RobotWatch& w = watch[i];
+    w.summary.lastTasks.assign(w.lastEnded.begin(), w.lastEnded.end());
+    for (TaskRecord& r : run.robot(i).debugChannel()->timeline().running()) {
+      r.end = sim.time();
+      if (!out.timeline.empty()) w.all.push_back(r);
+      w.summary.lastTasks.push_back(std::move(r));
+    }
+    summary.robots.push_back(std::move(w.summary));
+  }
+  for (const worlds::ControllerFailure& f : run.failures()) {
+    summary.robots.at(f.robot).failure = f.message;
+  }
+  if (summary.failed()) {
+    discard();  // the video and trace are dropped with their writers
+    return summary;
+  }
+
+  // Complete: move every file into place.
+  if (video) {
+    if (Status s = video->close(); !s) return discard(), s;
+    summary.written.push_back(out.video);
+  }
+  if (frames) summary.written.push_back(out.frames + " (" + std::to_string(frames->count()) + " frames)");
+  if (trace) {
+    if (Status s = trace->commit(); !s) return s;
+    summary.written.push_back(out.trace);
+  }
+  if (!out.timeline.empty()) {
+    std::vector<std::string> names;
+    std::vector<std::vector<TaskRecord>> records;
+    for (std::size_t i = 0; i < n; ++i) names.push_back(summary.robots[i].name), records.push_back(std::move(watch[i].all));
+    if (Status s = writeTimeline(out.timeline, names, records); !s) return s;
+    summary.written.push_back(out.timeline);
+  }
+  if (!out.plot.empty()) {
+    if (Status s = render::writePng(out.plot, renderer->renderPlots(view->plots())); !s) return s;
+    summary.written.push_back(out.plot);
+  }
+  return summary;
+}
+
+}  // namespace frob::course

@@ -1,0 +1,72 @@
+#include "frob/course/summary.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+
+namespace frob::course {
+
+namespace {
+
+std::string format(const char* fmt, double a, double b = 0.0) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, fmt, a, b);
+  return buf;
+}
+
+// One timeline entry: "  12.30 - 15.00 s  circleOnce  returned: (3.1, 4.2)".
+std::string taskLine(const TaskRecord& t) {
+  std::string line = format("      %7.2f - %7.2f s  ", t.start, t.end) + std::string(static_cast<std::size_t>(2 * t.depth), ' ') + t.name +
+                     "  " + toString(t.how);
+  if (!t.detail.empty()) line += ": " + t.detail;
+  return line + "\n";
+}
+
+}  // namespace
+
+std::string formatSummary(const Summary& s, double wallSeconds) {
+  std::string text = "world " + s.world + ", seed " + std::to_string(s.seed) + format(", dt %g s: %.2f s simulated", s.dt, s.simulatedSeconds);
+  if (wallSeconds > 0) text += format(" in %.2f s wall (%.0fx real time)", wallSeconds, s.simulatedSeconds / wallSeconds);
+  text += "\n";
+  for (const RobotSummary& r : s.robots) {
+    text += "  " + r.name + ": " + r.controller + "\n";
+    text += format("    distance %.2f m, collisions %.0f", r.distance, r.collisions);
+    if (r.goalDistance) {
+      text += r.goalTime ? format(", goal reached at %.2f s", *r.goalTime)
+                         : format(", goal not reached (closest %.2f m)", *r.goalDistance);
+    }
+    if (r.finishedAt) text += format(", finished at %.2f s", *r.finishedAt);
+    text += "\n";
+    if (!r.lastTasks.empty()) text += "    last tasks:\n";
+    for (const TaskRecord& t : r.lastTasks) text += taskLine(t);
+    if (!r.failure.empty()) text += "    FAILED: " + r.failure + "\n";
+  }
+  for (const std::string& w : s.written) text += "  wrote " + w + "\n";
+  return text;
+}
+
+std::string summaryJson(const Summary& s, double wallSeconds) {
+  nlohmann::ordered_json robots = nlohmann::ordered_json::array();
+  for (const RobotSummary& r : s.robots) {
+    nlohmann::ordered_json tasks = nlohmann::ordered_json::array();
+    for (const TaskRecord& t : r.lastTasks) {
+      tasks.push_back({{"name", t.name}, {"where", t.where}, {"start", t.start}, {"end", t.end},
+                       {"ended", toString(t.how)}, {"detail", t.detail}, {"depth", t.depth}});
+    }
+    auto optional = [](const std::optional<double>& x) { return x ? nlohmann::ordered_json(*x) : nlohmann::ordered_json(nullptr); };
+    robots.push_back({{"name", r.name}, {"controller", r.controller}, {"distance", r.distance},
+                      {"collisions", r.collisions}, {"goal_distance", optional(r.goalDistance)},
+                      {"goal_reached", r.goalTime.has_value()}, {"goal_time", optional(r.goalTime)},
+                      {"finished_at", optional(r.finishedAt)}, {"last_tasks", tasks},
+                      {"failure", r.failure.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.failure)}});
+  }
+  char hash[24];
+  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(s.trajectoryHash));
+  nlohmann::ordered_json doc = {{"world", s.world}, {"seed", s.seed}, {"dt", s.dt},
+                        {"simulated_seconds", s.simulatedSeconds}, {"steps", s.steps},
+                        {"wall_seconds", wallSeconds}, {"real_time_factor", wallSeconds > 0 ? s.simulatedSeconds / wallSeconds : 0.0},
+                        {"trajectory_hash", hash}, {"failed", s.failed()}, {"robots", robots}, {"written", s.written}};
+  return doc.dump(1) + "\n";
+}
+
+}  // namespace frob::course

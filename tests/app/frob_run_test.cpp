@@ -1,0 +1,178 @@
+// End to end: ctest runs the built frob. Bad input of every kind exits non-zero with one clear
+// message and leaves no output file behind; good runs write whole files and repeat exactly.
+#include "run_frob.hpp"
+
+#include <gtest/gtest.h>
+
+namespace frob::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A small controller file: drives forward at `forward` (an expression of the robot `r`) forever.
+std::string controller(const std::string& forward, const std::string& extra = "") {
+  return "#include <frob/frob.hpp>\nusing namespace frob;\n" + extra +
+         "Behavior<Wheels> drive([[maybe_unused]] const Robot& r) { return wheels(" + forward + ", 0.0); }\n"
+         "FROB_CONTROLLER(drive, .world = \"empty\", .seconds = 3)\n";
+}
+
+fs::path write(const fs::path& dir, const std::string& name, const std::string& text) {
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+// The lines of `text` that are not empty.
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  for (std::string l; std::getline(in, l);) {
+    if (!l.empty()) out.push_back(l);
+  }
+  return out;
+}
+
+const std::vector<std::string> kAllOutputs{"--video", "out.mp4", "--trace", "out.csv", "--timeline", "out.json",
+                                           "--plot", "out.png", "--frames", "frames"};
+
+std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
+  args.insert(args.end(), more.begin(), more.end());
+  return args;
+}
+
+TEST(FrobRun, GoodControllerWritesEveryOutputWhole) {
+  const fs::path dir = freshFolder("good");
+  write(dir, "slow.cpp", controller("0.2"));
+  const FrobResult r = runFrob(dir, with({"run", "slow.cpp", "--seconds", "2"}, kAllOutputs));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("2.00 s simulated"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("distance 0.3"), std::string::npos) << r.out;  // 0.2 m/s for 2 s, less the acceleration
+  EXPECT_EQ(filesIn(dir), (std::vector<std::string>{"frames", "out.csv", "out.json", "out.mp4", "out.png", "slow.cpp"}));
+  EXPECT_EQ(lines(readFile(dir / "out.csv")).size(), 1u + 200u);  // header, then 200 steps of one robot
+  EXPECT_EQ(filesIn(dir / "frames").size(), 60u);                 // 2 s at 30 fps
+}
+
+TEST(FrobRun, SameSeedSameTrace) {
+  const fs::path dir = freshFolder("same_seed");
+  write(dir, "slow.cpp", controller("0.2"));
+  ASSERT_EQ(runFrob(dir, {"run", "slow.cpp", "--world", "maze", "--seed", "7", "--trace", "a.csv"}).status, 0);
+  ASSERT_EQ(runFrob(dir, {"run", "slow.cpp", "--world", "maze", "--seed", "7", "--trace", "b.csv"}).status, 0);
+  ASSERT_EQ(runFrob(dir, {"run", "slow.cpp", "--world", "maze", "--seed", "8", "--trace", "c.csv"}).status, 0);
+  EXPECT_EQ(readFile(dir / "a.csv"), readFile(dir / "b.csv"));
+  EXPECT_NE(readFile(dir / "a.csv"), readFile(dir / "c.csv"));  // sonar noise follows the seed
+}
+
+TEST(FrobRun, SecondRunUsesTheCompiledController) {
+  const fs::path dir = freshFolder("cache");
+  write(dir, "cached.cpp", controller("0.1", "// cache test " + std::to_string(::getpid()) + "\n"));
+  const FrobResult first = runFrob(dir, {"run", "cached.cpp"});
+  ASSERT_EQ(first.status, 0) << first.err;
+  EXPECT_NE(first.err.find("compiled cached.cpp"), std::string::npos) << first.err;
+  const FrobResult second = runFrob(dir, {"run", "cached.cpp"});
+  ASSERT_EQ(second.status, 0) << second.err;
+  EXPECT_EQ(second.err.find("compiled"), std::string::npos) << second.err;
+}
+
+TEST(FrobRun, CompileErrorShowsTheCompilerThenOneLine) {
+  const fs::path dir = freshFolder("compile_error");
+  write(dir, "broken.cpp", controller("frontSonar(r) < \"x\""));
+  const FrobResult r = runFrob(dir, with({"run", "broken.cpp"}, kAllOutputs));
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("broken.cpp:3:"), std::string::npos) << r.err;  // the compiler's own message, with the line
+  EXPECT_EQ(lines(r.err).back(), "frob: could not compile 'broken.cpp' (the compiler's messages are above)");
+  EXPECT_EQ(filesIn(dir), std::vector<std::string>{"broken.cpp"});
+}
+
+// Each way a controller misbehaves: exit 1, one line on stderr, no output files at all.
+void expectCleanFailure(const std::string& name, const std::string& file, const std::string& message) {
+  const fs::path dir = freshFolder(name);
+  write(dir, name + ".cpp", file);
+  const FrobResult r = runFrob(dir, with({"run", name + ".cpp", "--quiet"}, kAllOutputs));
+  EXPECT_EQ(r.status, 1);
+  ASSERT_EQ(lines(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no output files were written"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(filesIn(dir), std::vector<std::string>{name + ".cpp"});
+}
+
+TEST(FrobRun, ControllerThatThrows) {
+  expectCleanFailure("throws",
+                     controller("lift([](double d) -> double { if (d < 5.0) throw std::runtime_error(\"too close\"); return d; }, frontSonar(r))",
+                                "#include <stdexcept>\n"),
+                     "too close");
+}
+
+TEST(FrobRun, ControllerThatGivesNaN) {
+  expectCleanFailure("nan", controller("lift([](double t) { return t > 1.0 ? std::nan(\"\") : 0.1; }, time())", "#include <cmath>\n"),
+                     "non-finite wheels");
+}
+
+TEST(FrobRun, FileWithoutControllerLine) {
+  const fs::path dir = freshFolder("no_entry");
+  write(dir, "none.cpp", "#include <frob/frob.hpp>\nint helper() { return 1; }\n");
+  const FrobResult r = runFrob(dir, {"run", "none.cpp", "--quiet"});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(lines(r.err).back(), "frob: 'none.cpp' names no controller: end it with a line FROB_CONTROLLER(yourFunction)");
+}
+
+TEST(FrobRun, UndefinedFunctionIsNamed) {
+  const fs::path dir = freshFolder("undefined");
+  write(dir, "undef.cpp", "#include <frob/frob.hpp>\nusing namespace frob;\nTask<Wheels> wander(double speed);\n"
+                          "Task<Wheels> start() { return wander(0.2); }\nFROB_CONTROLLER(start)\n");
+  const FrobResult r = runFrob(dir, {"run", "undef.cpp", "--quiet"});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("undefined symbol: wander(double) (declared but never defined?)"), std::string::npos) << r.err;
+}
+
+TEST(FrobRun, BadNamesAndPaths) {
+  const fs::path dir = freshFolder("bad_input");
+  write(dir, "slow.cpp", controller("0.1"));
+  struct Case {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  const std::vector<Case> cases{
+      {{"run", "slow.cpp", "--world", "atlantis"}, "frob: unknown world 'atlantis': not a reference world (see frob list) and no such file"},
+      {{"run", "nosuch"}, "frob: unknown controller 'nosuch': not a file and not an example (see frob list)"},
+      {{"run", "missing.cpp"}, "frob: controller file 'missing.cpp' cannot be read: it does not exist"},
+      {{"run", "slow.cpp", "--video", "no/such/dir/out.mp4"}, "frob: video: cannot write 'no/such/dir/out.mp4': directory 'no/such/dir' does not exist"},
+      {{"run", "slow.cpp", "--trace", "slow.cpp/x.csv"}, "frob: trace: cannot write 'slow.cpp/x.csv': 'slow.cpp' is not a directory"},
+      {{"run", "slow.cpp", "slow.cpp", "--world", "empty"}, "frob: the world 'empty' has 1 robots: give one controller for all of them or one per robot (2 given)"},
+      {{"run", "slow.cpp", "--size", "big"}, "frob: --size must look like 854x480, not 'big'"},
+  };
+  for (const Case& c : cases) {
+    const FrobResult r = runFrob(dir, with(c.args, {"--quiet"}));
+    EXPECT_EQ(r.status, 1) << c.message;
+    EXPECT_EQ(lines(r.err), std::vector<std::string>{c.message});
+    EXPECT_EQ(filesIn(dir), std::vector<std::string>{"slow.cpp"});
+  }
+}
+
+TEST(FrobRun, MalformedWorldFileNamesFileLineAndField) {
+  const fs::path dir = freshFolder("bad_world");
+  write(dir, "slow.cpp", controller("0.1"));
+  write(dir, "w.toml", "size = [5.0, 5.0]\n[[wall]]\nfrom = [1.0]\nto = [2.0, 2.0]\n[[robot]]\nstart = [1.0, 1.0]\n");
+  const FrobResult r = runFrob(dir, {"run", "slow.cpp", "--world", "w.toml", "--quiet"});
+  EXPECT_EQ(r.status, 1);
+  ASSERT_EQ(lines(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("w.toml:3: wall[0].from"), std::string::npos) << r.err;
+}
+
+TEST(FrobRender, WritesAPictureOfTheWorld) {
+  const fs::path dir = freshFolder("render");
+  const FrobResult r = runFrob(dir, {"render", "maze", "--out", "maze.png", "--size", "320x240"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(filesIn(dir), std::vector<std::string>{"maze.png"});
+  EXPECT_EQ(readFile(dir / "maze.png").substr(1, 3), "PNG");
+}
+
+TEST(FrobList, NamesTheWorlds) {
+  const FrobResult r = runFrob(freshFolder("list"), {"list"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* world : {"empty", "corridor", "maze", "office", "obstacles", "mesh", "arena"}) {
+    EXPECT_NE(r.out.find(std::string("  ") + world + " "), std::string::npos) << world;
+  }
+}
+
+}  // namespace
+}  // namespace frob::testing

@@ -1,0 +1,145 @@
+// runSession: the run loop behind `frob run`: when a run ends, what the summary says, and that the
+// trace holds exactly the recorded values. (The files' atomicity is tested end to end in tests/app.)
+#include "frob/course/session.hpp"
+#include "frob/frob.hpp"
+#include "frob/worlds/world_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <charconv>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace frob::course {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace frob::literals;
+
+// A 6 x 3 m room with a goal 2 m ahead of the robot.
+worlds::WorldDef room() {
+  return *worlds::parseWorld(R"(size = [6.0, 3.0]
+seed = 5
+[points]
+goal = [3.0, 1.5]
+[[robot]]
+name = "r"
+start = [1.0, 1.5]
+)", "room.toml");
+}
+
+LoadedController inlineController(Controller make) { return {.entry = {.name = "inline", .make = std::move(make)}, .source = "test"}; }
+
+// Forward at 0.5 m/s until `seconds` have passed, then the task returns.
+Task<Wheels> forwardFor(double seconds) {
+  return mkTask([seconds](const TaskState&) { return std::pair{wheels(0.5, 0.0), after(seconds)}; });
+}
+
+fs::path tempPath(const std::string& name) { return fs::path(::testing::TempDir()) / name; }
+
+TEST(Session, EndsWhenTheControllerTaskReturns) {
+  Result<Summary> s = runSession({.world = room(), .worldName = "room",
+                                  .controllers = {inlineController(makeController([] { return forwardFor(1.5); }))},
+                                  .seconds = 10});
+  ASSERT_TRUE(s.ok()) << s.error();
+  const RobotSummary& r = s.value().robots.at(0);
+  ASSERT_TRUE(r.finishedAt.has_value());
+  EXPECT_DOUBLE_EQ(*r.finishedAt, 1.5);
+  EXPECT_EQ(s.value().steps, 151);  // steps 0..150: the task returns at the instant of step 150
+  ASSERT_EQ(r.lastTasks.size(), 1u);
+  EXPECT_EQ(r.lastTasks[0].how, TaskEnd::Returned);
+}
+
+TEST(Session, DistanceAndGoal) {
+  Result<Summary> s = runSession({.world = room(), .worldName = "room",
+                                  .controllers = {inlineController([](const Robot&) { return wheels(0.5, 0.0); })},
+                                  .seconds = 4});
+  ASSERT_TRUE(s.ok()) << s.error();
+  const RobotSummary& r = s.value().robots.at(0);
+  // 0.5 m/s reached after 0.5 s at 1 m/s^2: 0.125 m then 0.5 m/s for the remaining 3.49 s.
+  EXPECT_NEAR(r.distance, 0.125 + 0.5 * 3.49, 0.01);
+  // Within kGoalRadius once 1.5 m are covered: at 0.25 + 1.5 / 0.5 = 3.25 s.
+  ASSERT_TRUE(r.goalTime.has_value());
+  EXPECT_NEAR(*r.goalTime, 3.25, 0.02);
+  EXPECT_NEAR(*r.goalDistance, 2.0 - r.distance, 0.01);
+  EXPECT_EQ(r.collisions, 0);
+  EXPECT_FALSE(s.value().failed());
+}
+
+// Parses the CSV written by a run into rows of numbers (empty cells and the task name dropped).
+std::vector<std::vector<double>> numbers(const fs::path& csv, std::string& header, std::vector<std::string>& tasks) {
+  std::ifstream in(csv);
+  std::getline(in, header);
+  std::vector<std::vector<double>> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<double> row;
+    std::stringstream cells(line);
+    std::string cell;
+    for (int column = 0; std::getline(cells, cell, ','); ++column) {
+      double x = 0;
+      if (std::from_chars(cell.data(), cell.data() + cell.size(), x).ec == std::errc() && !cell.empty()) row.push_back(x);
+      else if (column > 10 && !cell.empty()) tasks.push_back(cell);
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(Session, TraceHoldsTheRecordedValuesExactly) {
+  const fs::path csv = tempPath("session_trace.csv");
+  Controller c = makeController([] { return forwardFor(0.5); });
+  Result<Summary> s = runSession({.world = room(), .worldName = "room", .controllers = {inlineController(c)},
+                                  .seconds = 1, .outputs = {.trace = csv.string()}});
+  ASSERT_TRUE(s.ok()) << s.error();
+  worlds::Run run(room(), {}, {c});
+  run.runUntil(0.51);
+  std::string header;
+  std::vector<std::string> tasks;
+  const auto rows = numbers(csv, header, tasks);
+  EXPECT_EQ(header.substr(0, 49), "time,robot,true_x,true_y,true_heading,odom_x,odom");
+  EXPECT_EQ(header.substr(header.size() - 20), ",s14,s15,bumper,task");
+  ASSERT_EQ(rows.size(), run.recorder().steps().size());
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const worlds::StepRecord& rec = run.recorder().steps()[k];
+    const worlds::RobotRecord& r = rec.robots[0];
+    const std::vector<double> expected{rec.time, 0, r.truePose.position.x(), r.truePose.position.y(), r.truePose.heading,
+                                       r.odometry.position.x(), r.odometry.position.y(), r.odometry.heading,
+                                       r.wheels.forward, r.wheels.turn};
+    ASSERT_GE(rows[k].size(), 26u);
+    EXPECT_EQ(std::vector<double>(rows[k].begin(), rows[k].begin() + 10), expected) << "row " << k;
+    EXPECT_EQ(std::vector<double>(rows[k].begin() + 10, rows[k].begin() + 26), r.sonar) << "row " << k;
+  }
+  ASSERT_EQ(tasks.size(), rows.size() - 1);  // the task runs until the last instant, which has none
+  EXPECT_EQ(tasks.front(), "forwardFor");
+}
+
+TEST(Session, FailingControllerWritesNothing) {
+  const fs::path csv = tempPath("session_fail.csv"), json = tempPath("session_fail.json");
+  Controller c = [](const Robot&) {
+    return lift([](double t) { return t < 0.3 ? Wheels{0.1, 0} : throw RoboErr("gave up"); }, time());
+  };
+  Result<Summary> s = runSession({.world = room(), .worldName = "room", .controllers = {inlineController(c)},
+                                  .seconds = 2, .outputs = {.trace = csv.string(), .timeline = json.string()}});
+  ASSERT_TRUE(s.ok()) << s.error();
+  EXPECT_TRUE(s.value().failed());
+  EXPECT_NE(s.value().robots[0].failure.find("gave up"), std::string::npos) << s.value().robots[0].failure;
+  EXPECT_NEAR(s.value().simulatedSeconds, 0.31, 1e-9);  // stopped after the failing step
+  EXPECT_TRUE(s.value().written.empty());
+  EXPECT_FALSE(fs::exists(csv));
+  EXPECT_FALSE(fs::exists(csv.string() + ".partial"));
+  EXPECT_FALSE(fs::exists(json));
+}
+
+TEST(Session, ValidateNamesTheProblem) {
+  RunDef def{.world = room(), .worldName = "room", .controllers = {}, .seconds = 1};
+  EXPECT_EQ(validate(def).error(), "no controller given");
+  def.controllers = {inlineController(nullptr), inlineController(nullptr)};
+  EXPECT_EQ(validate(def).error(), "the world 'room' has 1 robots: give one controller for all of them or one per robot (2 given)");
+  def.controllers.pop_back();
+  def.seconds = -1;
+  EXPECT_EQ(validate(def).error(), "--seconds must be a positive number of seconds");
+}
+
+}  // namespace
+}  // namespace frob::course
