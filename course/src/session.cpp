@@ -59,6 +59,7 @@ Status validate(const RunDef& def) {
   if (!(def.seconds > 0.0) || !std::isfinite(def.seconds)) return Status::failure("--seconds must be a positive number of seconds");
   if (!(def.options.dt > 0.0) || def.options.dt > 0.1) return Status::failure("--dt must be a step in (0, 0.1] seconds");
   if (def.fps <= 0 || def.fps > 240) return Status::failure("--fps must be between 1 and 240");
+  if (!(def.speed >= 0.1 && def.speed <= 100.0)) return Status::failure("--speed must be between 0.1 and 100");
   const RunOutputs& out = def.outputs;
   if (!out.video.empty() || !out.frames.empty() || !out.plot.empty()) {
     if (Status s = render::validate(def.view); !s) return s;
@@ -130,7 +131,7 @@ Result<Summary> runSession(const RunDef& def) {
     watch[i].summary.controller = c.entry.name + " (" + c.source + ")";
   }
 
-  const render::FramePicker picker(sim.dt(), def.fps);
+  const render::FramePicker picker(sim.dt(), def.fps / def.speed);  // frames per simulated second
   render::Image image;
   while (sim.time() + 0.5 * sim.dt() < def.seconds && run.failures().empty()) {
     const std::int64_t step = sim.stepCount();

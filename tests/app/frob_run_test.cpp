@@ -72,6 +72,14 @@ TEST(FrobRun, SecondRunUsesTheCompiledController) {
   EXPECT_EQ(second.err.find("compiled"), std::string::npos) << second.err;
 }
 
+TEST(FrobRun, ExampleFileCompilesLikeAStudentFile) {
+  const fs::path dir = freshFolder("example_file");
+  const FrobResult r = runFrob(dir, {"run", FROB_EXAMPLES_DIR "/01_run_around.cpp", "--seconds", "1"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;  // examples are clean under the students' flags
+  EXPECT_NE(r.out.find("runAround (" FROB_EXAMPLES_DIR "/01_run_around.cpp)"), std::string::npos) << r.out;
+}
+
 TEST(FrobRun, CompileErrorShowsTheCompilerThenOneLine) {
   const fs::path dir = freshFolder("compile_error");
   write(dir, "broken.cpp", controller("frontSonar(r) < \"x\""));

@@ -40,8 +40,9 @@ inline std::string readFile(const std::filesystem::path& path) {
   return s.str();
 }
 
-// Runs `frob args...` with `dir` as its working folder; controllers compile into the shared test cache.
-inline FrobResult runFrob(const std::filesystem::path& dir, const std::vector<std::string>& args) {
+// Runs `frob args...` with `dir` as its working folder; controllers compile into `cache`.
+inline FrobResult runFrob(const std::filesystem::path& dir, const std::vector<std::string>& args,
+                          const std::string& cache = FROB_TEST_CACHE_DIR) {
   std::vector<std::string> all{FROB_EXECUTABLE};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -52,7 +53,7 @@ inline FrobResult runFrob(const std::filesystem::path& dir, const std::vector<st
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  std::vector<std::string> env{"FROB_CACHE_DIR=" FROB_TEST_CACHE_DIR};
+  std::vector<std::string> env{"FROB_CACHE_DIR=" + cache};
   for (char** e = environ; *e != nullptr; ++e) {
     if (std::string(*e).rfind("FROB_CACHE_DIR=", 0) != 0) env.emplace_back(*e);
   }

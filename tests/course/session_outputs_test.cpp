@@ -42,6 +42,7 @@ TEST(Timeline, OverlappingTasksGetTracksOfTheirOwn) {
 
 TEST(Trace, TaskNamesWithCommasAreQuoted) {
   const fs::path path = fs::path(::testing::TempDir()) / "quoted.csv";
+  fs::remove(path);
   Result<TraceFile> t = TraceFile::open(path.string(), 2);
   ASSERT_TRUE(t.ok()) << t.error();
   worlds::RobotRecord rec{.wheels = {0.25, -1.5}, .sonar = {1.0, 6.5}, .bumps = {{.bumper = 2, .angle = 0.5}}};
@@ -58,6 +59,7 @@ TEST(Trace, TaskNamesWithCommasAreQuoted) {
 
 TEST(Trace, UncommittedFileLeavesNothing) {
   const fs::path path = fs::path(::testing::TempDir()) / "dropped.csv";
+  fs::remove(path);
   {
     Result<TraceFile> t = TraceFile::open(path.string(), 16);
     ASSERT_TRUE(t.ok());

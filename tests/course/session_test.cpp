@@ -36,7 +36,12 @@ Task<Wheels> forwardFor(double seconds) {
   return mkTask([seconds](const TaskState&) { return std::pair{wheels(0.5, 0.0), after(seconds)}; });
 }
 
-fs::path tempPath(const std::string& name) { return fs::path(::testing::TempDir()) / name; }
+// A path in the temp folder with nothing there (left over from an earlier run).
+fs::path tempPath(const std::string& name) {
+  const fs::path path = fs::path(::testing::TempDir()) / name;
+  fs::remove(path);
+  return path;
+}
 
 TEST(Session, EndsWhenTheControllerTaskReturns) {
   Result<Summary> s = runSession({.world = room(), .worldName = "room",

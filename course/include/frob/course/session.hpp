@@ -38,6 +38,7 @@ struct RunDef {
   double seconds = 60.0;                      ///< simulated seconds at most; ends sooner once every controller's task returned
   RunOutputs outputs;                         ///< files to write
   int fps = 30;                               ///< frames per second of the video and frames
+  double speed = 1.0;                         ///< the video plays this many times faster than simulated time
   render::RenderDef view{.width = 854, .height = 480, .layout = render::PanelLayout::PlotRight};  ///< how frames look
   std::function<void(double done)> progress;  ///< told the share of the run done (0 to 1) after each step
 };
