@@ -8,6 +8,7 @@
 #include "progress.hpp"
 
 #include <CLI/CLI.hpp>
+#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -114,7 +115,7 @@ int runCommand(RunArgs a) {
   def.view.view = a.view == "chase" ? render::ViewMode::Chase : render::ViewMode::TopDown;
   if (Status s = course::validate(def); !s) return fail(s.error());
 
-  ProgressBar bar(!a.quiet, "frob: running " + def.controllers.front().entry.name + " in " + def.worldName);
+  ProgressBar bar(stderr, !a.quiet && ::isatty(STDERR_FILENO) == 1, "frob: running " + def.controllers.front().entry.name + " in " + def.worldName);
   char detail[48];
   def.progress = [&](double done) {
     std::snprintf(detail, sizeof detail, "%.1f / %.1f s", done * def.seconds, def.seconds);

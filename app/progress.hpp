@@ -1,8 +1,6 @@
 #pragma once
-// A progress bar on stderr for runs that take more than a moment: only on a terminal, redrawn
-// only when the shown percentage changes, erased when done.
-
-#include <unistd.h>
+// A progress bar for runs that take more than a moment (main shows it on stderr when that is a
+// terminal): redrawn only when the shown percentage changes, erased when done.
 
 #include <cstdio>
 #include <string>
@@ -11,8 +9,8 @@ namespace frob::app {
 
 class ProgressBar {
  public:
-  // Shown only when `enabled` and stderr is a terminal; `label` precedes the bar.
-  ProgressBar(bool enabled, std::string label) : on_(enabled && ::isatty(STDERR_FILENO) == 1), label_(std::move(label)) {}
+  // Drawn on `out` when `enabled`; `label` precedes the bar.
+  ProgressBar(std::FILE* out, bool enabled, std::string label) : out_(out), on_(enabled), label_(std::move(label)) {}
   ~ProgressBar() { finish(); }
   ProgressBar(const ProgressBar&) = delete;
   ProgressBar& operator=(const ProgressBar&) = delete;
@@ -24,17 +22,18 @@ class ProgressBar {
     shown_ = percent;
     constexpr int kWidth = 30;
     const int filled = percent * kWidth / 100;
-    std::fprintf(stderr, "\r%s [%s%s] %3d%% %s", label_.c_str(), std::string(static_cast<std::size_t>(filled), '#').c_str(),
+    std::fprintf(out_, "\r%s [%s%s] %3d%% %s", label_.c_str(), std::string(static_cast<std::size_t>(filled), '#').c_str(),
                  std::string(static_cast<std::size_t>(kWidth - filled), '.').c_str(), percent, detail);
-    std::fflush(stderr);
+    std::fflush(out_);
   }
   // Erases the bar.
   void finish() {
-    if (on_ && shown_ >= 0) std::fputs("\r\033[K", stderr);
+    if (on_ && shown_ >= 0) std::fputs("\r\033[K", out_);
     shown_ = -1;
   }
 
  private:
+  std::FILE* out_;
   bool on_;
   std::string label_;
   int shown_ = -1;
