@@ -175,6 +175,7 @@ int main(int argc, char** argv) {
 
   frob::app::RunArgs run;
   CLI::App* runCmd = cli.add_subcommand("run", "Run controllers in a world; with none, the BUG demo");
+  runCmd->footer(frob::app::kExamples);
   runCmd->add_option("controllers", run.controllers, "Controller files (.cpp), or example names; one for all robots or one per robot");
   runCmd->add_option("--world", run.world, "Reference world name or world file (default: the controller's)");
   runCmd->add_option("--seconds", run.seconds, "Simulated seconds at most (default: the controller's)")->check(CLI::PositiveNumber);

@@ -133,5 +133,16 @@ TEST(Examples, OneControllerDrivesEveryRobotOfTheArena) {
   for (const nlohmann::json& r : summary["robots"]) EXPECT_GT(r["distance"].get<double>(), 0.5) << r["name"];
 }
 
+TEST(Examples, OneControllerPerRobotOfTheArena) {
+  const std::filesystem::path dir = freshFolder("arena_each");
+  const FrobResult r = runFrob(dir, {"run", "01_run_around", "03_stopit", "07_with_task", "bug", "--world", "arena",
+                                     "--seconds", "2", "--json", "--quiet"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json summary = nlohmann::json::parse(r.out);
+  std::vector<std::string> controllers;
+  for (const nlohmann::json& robot : summary["robots"]) controllers.push_back(robot["controller"].get<std::string>().substr(0, 9));
+  EXPECT_EQ(controllers, (std::vector<std::string>{"runAround", "stopitDem", "wanderTen", "bugToGoal"}));
+}
+
 }  // namespace
 }  // namespace frob::testing
