@@ -15,6 +15,10 @@ namespace {
 
 constexpr int kVelocityIterations = 8;
 constexpr int kPositionIterations = 3;
+// Robots per chunk of parallel work: sensing a robot costs some 10 us, small chunks balance the
+// threads; odometry costs well under 1 us a robot, so it is split only among many robots.
+constexpr std::size_t kSenseGrain = 4;
+constexpr std::size_t kOdometryGrain = 256;
 
 // One robot's state apart from its Box2D body.
 struct RobotState {
@@ -266,7 +270,7 @@ void Simulation::sense() {
   s.caster.setRobots(s.centres, s.radii);
   // Ray casting is read-only on shared state and each robot has its own random stream, so robots
   // may be sensed on any thread in any order with bit-identical results.
-  s.workers.run(s.robots.size(), [&s](std::size_t begin, std::size_t end) {
+  s.workers.run(s.robots.size(), kSenseGrain, [&s](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) s.senseSonar(i);
   });
   auto first = std::lower_bound(s.keys.begin(), s.keys.end(), s.steps,
@@ -312,7 +316,7 @@ void Simulation::step(std::span<const Wheels> wheels) {
   }
   s.physics.Step(static_cast<float>(dt), kVelocityIterations, kPositionIterations);
   // Like sensing, odometry reads only its own body and draws from its own random stream.
-  s.workers.run(s.robots.size(), [&s](std::size_t begin, std::size_t end) {
+  s.workers.run(s.robots.size(), kOdometryGrain, [&s](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) s.updateOdometry(s.robots[i]);
   });
   ++s.steps;
