@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <thread>
 #include <vector>
 
 namespace frob::worlds::detail {
@@ -22,6 +23,20 @@ TEST(Workers, EveryItemRunsExactlyOnceJobAfterJob) {
       for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(runs[i].load(), 1) << threads << " threads, job " << job << ", item " << i;
     }
   }
+}
+
+TEST(Workers, AnotherThreadRunsChunksAlongsideTheCaller) {
+  // Each chunk waits (yielding, however long the OS takes to run the worker) until both chunks
+  // have started, which only another thread can bring about.
+  Workers workers(2);
+  std::atomic<int> started{0};
+  std::thread::id ids[2];
+  workers.run(2, 1, [&](std::size_t begin, std::size_t) {
+    ids[begin] = std::this_thread::get_id();
+    started.fetch_add(1);
+    while (started.load() < 2) std::this_thread::yield();
+  });
+  EXPECT_NE(ids[0], ids[1]);
 }
 
 TEST(Workers, ManyItemsStillFitTheChunkCount) {
