@@ -3,6 +3,7 @@
 // streams derived from it, so results do not depend on which thread senses which robot.
 
 #include <cmath>
+#include <math.h>  // sincos (GNU)
 #include <cstdint>
 #include <numbers>
 
@@ -52,9 +53,15 @@ class Rng {
     }
     const double u1 = uniform(), u2 = uniform();
     const double r = std::sqrt(-2.0 * std::log(u1)), a = 2.0 * std::numbers::pi * u2;
-    spare_ = r * std::sin(a);
+    double sinA, cosA;
+#if defined(__GLIBC__)
+    ::sincos(a, &sinA, &cosA);  // one argument reduction; glibc gives sin's and cos's very bits
+#else
+    sinA = std::sin(a), cosA = std::cos(a);
+#endif
+    spare_ = r * sinA;
     hasSpare_ = true;
-    return r * std::cos(a);
+    return r * cosA;
   }
 
  private:

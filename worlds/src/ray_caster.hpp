@@ -17,6 +17,10 @@ struct RayHit {
   double cosIncidence = 1.0;   // |cos| of the angle between the ray and the surface normal
 };
 
+// For tests: casts fans with AVX2 when `on` and the CPU has it, else with plain x86-64; returns
+// the previous setting. Both give bit-identical results.
+bool useAvx2(bool on);
+
 class RayCaster {
  public:
   // Builds the grid over [lo, hi] from the walls (rectangles become four segments).
@@ -55,6 +59,10 @@ class RayCaster {
             double uy, double tmax, int self, RayHit& best) const;
   void testOutside(double ox, double oy, double ux, double uy, int self, RayHit& best) const;
   void testCell(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const;
+  // Four rays of one cone at once (ray_fan.cpp): the nearest echo below `cap`, else `cap`.
+  double castFan(double ox, double oy, const double* ux, const double* uy, double cap, int self,
+                 double cosCutoff) const;
+  friend struct FanCaster;  // ray_fan.cpp: castFan's body, compiled for AVX2 and for plain x86-64
 
   std::size_t segmentCount_ = 0;
   std::vector<Robot> robots_;

@@ -1,41 +1,72 @@
 #include "workers.hpp"
 
-namespace frob::worlds::detail {
+#include <algorithm>
 
-Workers::Workers(int count) : count_(count < 1 ? 1 : count), start_(count_), done_(count_) {
+namespace frob::worlds::detail {
+namespace {
+
+constexpr std::uint64_t kMaxChunks = 0xffff;
+std::uint64_t generationOf(std::uint64_t t) { return t >> 32; }
+std::uint64_t nextOf(std::uint64_t t) { return (t >> 16) & 0xffff; }
+std::uint64_t chunksOf(std::uint64_t t) { return t & 0xffff; }
+
+}  // namespace
+
+Workers::Workers(int count) : count_(count < 1 ? 1 : count) {
   for (int w = 1; w < count_; ++w)
-    threads_.emplace_back([this, w] {
+    threads_.emplace_back([this] {
+      std::uint64_t seen = 0;
       for (;;) {
-        start_.arrive_and_wait();  // the barrier publishes job_, n_ and stop_ to this thread
-        if (stop_) return;
-        chunk(w);
-        done_.arrive_and_wait();
+        std::uint64_t t = ticket_.load(std::memory_order_acquire);
+        while (generationOf(t) == seen) {
+          ticket_.wait(t, std::memory_order_acquire);
+          t = ticket_.load(std::memory_order_acquire);
+        }
+        if (stop_.load(std::memory_order_acquire)) return;
+        seen = generationOf(t);
+        work(seen);
       }
     });
 }
 
 Workers::~Workers() {
-  stop_ = true;
-  if (count_ > 1) start_.arrive_and_wait();
+  stop_.store(true, std::memory_order_release);
+  ticket_.store((generationOf(ticket_.load()) + 1) << 32, std::memory_order_release);
+  ticket_.notify_all();
   for (auto& t : threads_) t.join();
 }
 
-void Workers::chunk(int worker) {
-  const std::size_t begin = n_ * static_cast<std::size_t>(worker) / static_cast<std::size_t>(count_);
-  const std::size_t end = n_ * static_cast<std::size_t>(worker + 1) / static_cast<std::size_t>(count_);
-  if (begin < end) (*job_)(begin, end);
+void Workers::work(std::uint64_t generation) {
+  std::uint64_t t = ticket_.load(std::memory_order_acquire);
+  while (generationOf(t) == generation && nextOf(t) < chunksOf(t)) {
+    if (!ticket_.compare_exchange_weak(t, t + (std::uint64_t{1} << 16), std::memory_order_acq_rel,
+                                       std::memory_order_acquire))
+      continue;
+    // The claim keeps this job current until done_ counts the chunk, so job_, n_ and grain_ hold still.
+    const std::size_t begin = nextOf(t) * grain_, end = std::min(n_, begin + grain_);
+    (*job_)(begin, end);
+    done_.fetch_add(1, std::memory_order_acq_rel);
+    done_.notify_all();
+    t = ticket_.load(std::memory_order_acquire);
+  }
 }
 
-void Workers::run(std::size_t n, const std::function<void(std::size_t, std::size_t)>& job) {
-  if (count_ == 1) {
-    job(0, n);
+void Workers::run(std::size_t n, std::size_t grain, const std::function<void(std::size_t, std::size_t)>& job) {
+  grain = std::max({grain, std::size_t{1}, (n + kMaxChunks - 1) / kMaxChunks});
+  const std::uint64_t chunks = (n + grain - 1) / grain;
+  if (count_ == 1 || chunks <= 1) {
+    if (n > 0) job(0, n);
     return;
   }
-  job_ = &job;
-  n_ = n;
-  start_.arrive_and_wait();
-  chunk(0);
-  done_.arrive_and_wait();
+  job_ = &job, n_ = n, grain_ = grain;
+  done_.store(0, std::memory_order_relaxed);
+  const std::uint64_t generation = generationOf(ticket_.load(std::memory_order_relaxed)) + 1;
+  ticket_.store(generation << 32 | chunks, std::memory_order_release);  // publishes the job
+  ticket_.notify_all();
+  work(generation);
+  // Every chunk is claimed; wait for the ones other threads are still running.
+  for (std::uint32_t d = done_.load(std::memory_order_acquire); d != chunks; d = done_.load(std::memory_order_acquire))
+    done_.wait(d, std::memory_order_acquire);
 }
 
 }  // namespace frob::worlds::detail
