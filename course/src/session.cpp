@@ -15,11 +15,6 @@ namespace {
 
 constexpr std::size_t kLastTasks = 5;  // ended tasks kept for the summary, per robot
 
-std::string robotName(const worlds::Simulation& sim, std::size_t i) {
-  const std::string& name = sim.robot(i).name;
-  return name.empty() ? "robot" + std::to_string(i) : name;
-}
-
 const worlds::NamedPoint* findGoal(const worlds::WorldDef& world) {
   for (const worlds::NamedPoint& p : world.points) {
     if (p.name == "goal") return &p;
@@ -127,7 +122,7 @@ Result<Summary> runSession(const RunDef& def) {
   std::vector<RobotWatch> watch(n);
   for (std::size_t i = 0; i < n; ++i) {
     const LoadedController& c = def.controllers.size() == 1 ? def.controllers.front() : def.controllers[i];
-    watch[i].summary.name = robotName(sim, i);
+    watch[i].summary.name = sim.robotName(i);
     watch[i].summary.controller = c.entry.name + " (" + c.source + ")";
   }
 

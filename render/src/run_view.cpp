@@ -63,7 +63,7 @@ RunView::RunView(const worlds::Run& run, RunViewDef def) : def_(std::move(def)) 
   const std::size_t n = sim.robotCount();
   for (std::size_t i = 0; i < n; ++i) {
     RobotView r;
-    r.name = sim.robot(i).name.empty() ? "robot" + std::to_string(i) : sim.robot(i).name;
+    r.name = sim.robotName(i);
     r.spec = sim.spec(i);
     r.pose = sim.truePose(i);
     r.odometry = sim.odometry(i);

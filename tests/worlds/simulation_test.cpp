@@ -22,6 +22,15 @@ TEST(Simulation, TimeIsStepsTimesDt) {
   EXPECT_DOUBLE_EQ(sim.time(), 50 * 0.02);
 }
 
+TEST(Simulation, RobotNamesTellRobotsApart) {
+  Simulation sim(scene("size = [8, 2]\n[[robot]]\nname = \"a\"\nstart = [1, 1]\n[[robot]]\nstart = [3, 1]\n"
+                       "[[robot]]\nname = \"b\"\nstart = [5, 1]\n[[robot]]\nname = \"b\"\nstart = [7, 1]\n"));
+  EXPECT_EQ(sim.robotName(0), "a");
+  EXPECT_EQ(sim.robotName(1), "robot1");
+  EXPECT_EQ(sim.robotName(2), "b#2");
+  EXPECT_EQ(sim.robotName(3), "b#3");
+}
+
 TEST(Simulation, DrivesForwardAndTurnsWithinItsLimits) {
   Simulation sim(scene(R"(
     size = [20, 20]

@@ -9,11 +9,6 @@ namespace frob::worlds {
 
 namespace {
 
-std::string robotName(const Simulation& sim, std::size_t i) {
-  const std::string& name = sim.robot(i).name;
-  return name.empty() ? "robot" + std::to_string(i) : name;
-}
-
 // The message of the exception in flight.
 std::string currentMessage() {
   try {
@@ -54,7 +49,7 @@ void Run::fail(std::size_t i, double time, const std::string& why) {
   controllers_[i].reset();
   wheels_[i] = Wheels{};
   pictures_[i] = Picture{};
-  failures_.push_back({i, time, robotName(*sim_, i) + ": " + why});
+  failures_.push_back({i, time, sim_->robotName(i) + ": " + why});
 }
 
 void Run::step() {

@@ -339,6 +339,15 @@ void Simulation::step(std::span<const Wheels> wheels) {
 std::size_t Simulation::robotCount() const { return impl_->robots.size(); }
 const RobotSpec& Simulation::spec(std::size_t i) const { return impl_->robots.at(i).spec; }
 const RobotDef& Simulation::robot(std::size_t i) const { return impl_->robots.at(i).def; }
+
+std::string Simulation::robotName(std::size_t i) const {
+  const std::string& name = robot(i).name;
+  if (name.empty()) return "robot" + std::to_string(i);
+  for (std::size_t j = 0; j < robotCount(); ++j) {
+    if (j != i && robot(j).name == name) return name + "#" + std::to_string(i);
+  }
+  return name;
+}
 Pose2 Simulation::truePose(std::size_t i) const { return poseOf(impl_->robots.at(i).body); }
 Pose2 Simulation::odometry(std::size_t i) const { return impl_->robots.at(i).odometry; }
 std::size_t Simulation::invalidCommands(std::size_t i) const { return impl_->robots.at(i).invalid; }

@@ -57,6 +57,8 @@ class Simulation {
   [[nodiscard]] const RobotSpec& spec(std::size_t i) const;
   /// Robot `i`'s definition (name, start, noise, limits).
   [[nodiscard]] const RobotDef& robot(std::size_t i) const;
+  /// Robot `i`'s name for people: its own, "robot<i>" when it has none, "<name>#<i>" when another shares it.
+  [[nodiscard]] std::string robotName(std::size_t i) const;
   /// Robot `i`'s true pose, for rendering and grading (controllers see only odometry).
   [[nodiscard]] Pose2 truePose(std::size_t i) const;
   /// Robot `i`'s believed pose (the odometry of the next frame).
