@@ -3,6 +3,8 @@
 #include "frob/instant.hpp"
 
 #include <cassert>
+#include <unordered_set>
+#include <vector>
 
 namespace frob {
 
@@ -21,6 +23,30 @@ std::optional<std::int64_t> TimerNode::compute(const Instant& now) {
   double due = static_cast<double>(fired_ + 1) * period_;
   if (local + 1e-9 * (1.0 + due) < due) return std::nullopt;
   return ++fired_;
+}
+}  // namespace detail
+
+namespace detail {
+namespace {
+// Depth-first, inputs in the order the node reads them, each node listed after its inputs.
+void planCone(NodeBase* node, std::vector<NodeBase*>& plan, std::unordered_set<const NodeBase*>& seen) {
+  if (!seen.insert(node).second) return;
+  if (node->strict()) {
+    std::vector<NodeBase*> inputs;
+    node->strictInputs(inputs);
+    for (NodeBase* input : inputs) planCone(input, plan, seen);
+  }
+  plan.push_back(node);
+}
+}  // namespace
+
+std::vector<NodeBase*> planFor(const NodeBase& root) {
+  std::vector<NodeBase*> plan;
+  std::unordered_set<const NodeBase*> seen{&root};
+  std::vector<NodeBase*> inputs;
+  root.strictInputs(inputs);
+  for (NodeBase* input : inputs) planCone(input, plan, seen);
+  return plan;
 }
 }  // namespace detail
 

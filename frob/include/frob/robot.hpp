@@ -65,6 +65,11 @@ struct FrameArg {
   }
   // Out of line, so that a node reading a fixed frame needs no registers saved for the call.
   [[gnu::noinline]] const SensorFrame* fetch(const Instant& now) const { return node->at(now); }
+  // As for any lifted argument (see Arg): the frame once a plan has fetched it; the node to fetch.
+  const SensorFrame* fresh(const Instant&) const { return fixed != nullptr ? fixed : node->value(); }
+  void inputs(std::vector<NodeBase*>& out) const {
+    if (fixed == nullptr) out.push_back(node.get());
+  }
 };
 }  // namespace detail
 
