@@ -3,7 +3,7 @@
 #include "frob/instant.hpp"
 
 #include <cassert>
-#include <unordered_set>
+#include <algorithm>
 #include <vector>
 
 namespace frob {
@@ -28,23 +28,26 @@ std::optional<std::int64_t> TimerNode::compute(const Instant& now) {
 
 namespace detail {
 namespace {
-// Depth-first, inputs in the order the node reads them, each node listed after its inputs.
-void planCone(NodeBase* node, std::vector<NodeBase*>& plan, std::unordered_set<const NodeBase*>& seen) {
-  if (!seen.insert(node).second) return;
+// Depth-first, inputs in the order the node reads them, each node listed after its inputs. Plans
+// are small, so `seen` is searched linearly rather than hashed (a switch builds plans often).
+void planCone(NodeBase* node, std::vector<PlanStep>& plan, std::vector<const NodeBase*>& seen) {
+  if (std::find(seen.begin(), seen.end(), node) != seen.end()) return;
+  seen.push_back(node);
   if (node->strict()) {
     std::vector<NodeBase*> inputs;
     node->strictInputs(inputs);
     for (NodeBase* input : inputs) planCone(input, plan, seen);
   }
-  plan.push_back(node);
+  plan.push_back(PlanStep{node, node->refresher()});
 }
 }  // namespace
 
-std::vector<NodeBase*> planFor(const NodeBase& root) {
-  std::vector<NodeBase*> plan;
-  std::unordered_set<const NodeBase*> seen{&root};
+std::vector<PlanStep> planFor(const NodeBase& root) {
   std::vector<NodeBase*> inputs;
   root.strictInputs(inputs);
+  std::vector<PlanStep> plan;
+  if (inputs.empty()) return plan;
+  std::vector<const NodeBase*> seen{&root};
   for (NodeBase* input : inputs) planCone(input, plan, seen);
   return plan;
 }

@@ -9,7 +9,7 @@
 
 namespace frob {
 
-void detail::outOfRange(std::size_t index, std::size_t size) {
+void detail::sonarOutOfRange(std::size_t index, std::size_t size) {
   throw std::out_of_range("Robot: sonar " + std::to_string(index) + " read from a frame of " + std::to_string(size) +
                           " sonars");
 }
@@ -31,7 +31,8 @@ class FrameNode final : public detail::BehaviorNode<const SensorFrame*> {
 // The root of a robot's sensor graph when its owner refreshes the frame in place: always that frame.
 class FixedFrameNode final : public detail::BehaviorNode<const SensorFrame*> {
  public:
-  explicit FixedFrameNode(std::shared_ptr<const SensorFrame> frame) : frame_(std::move(frame)) {}
+  // Holds the frame from the start, so that readings find it in value() without sampling the node.
+  explicit FixedFrameNode(std::shared_ptr<const SensorFrame> frame) : frame_(std::move(frame)) { hold(frame_.get()); }
 
  protected:
   const SensorFrame* compute(const Instant&) override { return frame_.get(); }
@@ -65,9 +66,9 @@ std::shared_ptr<FrameNode> makeFrameNode(FrameSource source) {
   return std::make_shared<FrameNode>(std::move(source));
 }
 
-std::shared_ptr<FixedFrameNode> makeFixedFrameNode(const std::shared_ptr<const SensorFrame>& frame) {
+std::shared_ptr<FixedFrameNode> makeFixedFrameNode(std::shared_ptr<const SensorFrame> frame) {
   FROB_ASSERT(frame != nullptr, "Robot: the frame is null");
-  return std::make_shared<FixedFrameNode>(frame);
+  return std::make_shared<FixedFrameNode>(std::move(frame));
 }
 
 // A frame source that computes readings from functions of time.
@@ -91,14 +92,14 @@ FrameSource scriptedSource(const RobotSpec& spec, ScriptedSensors s) {
 struct Robot::Sensors {
   RobotSpec spec;
   Behavior<const SensorFrame*> frame;
-  const SensorFrame* fixedFrame;  // the frame itself when it is refreshed in place, else null
+  bool inPlace;  // the frame is refreshed in place by its owner, not fetched at each instant
   Behavior<std::vector<double>> sonars;
   Event<BumperHit> bumper;
   Event<char> keyboard;
 
   template <class T>
   Reading<T> read(detail::FrameField<T> field) const {
-    return Reading<T>(field, detail::FrameArg{fixedFrame, frame.node()});
+    return Reading<T>(field, detail::FrameArg{&frame.node()->value(), !inPlace, frame.node()});
   }
   Reading<double> read(detail::FrameSlot slot, std::size_t index = 0) const {
     return read(detail::FrameField<double>{slot, index});
@@ -113,13 +114,13 @@ RobotSpec nomadSpec(int count) {
 }
 
 Robot::Robot(RobotSpec spec, std::shared_ptr<detail::BehaviorNode<const SensorFrame*>> frameNode,
-             const SensorFrame* fixedFrame) {
+             bool inPlace) {
   FROB_ASSERT(!spec.sonarAngles.empty(), "Robot: the spec has no sonars");
   Behavior<const SensorFrame*> frame(frameNode);
   sensors_ = std::make_shared<const Sensors>(Sensors{
       .spec = std::move(spec),
       .frame = frame,
-      .fixedFrame = fixedFrame,
+      .inPlace = inPlace,
       .sonars = lift([](const SensorFrame* s) { return s->sonar; }, frame),
       .bumper = Event<BumperHit>(std::make_shared<FrameListEvent<BumperHit>>(frameNode, &SensorFrame::bumps)),
       .keyboard = Event<char>(std::make_shared<FrameListEvent<char>>(frameNode, &SensorFrame::keys)),
@@ -127,10 +128,10 @@ Robot::Robot(RobotSpec spec, std::shared_ptr<detail::BehaviorNode<const SensorFr
 }
 
 Robot::Robot(RobotSpec spec, FrameSource source)
-    : Robot(std::move(spec), makeFrameNode(std::move(source)), nullptr) {}
+    : Robot(std::move(spec), makeFrameNode(std::move(source)), false) {}
 
 Robot::Robot(RobotSpec spec, std::shared_ptr<const SensorFrame> frame)
-    : Robot(std::move(spec), makeFixedFrameNode(frame), frame.get()) {}
+    : Robot(std::move(spec), makeFixedFrameNode(std::move(frame)), true) {}
 
 Robot::Robot(RobotSpec spec, ScriptedSensors sensors) : Robot(spec, scriptedSource(spec, std::move(sensors))) {}
 

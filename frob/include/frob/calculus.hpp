@@ -3,6 +3,8 @@
 
 #include "frob/behavior.hpp"
 
+#include <limits>
+
 namespace frob {
 namespace detail {
 
@@ -38,8 +40,7 @@ class DerivativeNode final : public StrictNode<T, DerivativeNode<T>> {
   T computeFresh(const Instant& now) {
     const T& v = b_->value();
     T d = zeroOf<T>();
-    if (started_ && now.time > previousTime_) d = (v - previous_) / (now.time - previousTime_);
-    started_ = true;
+    if (now.time > previousTime_) d = (v - previous_) / (now.time - previousTime_);
     previous_ = v;
     previousTime_ = now.time;
     return d;
@@ -48,8 +49,7 @@ class DerivativeNode final : public StrictNode<T, DerivativeNode<T>> {
  private:
   std::shared_ptr<BehaviorNode<T>> b_;
   T previous_ = zeroOf<T>();
-  double previousTime_ = 0.0;
-  bool started_ = false;
+  double previousTime_ = std::numeric_limits<double>::infinity();  // no difference at the first sample
 };
 
 // The value of `b` when `key` was best so far (smallest, or largest with `wantMax`); earliest wins ties.

@@ -26,7 +26,8 @@ struct ScriptedSensors {
 };
 
 namespace detail {
-[[noreturn]] void outOfRange(std::size_t index, std::size_t size);
+// Throws std::out_of_range for a sonar the frame lacks.
+[[noreturn]] void sonarOutOfRange(std::size_t index, std::size_t size);
 
 // Which value of the frame a reading takes.
 enum class FrameSlot : std::uint8_t { sonar, heading, velocity };
@@ -43,7 +44,7 @@ struct FrameField<double> {
     if (slot == FrameSlot::sonar) [[likely]] {
       // A source may give fewer sonars than its spec says: a clear error, not a stray read.
       const std::vector<double>& ranges = frame->sonar;
-      if (index >= ranges.size()) [[unlikely]] outOfRange(index, ranges.size());
+      if (index >= ranges.size()) [[unlikely]] sonarOutOfRange(index, ranges.size());
       return ranges[index];
     }
     return slot == FrameSlot::heading ? frame->odometry.heading : frame->velocity;
@@ -57,18 +58,19 @@ struct FrameField<Point2> {
 // The robot's frame at an instant, for readings: a frame its owner refreshes in place is read
 // directly (no node, no per-instant check); a FrameSource is fetched once per instant by `node`.
 struct FrameArg {
-  const SensorFrame* fixed = nullptr;                     // kept alive by `node`
-  std::shared_ptr<BehaviorNode<const SensorFrame*>> node;  // gives the frame at each instant
+  const SensorFrame* const* slot = nullptr;  // node->value(): the frame in place, or this instant's fetch
+  bool fetched = false;                       // whether `node` must fetch it at each instant
+  std::shared_ptr<BehaviorNode<const SensorFrame*>> node;  // holds the frame in `slot`
   const SensorFrame* get(const Instant& now) const {
-    if (fixed != nullptr) [[likely]] return fixed;
+    if (!fetched) [[likely]] return *slot;
     return fetch(now);
   }
   // Out of line, so that a node reading a fixed frame needs no registers saved for the call.
   [[gnu::noinline]] const SensorFrame* fetch(const Instant& now) const { return node->at(now); }
   // As for any lifted argument (see Arg): the frame once a plan has fetched it; the node to fetch.
-  const SensorFrame* fresh(const Instant&) const { return fixed != nullptr ? fixed : node->value(); }
+  const SensorFrame* fresh(const Instant&) const { return *slot; }
   void inputs(std::vector<NodeBase*>& out) const {
-    if (fixed == nullptr) out.push_back(node.get());
+    if (fetched) out.push_back(node.get());
   }
 };
 }  // namespace detail
@@ -116,7 +118,7 @@ class Robot {
 
  private:
   Robot(RobotSpec spec, std::shared_ptr<detail::BehaviorNode<const SensorFrame*>> frameNode,
-        const SensorFrame* fixedFrame);
+        bool inPlace);
   struct Sensors;
   std::shared_ptr<const Sensors> sensors_;
   std::shared_ptr<DebugChannel> debug_ = std::make_shared<DebugChannel>();

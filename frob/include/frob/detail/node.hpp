@@ -31,6 +31,11 @@ class NodeBase {
   [[nodiscard]] std::uint64_t stamp() const { return stamp_; }
   // Computes the value at `now` and holds it; called only when stamp() != now.id.
   virtual void refresh(const Instant& now) = 0;
+  // refresh as a plain function, which a plan calls without a virtual dispatch.
+  using Refresher = void (*)(NodeBase&, const Instant&);
+  [[nodiscard]] virtual Refresher refresher() const {
+    return [](NodeBase& n, const Instant& now) { n.refresh(now); };
+  }
   // True if the node reads the same inputs at every instant (strictInputs lists them).
   [[nodiscard]] virtual bool strict() const { return false; }
   // Appends the nodes a strict node reads at every instant, in the order it reads them. Other
@@ -81,9 +86,15 @@ class BehaviorNode : public NodeBase {
   std::conditional_t<kPlain, T, std::optional<T>> value_{};
 };
 
+// One step of a plan: a node and how to refresh it.
+struct PlanStep {
+  NodeBase* node;
+  NodeBase::Refresher refresh;
+};
+
 // The nodes to bring up to date before `root`, in the order a recursive pull would compute them
 // (inputs before the nodes that read them, each once): `root`'s strict cone, without `root`.
-std::vector<NodeBase*> planFor(const NodeBase& root);
+std::vector<PlanStep> planFor(const NodeBase& root);
 
 // A behavior node that reads the same inputs at every instant (pointwise functions, integral...).
 // Sampled directly, it first runs its plan: one flat pass over its strict cone that computes each
@@ -98,21 +109,27 @@ class StrictNode : public BehaviorNode<T> {
     this->stamp_ = now.id;
   }
   [[nodiscard]] bool strict() const final { return true; }
+  [[nodiscard]] NodeBase::Refresher refresher() const final {
+    return [](NodeBase& n, const Instant& now) { static_cast<StrictNode&>(n).refresh(now); };
+  }
 
  protected:
   T compute(const Instant& now) final {
-    if (!planned_) {
-      plan_ = planFor(*this);  // built at the first sample: graph creation stays cheap
-      planned_ = true;
-    }
-    for (NodeBase* n : plan_) {
-      if (n->stamp() != now.id) n->refresh(now);
+    if (!planned_) [[unlikely]] plan();
+    const std::uint64_t id = now.id;  // a local, so that it stays in a register across the calls
+    for (const PlanStep& step : plan_) {
+      if (step.node->stamp() != id) step.refresh(*step.node, now);
     }
     return static_cast<Derived*>(this)->computeFresh(now);
   }
 
  private:
-  std::vector<NodeBase*> plan_;  // owned by this node's inputs, which it keeps alive
+  // At the first sample, not at creation, so that building a graph stays cheap.
+  [[gnu::noinline]] void plan() {
+    plan_ = planFor(*this);
+    planned_ = true;
+  }
+  std::vector<PlanStep> plan_;  // nodes owned by this node's inputs, which it keeps alive
   bool planned_ = false;
 };
 
