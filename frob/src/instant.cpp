@@ -3,6 +3,8 @@
 #include "frob/instant.hpp"
 
 #include <cassert>
+#include <algorithm>
+#include <vector>
 
 namespace frob {
 
@@ -21,6 +23,33 @@ std::optional<std::int64_t> TimerNode::compute(const Instant& now) {
   double due = static_cast<double>(fired_ + 1) * period_;
   if (local + 1e-9 * (1.0 + due) < due) return std::nullopt;
   return ++fired_;
+}
+}  // namespace detail
+
+namespace detail {
+namespace {
+// Depth-first, inputs in the order the node reads them, each node listed after its inputs. Plans
+// are small, so `seen` is searched linearly rather than hashed (a switch builds plans often).
+void planCone(NodeBase* node, std::vector<PlanStep>& plan, std::vector<const NodeBase*>& seen) {
+  if (std::find(seen.begin(), seen.end(), node) != seen.end()) return;
+  seen.push_back(node);
+  if (node->strict()) {
+    std::vector<NodeBase*> inputs;
+    node->strictInputs(inputs);
+    for (NodeBase* input : inputs) planCone(input, plan, seen);
+  }
+  plan.push_back(PlanStep{node, node->refresher()});
+}
+}  // namespace
+
+std::vector<PlanStep> planFor(const NodeBase& root) {
+  std::vector<NodeBase*> inputs;
+  root.strictInputs(inputs);
+  std::vector<PlanStep> plan;
+  if (inputs.empty()) return plan;
+  std::vector<const NodeBase*> seen{&root};
+  for (NodeBase* input : inputs) planCone(input, plan, seen);
+  return plan;
 }
 }  // namespace detail
 

@@ -3,9 +3,16 @@
 #include "frob/errors.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace frob {
+
+void detail::sonarOutOfRange(std::size_t index, std::size_t size) {
+  throw std::out_of_range("Robot: sonar " + std::to_string(index) + " read from a frame of " + std::to_string(size) +
+                          " sonars");
+}
 
 namespace {
 
@@ -21,10 +28,18 @@ class FrameNode final : public detail::BehaviorNode<const SensorFrame*> {
   FrameSource source_;
 };
 
-double sonarAt(const SensorFrame& f, std::size_t i) { return f.sonar.at(i); }
-Point2 placeOf(const SensorFrame& f, std::size_t) { return f.odometry.position; }
-double headingOf(const SensorFrame& f, std::size_t) { return f.odometry.heading; }
-double velocityOf(const SensorFrame& f, std::size_t) { return f.velocity; }
+// The root of a robot's sensor graph when its owner refreshes the frame in place: always that frame.
+class FixedFrameNode final : public detail::BehaviorNode<const SensorFrame*> {
+ public:
+  // Holds the frame from the start, so that readings find it in value() without sampling the node.
+  explicit FixedFrameNode(std::shared_ptr<const SensorFrame> frame) : frame_(std::move(frame)) { hold(frame_.get()); }
+
+ protected:
+  const SensorFrame* compute(const Instant&) override { return frame_.get(); }
+
+ private:
+  std::shared_ptr<const SensorFrame> frame_;
+};
 
 // The first item of a per-step list in the frame, as an event.
 template <class T>
@@ -45,6 +60,16 @@ class FrameListEvent final : public detail::EventNode<T> {
   std::shared_ptr<detail::BehaviorNode<const SensorFrame*>> frame_;
   std::vector<T> SensorFrame::*list_;
 };
+
+std::shared_ptr<FrameNode> makeFrameNode(FrameSource source) {
+  FROB_ASSERT(static_cast<bool>(source), "Robot: the frame source is empty");
+  return std::make_shared<FrameNode>(std::move(source));
+}
+
+std::shared_ptr<FixedFrameNode> makeFixedFrameNode(std::shared_ptr<const SensorFrame> frame) {
+  FROB_ASSERT(frame != nullptr, "Robot: the frame is null");
+  return std::make_shared<FixedFrameNode>(std::move(frame));
+}
 
 // A frame source that computes readings from functions of time.
 FrameSource scriptedSource(const RobotSpec& spec, ScriptedSensors s) {
@@ -67,13 +92,17 @@ FrameSource scriptedSource(const RobotSpec& spec, ScriptedSensors s) {
 struct Robot::Sensors {
   RobotSpec spec;
   Behavior<const SensorFrame*> frame;
+  bool inPlace;  // the frame is refreshed in place by its owner, not fetched at each instant
   Behavior<std::vector<double>> sonars;
   Event<BumperHit> bumper;
   Event<char> keyboard;
 
   template <class T>
-  Reading<T> read(T (*field)(const SensorFrame&, std::size_t), std::size_t index = 0) const {
-    return Reading<T>(detail::FrameField<T>{field, index}, detail::Arg<Behavior<const SensorFrame*>>{frame.node()});
+  Reading<T> read(detail::FrameField<T> field) const {
+    return Reading<T>(field, detail::FrameArg{&frame.node()->value(), !inPlace, frame.node()});
+  }
+  Reading<double> read(detail::FrameSlot slot, std::size_t index = 0) const {
+    return read(detail::FrameField<double>{slot, index});
   }
 };
 
@@ -84,19 +113,25 @@ RobotSpec nomadSpec(int count) {
   return spec;
 }
 
-Robot::Robot(RobotSpec spec, FrameSource source) {
+Robot::Robot(RobotSpec spec, std::shared_ptr<detail::BehaviorNode<const SensorFrame*>> frameNode,
+             bool inPlace) {
   FROB_ASSERT(!spec.sonarAngles.empty(), "Robot: the spec has no sonars");
-  FROB_ASSERT(static_cast<bool>(source), "Robot: the frame source is empty");
-  Behavior<const SensorFrame*> frame(std::make_shared<FrameNode>(std::move(source)));
-  auto frameNode = frame.node();
+  Behavior<const SensorFrame*> frame(frameNode);
   sensors_ = std::make_shared<const Sensors>(Sensors{
       .spec = std::move(spec),
       .frame = frame,
+      .inPlace = inPlace,
       .sonars = lift([](const SensorFrame* s) { return s->sonar; }, frame),
       .bumper = Event<BumperHit>(std::make_shared<FrameListEvent<BumperHit>>(frameNode, &SensorFrame::bumps)),
       .keyboard = Event<char>(std::make_shared<FrameListEvent<char>>(frameNode, &SensorFrame::keys)),
   });
 }
+
+Robot::Robot(RobotSpec spec, FrameSource source)
+    : Robot(std::move(spec), makeFrameNode(std::move(source)), false) {}
+
+Robot::Robot(RobotSpec spec, std::shared_ptr<const SensorFrame> frame)
+    : Robot(std::move(spec), makeFixedFrameNode(std::move(frame)), true) {}
 
 Robot::Robot(RobotSpec spec, ScriptedSensors sensors) : Robot(spec, scriptedSource(spec, std::move(sensors))) {}
 
@@ -104,7 +139,7 @@ const RobotSpec& Robot::spec() const { return sensors_->spec; }
 
 Reading<double> Robot::sonar(int i) const {
   int n = static_cast<int>(sensors_->spec.sonarAngles.size());
-  return sensors_->read(&sonarAt, static_cast<std::size_t>(((i % n) + n) % n));
+  return sensors_->read(detail::FrameSlot::sonar, static_cast<std::size_t>(((i % n) + n) % n));
 }
 
 Behavior<std::vector<double>> Robot::sonars() const { return sensors_->sonars; }
@@ -121,9 +156,9 @@ int Robot::sonarNearest(double angle) const {
   return best;
 }
 
-Reading<Point2> Robot::place() const { return sensors_->read(&placeOf); }
-Reading<double> Robot::orientation() const { return sensors_->read(&headingOf); }
-Reading<double> Robot::velocity() const { return sensors_->read(&velocityOf); }
+Reading<Point2> Robot::place() const { return sensors_->read(detail::FrameField<Point2>{}); }
+Reading<double> Robot::orientation() const { return sensors_->read(detail::FrameSlot::heading); }
+Reading<double> Robot::velocity() const { return sensors_->read(detail::FrameSlot::velocity); }
 Event<BumperHit> Robot::bumper() const { return sensors_->bumper; }
 Event<char> Robot::keyboard() const { return sensors_->keyboard; }
 

@@ -11,7 +11,7 @@ using namespace bench;
 
 void BM_FrobWallFollowerStep(benchmark::State& state) {
   auto frame = std::make_shared<SensorFrame>();
-  Robot robot(nomadSpec(), [frame](const Instant&) -> const SensorFrame& { return *frame; });
+  Robot robot(nomadSpec(), std::shared_ptr<const SensorFrame>(frame));
   Behavior<Wheels> controller = wallFollower(robot);
   Clock clock(0.01);
   long before = liveNodeCount();
@@ -40,7 +40,7 @@ BENCHMARK(BM_HandWrittenWallFollowerStep);
 // The same graph, built fresh each iteration: the cost of creating a task-sized graph.
 void BM_BuildWallFollowerGraph(benchmark::State& state) {
   auto frame = std::make_shared<SensorFrame>();
-  Robot robot(nomadSpec(), [frame](const Instant&) -> const SensorFrame& { return *frame; });
+  Robot robot(nomadSpec(), std::shared_ptr<const SensorFrame>(frame));
   for (auto _ : state) benchmark::DoNotOptimize(wallFollower(robot));
 }
 BENCHMARK(BM_BuildWallFollowerGraph);

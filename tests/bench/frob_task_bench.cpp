@@ -54,7 +54,7 @@ BENCHMARK(BM_BehaviorInTaskStep);
 // The paper's wall follower, bare and as the behavior of a running task.
 void BM_BareWallFollowerStep(benchmark::State& state) {
   auto frame = std::make_shared<SensorFrame>();
-  Robot robot(nomadSpec(), [frame](const Instant&) -> const SensorFrame& { return *frame; });
+  Robot robot(nomadSpec(), std::shared_ptr<const SensorFrame>(frame));
   Behavior<Wheels> c = wallFollower(robot);
   Clock clock(0.01);
   for (auto _ : state) {
@@ -67,7 +67,7 @@ BENCHMARK(BM_BareWallFollowerStep);
 
 void BM_WallFollowerInTaskStep(benchmark::State& state) {
   auto frame = std::make_shared<SensorFrame>();
-  Robot robot(nomadSpec(), [frame](const Instant&) -> const SensorFrame& { return *frame; });
+  Robot robot(nomadSpec(), std::shared_ptr<const SensorFrame>(frame));
   Behavior<Wheels> c =
       runTask(robot, mkTask([](const TaskState& ts) { return std::pair{wallFollower(ts.robot()), never()}; }));
   Clock clock(0.01);

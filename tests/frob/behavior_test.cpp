@@ -1,4 +1,5 @@
 #include "frob/behavior.hpp"
+#include "frob/calculus.hpp"
 #include "frob/sampling.hpp"
 
 #include <gtest/gtest.h>
@@ -62,6 +63,35 @@ TEST(Behavior, GlitchFreedomEvaluatesASharedNodeOncePerInstant) {
   std::vector<double> s = sample(deeper, 1.0, 5);
   EXPECT_EQ(evaluations, 5);  // once per instant, not once per use
   EXPECT_DOUBLE_EQ(s[3], (3.0 + 3.0) * 3.0 - 3.0);
+}
+
+// Pointwise nodes and integrals bring their inputs up to date in one pass (a plan); a node shared by
+// two graphs sampled in either order, or sampled on its own, is still evaluated once per instant.
+TEST(Behavior, ANodeSharedBetweenGraphsIsEvaluatedOncePerInstant) {
+  int evaluations = 0;
+  Behavior<double> counted = lift(
+      [&evaluations](double t) {
+        ++evaluations;
+        return t;
+      },
+      time());
+  Behavior<double> area = integral(counted);
+  Behavior<double> a = area + counted * 2.0;
+  Behavior<double> b = area - counted;
+  Clock clock(0.5);
+  for (int k = 0; k < 4; ++k) {
+    const Instant& now = k == 0 ? clock.now() : clock.advance();
+    double t = now.time;
+    if (k % 2 == 0) {
+      EXPECT_DOUBLE_EQ(a.at(now), t * t / 2 + 2 * t);
+      EXPECT_DOUBLE_EQ(b.at(now), t * t / 2 - t);
+    } else {
+      EXPECT_DOUBLE_EQ(counted.at(now), t);
+      EXPECT_DOUBLE_EQ(b.at(now), t * t / 2 - t);
+      EXPECT_DOUBLE_EQ(a.at(now), t * t / 2 + 2 * t);
+    }
+    EXPECT_EQ(evaluations, k + 1);
+  }
 }
 
 TEST(Behavior, RepeatedRunsAreBitIdentical) {

@@ -1,3 +1,4 @@
+#include "../bench/wall_follower.hpp"
 #include "frob/calculus.hpp"
 #include "frob/robot.hpp"
 #include "frob/sampling.hpp"
@@ -69,6 +70,48 @@ TEST(Robot, SensorsAreReadOncePerInstantHoweverOftenUsed) {
   Behavior<double> f = frontSonar(r);
   (void)sample(f + f * sonar(r, 0) + leftSonar(r), 0.1, 10);
   EXPECT_EQ(reads, 10);
+}
+
+TEST(Robot, ReadsAFrameItsOwnerRefreshesInPlace) {
+  auto frame = std::make_shared<SensorFrame>();
+  Robot r(nomadSpec(), std::shared_ptr<const SensorFrame>(frame));
+  Behavior<double> front = frontSonar(r);
+  Behavior<double> heading = orientation(r);
+  Event<BumperHit> bumps = bumper(r);
+  Clock clock(0.1);
+  for (int k = 0; k < 3; ++k) {
+    const Instant& now = k == 0 ? clock.now() : clock.advance();
+    frame->sonar.assign(16, 1.0 + k);
+    frame->odometry = Pose2{Point2{0.0, 0.0}, 0.1 * k};
+    frame->bumps = k == 2 ? std::vector<BumperHit>{{3, 0.5}} : std::vector<BumperHit>{};
+    EXPECT_EQ(front.at(now), 1.0 + k);
+    EXPECT_EQ(heading.at(now), 0.1 * k);
+    EXPECT_EQ(bumps.at(now).has_value(), k == 2);
+    EXPECT_EQ(sonars(r).at(now).size(), 16u);
+  }
+}
+
+TEST(Robot, AFrameWithTooFewSonarsIsAnErrorNotAStrayRead) {
+  auto frame = std::make_shared<SensorFrame>();
+  frame->sonar.assign(4, 1.0);
+  Robot r(nomadSpec(), std::shared_ptr<const SensorFrame>(frame));
+  Behavior<double> left = leftSonar(r);  // sonar 4 of 16
+  EXPECT_THROW((void)left.at(Clock(0.1).now()), std::out_of_range);
+}
+
+// The core benchmark compares the paper's wall follower in Frob with a hand-written twin; they
+// must compute the same commands, bit for bit, or the comparison means nothing.
+TEST(Robot, TheBenchmarksWallFollowerAgreesWithItsHandWrittenTwin) {
+  auto frame = std::make_shared<SensorFrame>();
+  Robot r(nomadSpec(), std::shared_ptr<const SensorFrame>(frame));
+  Behavior<Wheels> frob = bench::wallFollower(r);
+  bench::HandWritten hand;
+  Clock clock(0.01);
+  for (int k = 0; k < 2000; ++k) {
+    const Instant& now = k == 0 ? clock.now() : clock.advance();
+    bench::fillFrame(*frame, now.step);
+    ASSERT_EQ(frob.at(now), hand.step(*frame, now.time)) << "at step " << k;
+  }
 }
 
 TEST(Robot, WheelsPairsForwardAndTurn) {

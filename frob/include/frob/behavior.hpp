@@ -11,6 +11,7 @@
 #include <tuple>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace frob {
 
@@ -132,21 +133,28 @@ class ConstantNode final : public BehaviorNode<T> {
 };
 
 // One argument of a lifted function: a behavior sampled at the instant, a pointwise expression
-// evaluated in place, or a plain value.
+// evaluated in place, or a plain value. `fresh` is `get` for a node whose inputs a plan has
+// already brought up to date; `inputs` lists the nodes read.
 template <class A>
 struct Arg {
   A value;
   const A& get(const Instant&) const { return value; }
+  const A& fresh(const Instant&) const { return value; }
+  void inputs(std::vector<NodeBase*>&) const {}
 };
 template <class T>
 struct Arg<Behavior<T>> {
   std::shared_ptr<BehaviorNode<T>> node;
   const T& get(const Instant& now) const { return node->at(now); }
+  const T& fresh(const Instant&) const { return node->value(); }
+  void inputs(std::vector<NodeBase*>& out) const { out.push_back(node.get()); }
 };
 template <class R, class F, class... Args>
 struct Arg<Pointwise<R, F, Args...>> {
   Pointwise<R, F, Args...> expr;
   R get(const Instant& now) const { return expr.eval(now); }
+  R fresh(const Instant& now) const { return expr.evalFresh(now); }
+  void inputs(std::vector<NodeBase*>& out) const { expr.inputs(out); }
 };
 
 template <class A>
@@ -160,12 +168,11 @@ Arg<std::remove_cvref_t<A>> makeArg(A&& a) {
 
 // The node a pointwise expression becomes: one node for the whole expression tree.
 template <class R, class Expr>
-class PointwiseNode final : public BehaviorNode<R> {
+class PointwiseNode final : public StrictNode<R, PointwiseNode<R, Expr>> {
  public:
   explicit PointwiseNode(Expr e) : expr_(std::move(e)) {}
-
- protected:
-  R compute(const Instant& now) override { return expr_.eval(now); }
+  R computeFresh(const Instant& now) { return expr_.evalFresh(now); }
+  void strictInputs(std::vector<NodeBase*>& out) const override { expr_.inputs(out); }
 
  private:
   Expr expr_;
@@ -193,6 +200,14 @@ class Pointwise {
   /// The value at instant `now` (evaluated afresh each call; a Behavior memoises it).
   R eval(const Instant& now) const {
     return std::apply([&](const auto&... a) { return R(detail::plain(std::invoke(f_, a.get(now)...))); }, args_);
+  }
+  /// The value at `now` once the nodes it reads are up to date at `now` (for the library's plans).
+  R evalFresh(const Instant& now) const {
+    return std::apply([&](const auto&... a) { return R(detail::plain(std::invoke(f_, a.fresh(now)...))); }, args_);
+  }
+  /// Appends the nodes this expression reads, in the order it reads them (for the library's plans).
+  void inputs(std::vector<detail::NodeBase*>& out) const {
+    std::apply([&](const auto&... a) { (a.inputs(out), ...); }, args_);
   }
   /// This expression as one node of the graph.
   [[nodiscard]] Behavior<R> behavior() const {

@@ -3,18 +3,19 @@
 
 #include "frob/behavior.hpp"
 
+#include <limits>
+
 namespace frob {
 namespace detail {
 
 // Trapezoidal integral from the first sample (where it is zero).
 template <class T>
-class IntegralNode final : public BehaviorNode<T> {
+class IntegralNode final : public StrictNode<T, IntegralNode<T>> {
  public:
   explicit IntegralNode(std::shared_ptr<BehaviorNode<T>> b) : b_(std::move(b)), sum_(zeroOf<T>()) {}
-
- protected:
-  T compute(const Instant& now) override {
-    const T& v = b_->at(now);
+  void strictInputs(std::vector<NodeBase*>& out) const override { out.push_back(b_.get()); }
+  T computeFresh(const Instant& now) {
+    const T& v = b_->value();
     if (started_) sum_ = sum_ + (v + previous_) * (0.5 * (now.time - previousTime_));
     started_ = true;
     previous_ = v;
@@ -32,16 +33,14 @@ class IntegralNode final : public BehaviorNode<T> {
 
 // Backward difference; zero at the first sample.
 template <class T>
-class DerivativeNode final : public BehaviorNode<T> {
+class DerivativeNode final : public StrictNode<T, DerivativeNode<T>> {
  public:
   explicit DerivativeNode(std::shared_ptr<BehaviorNode<T>> b) : b_(std::move(b)) {}
-
- protected:
-  T compute(const Instant& now) override {
-    const T& v = b_->at(now);
+  void strictInputs(std::vector<NodeBase*>& out) const override { out.push_back(b_.get()); }
+  T computeFresh(const Instant& now) {
+    const T& v = b_->value();
     T d = zeroOf<T>();
-    if (started_ && now.time > previousTime_) d = (v - previous_) / (now.time - previousTime_);
-    started_ = true;
+    if (now.time > previousTime_) d = (v - previous_) / (now.time - previousTime_);
     previous_ = v;
     previousTime_ = now.time;
     return d;
@@ -50,21 +49,22 @@ class DerivativeNode final : public BehaviorNode<T> {
  private:
   std::shared_ptr<BehaviorNode<T>> b_;
   T previous_ = zeroOf<T>();
-  double previousTime_ = 0.0;
-  bool started_ = false;
+  double previousTime_ = std::numeric_limits<double>::infinity();  // no difference at the first sample
 };
 
 // The value of `b` when `key` was best so far (smallest, or largest with `wantMax`); earliest wins ties.
 template <class K, class T>
-class AtExtremumNode final : public BehaviorNode<T> {
+class AtExtremumNode final : public StrictNode<T, AtExtremumNode<K, T>> {
  public:
   AtExtremumNode(std::shared_ptr<BehaviorNode<K>> key, std::shared_ptr<BehaviorNode<T>> b, bool wantMax)
       : key_(std::move(key)), b_(std::move(b)), wantMax_(wantMax) {}
-
- protected:
-  T compute(const Instant& now) override {
-    const K& k = key_->at(now);
-    const T& v = b_->at(now);
+  void strictInputs(std::vector<NodeBase*>& out) const override {
+    out.push_back(key_.get());
+    out.push_back(b_.get());
+  }
+  T computeFresh(const Instant&) {
+    const K& k = key_->value();
+    const T& v = b_->value();
     if (!best_ || (wantMax_ ? *bestKey_ < k : k < *bestKey_)) {
       bestKey_ = k;
       best_ = v;

@@ -5,6 +5,7 @@
 #include "frob/event.hpp"
 #include "frob/robot_values.hpp"
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -25,19 +26,59 @@ struct ScriptedSensors {
 };
 
 namespace detail {
-// Reads one field of the robot's frame of the instant (for sonar `index` where it matters).
+// Throws std::out_of_range for a sonar the frame lacks.
+[[noreturn]] void sonarOutOfRange(std::size_t index, std::size_t size);
+
+// Which value of the frame a reading takes.
+enum class FrameSlot : std::uint8_t { sonar, heading, velocity };
+
+// Reads one value of the robot's frame. Inline, not through a function pointer: sensor reads are
+// among the most frequent operations of a controller.
 template <class T>
-struct FrameField {
-  T (*read)(const SensorFrame&, std::size_t index);
-  std::size_t index = 0;
-  T operator()(const SensorFrame* frame) const { return read(*frame, index); }
+struct FrameField;
+template <>
+struct FrameField<double> {
+  FrameSlot slot = FrameSlot::sonar;
+  std::size_t index = 0;  // the sonar, for FrameSlot::sonar
+  double operator()(const SensorFrame* frame) const {
+    if (slot == FrameSlot::sonar) [[likely]] {
+      // A source may give fewer sonars than its spec says: a clear error, not a stray read.
+      const std::vector<double>& ranges = frame->sonar;
+      if (index >= ranges.size()) [[unlikely]] sonarOutOfRange(index, ranges.size());
+      return ranges[index];
+    }
+    return slot == FrameSlot::heading ? frame->odometry.heading : frame->velocity;
+  }
+};
+template <>
+struct FrameField<Point2> {
+  Point2 operator()(const SensorFrame* frame) const { return frame->odometry.position; }
+};
+
+// The robot's frame at an instant, for readings: a frame its owner refreshes in place is read
+// directly (no node, no per-instant check); a FrameSource is fetched once per instant by `node`.
+struct FrameArg {
+  const SensorFrame* const* slot = nullptr;  // node->value(): the frame in place, or this instant's fetch
+  bool fetched = false;                       // whether `node` must fetch it at each instant
+  std::shared_ptr<BehaviorNode<const SensorFrame*>> node;  // holds the frame in `slot`
+  const SensorFrame* get(const Instant& now) const {
+    if (!fetched) [[likely]] return *slot;
+    return fetch(now);
+  }
+  // Out of line, so that a node reading a fixed frame needs no registers saved for the call.
+  [[gnu::noinline]] const SensorFrame* fetch(const Instant& now) const { return node->at(now); }
+  // As for any lifted argument (see Arg): the frame once a plan has fetched it; the node to fetch.
+  const SensorFrame* fresh(const Instant&) const { return *slot; }
+  void inputs(std::vector<NodeBase*>& out) const {
+    if (fetched) out.push_back(node.get());
+  }
 };
 }  // namespace detail
 
 /// A sensor reading: a behavior read straight from the robot's frame of the instant, which is
 /// fetched once per instant however many readings use it. Converts to Behavior<T>.
 template <class T>
-using Reading = Pointwise<T, detail::FrameField<T>, detail::Arg<Behavior<const SensorFrame*>>>;
+using Reading = Pointwise<T, detail::FrameField<T>, detail::FrameArg>;
 
 /// A ring of `count` sonars evenly spaced counter-clockwise from the front (16 on a Nomad 200).
 [[nodiscard]] RobotSpec nomadSpec(int count = 16);
@@ -48,6 +89,9 @@ class Robot {
  public:
   /// A robot of shape `spec` whose sensors read the frames `source` gives.
   Robot(RobotSpec spec, FrameSource source);
+  /// A robot whose sensors read `frame`, which its owner (a simulator, a robot's driver) refreshes
+  /// in place before each step; cheaper than a FrameSource, which is called at every instant.
+  Robot(RobotSpec spec, std::shared_ptr<const SensorFrame> frame);
   /// A robot whose sensors follow `sensors` as functions of time.
   Robot(RobotSpec spec, ScriptedSensors sensors);
 
@@ -73,6 +117,8 @@ class Robot {
   [[nodiscard]] const std::shared_ptr<DebugChannel>& debugChannel() const { return debug_; }
 
  private:
+  Robot(RobotSpec spec, std::shared_ptr<detail::BehaviorNode<const SensorFrame*>> frameNode,
+        bool inPlace);
   struct Sensors;
   std::shared_ptr<const Sensors> sensors_;
   std::shared_ptr<DebugChannel> debug_ = std::make_shared<DebugChannel>();

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <type_traits>
+#include <vector>
 
 namespace frob {
 
@@ -17,13 +18,32 @@ namespace detail {
 
 extern std::atomic<long> liveNodes;
 
-// Counts live nodes; every node derives from it.
+// Counts live nodes; every node derives from it. Holds the instant of the node's value, so that
+// a plan (see StrictNode) can bring nodes of any type up to date.
 class NodeBase {
  public:
   NodeBase() { liveNodes.fetch_add(1, std::memory_order_relaxed); }
   NodeBase(const NodeBase&) = delete;
   NodeBase& operator=(const NodeBase&) = delete;
   virtual ~NodeBase() { liveNodes.fetch_sub(1, std::memory_order_relaxed); }
+
+  // The id of the instant whose value the node holds (0: none yet).
+  [[nodiscard]] std::uint64_t stamp() const { return stamp_; }
+  // Computes the value at `now` and holds it; called only when stamp() != now.id.
+  virtual void refresh(const Instant& now) = 0;
+  // refresh as a plain function, which a plan calls without a virtual dispatch.
+  using Refresher = void (*)(NodeBase&, const Instant&);
+  [[nodiscard]] virtual Refresher refresher() const {
+    return [](NodeBase& n, const Instant& now) { n.refresh(now); };
+  }
+  // True if the node reads the same inputs at every instant (strictInputs lists them).
+  [[nodiscard]] virtual bool strict() const { return false; }
+  // Appends the nodes a strict node reads at every instant, in the order it reads them. Other
+  // nodes (switches, events) read their inputs only sometimes and pull them themselves.
+  virtual void strictInputs(std::vector<NodeBase*>& out) const { (void)out; }
+
+ protected:
+  std::uint64_t stamp_ = 0;
 };
 
 // A behavior node: a value at every instant, computed once per instant after its inputs.
@@ -32,28 +52,85 @@ class BehaviorNode : public NodeBase {
  public:
   const T& at(const Instant& now) {
     if (stamp_ != now.id) {
-      if constexpr (kPlain) {
-        value_ = compute(now);
-      } else {
-        value_.emplace(compute(now));
-      }
+      hold(compute(now));
       stamp_ = now.id;
     }
+    return value();
+  }
+  // The value held: the value at `now` once at(now) or a plan has brought the node up to date.
+  const T& value() const {
     if constexpr (kPlain) {
       return value_;
     } else {
       return *value_;
     }
   }
+  void refresh(const Instant& now) override {
+    hold(compute(now));
+    stamp_ = now.id;
+  }
 
  protected:
   virtual T compute(const Instant& now) = 0;
+  void hold(T&& v) {
+    if constexpr (kPlain) {
+      value_ = std::move(v);
+    } else {
+      value_.emplace(std::move(v));
+    }
+  }
 
  private:
   // Values that can be default-constructed and assigned are kept directly (cheaper per step).
   static constexpr bool kPlain = std::is_default_constructible_v<T> && std::is_move_assignable_v<T>;
-  std::uint64_t stamp_ = 0;
   std::conditional_t<kPlain, T, std::optional<T>> value_{};
+};
+
+// One step of a plan: a node and how to refresh it.
+struct PlanStep {
+  NodeBase* node;
+  NodeBase::Refresher refresh;
+};
+
+// The nodes to bring up to date before `root`, in the order a recursive pull would compute them
+// (inputs before the nodes that read them, each once): `root`'s strict cone, without `root`.
+std::vector<PlanStep> planFor(const NodeBase& root);
+
+// A behavior node that reads the same inputs at every instant (pointwise functions, integral...).
+// Sampled directly, it first runs its plan: one flat pass over its strict cone that computes each
+// stale node once, inputs first, exactly as a recursive pull would, but without a nested call and
+// a memo check for every edge. Within a plan, a strict node reads its inputs' values directly.
+// Derived provides `T computeFresh(const Instant&)`, which may assume its inputs are up to date.
+template <class T, class Derived>
+class StrictNode : public BehaviorNode<T> {
+ public:
+  void refresh(const Instant& now) final {
+    this->hold(static_cast<Derived*>(this)->computeFresh(now));
+    this->stamp_ = now.id;
+  }
+  [[nodiscard]] bool strict() const final { return true; }
+  [[nodiscard]] NodeBase::Refresher refresher() const final {
+    return [](NodeBase& n, const Instant& now) { static_cast<StrictNode&>(n).refresh(now); };
+  }
+
+ protected:
+  T compute(const Instant& now) final {
+    if (!planned_) [[unlikely]] plan();
+    const std::uint64_t id = now.id;  // a local, so that it stays in a register across the calls
+    for (const PlanStep& step : plan_) {
+      if (step.node->stamp() != id) step.refresh(*step.node, now);
+    }
+    return static_cast<Derived*>(this)->computeFresh(now);
+  }
+
+ private:
+  // At the first sample, not at creation, so that building a graph stays cheap.
+  [[gnu::noinline]] void plan() {
+    plan_ = planFor(*this);
+    planned_ = true;
+  }
+  std::vector<PlanStep> plan_;  // nodes owned by this node's inputs, which it keeps alive
+  bool planned_ = false;
 };
 
 // An event node: at each instant, at most one occurrence carrying a T.
@@ -67,12 +144,15 @@ class EventNode : public NodeBase {
     }
     return occurrence_;
   }
+  void refresh(const Instant& now) override {
+    occurrence_ = compute(now);
+    stamp_ = now.id;
+  }
 
  protected:
   virtual std::optional<T> compute(const Instant& now) = 0;
 
  private:
-  std::uint64_t stamp_ = 0;
   std::optional<T> occurrence_;
 };
 
