@@ -30,9 +30,9 @@ Run::Run(const WorldDef& world, const SimOptions& options, const std::vector<Con
               "Run: give one controller per robot, or one for all robots");
   wheels_.resize(n);
   pictures_.resize(n);
+  // Each robot reads its frame where the simulation refreshes it (the simulation outlives the robots).
   for (std::size_t i = 0; i < n; ++i) {
-    Simulation* sim = sim_.get();
-    robots_.emplace_back(sim_->spec(i), [sim, i](const Instant&) -> const SensorFrame& { return sim->frame(i); });
+    robots_.emplace_back(sim_->spec(i), std::shared_ptr<const SensorFrame>(std::shared_ptr<void>(), &sim_->frame(i)));
   }
   for (std::size_t i = 0; i < n; ++i) {
     const Controller& make = controllers.size() == 1 ? controllers.front() : controllers[i];

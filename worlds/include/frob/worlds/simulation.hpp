@@ -46,6 +46,7 @@ class Simulation {
   /// Reads every robot's sensors at the current instant into frame(i). Calling it twice is harmless.
   void sense();
   /// What robot `i` sensed at the last sense(): sonar, odometry, speeds, bumps and keys of this step.
+  /// Refreshed in place: its address holds for the simulation's life.
   [[nodiscard]] const SensorFrame& frame(std::size_t i) const;
   /// Applies one command per robot (wheels.size() == robotCount()), then advances physics by dt.
   /// Non-finite commands are replaced by a stop and counted in invalidCommands(i).
