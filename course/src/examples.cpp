@@ -28,8 +28,14 @@ std::optional<Example> findExample(std::string_view name) {
 }
 
 Result<LoadedController> loadExample(const Example& example) {
-  if (fs::exists(example.module)) return loadControllerModule(example.module, example.source.string());
-  return loadControllerFile(example.source);
+  // Named as people would type it from where they are, e.g. course/examples/06_bug.cpp.
+  std::error_code ec;
+  const fs::path source = fs::proximate(example.source, ec);
+  // A module older than its source (edited since the build) is compiled afresh, like a student's file.
+  if (fs::exists(example.module) && fs::last_write_time(example.module, ec) >= fs::last_write_time(example.source, ec)) {
+    return loadControllerModule(example.module, source.string());
+  }
+  return loadControllerFile(source);
 }
 
 }  // namespace frob::course

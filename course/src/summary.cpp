@@ -26,7 +26,7 @@ std::string taskLine(const TaskRecord& t) {
 
 std::string formatSummary(const Summary& s, double wallSeconds) {
   std::string text = "world " + s.world + ", seed " + std::to_string(s.seed) + format(", dt %g s: %.2f s simulated", s.dt, s.simulatedSeconds);
-  if (wallSeconds > 0) text += format(" in %.2f s wall (%.0fx real time)", wallSeconds, s.simulatedSeconds / wallSeconds);
+  if (wallSeconds > 0) text += format(" in %.3g s wall (%.0fx real time)", wallSeconds, s.simulatedSeconds / wallSeconds);
   text += "\n";
   for (const RobotSummary& r : s.robots) {
     text += "  " + r.name + ": " + r.controller + "\n";
