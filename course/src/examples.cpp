@@ -28,9 +28,11 @@ std::optional<Example> findExample(std::string_view name) {
 }
 
 Result<LoadedController> loadExample(const Example& example) {
-  // Named as people would type it from where they are, e.g. course/examples/06_bug.cpp.
+  // Named as people would type it from where they are (course/examples/06_bug.cpp from the
+  // repository's root), or in full from elsewhere.
   std::error_code ec;
-  const fs::path source = fs::proximate(example.source, ec);
+  fs::path source = fs::proximate(example.source, ec);
+  if (ec || source.empty() || *source.begin() == "..") source = example.source;
   // A module older than its source (edited since the build) is compiled afresh, like a student's file.
   if (fs::exists(example.module) && fs::last_write_time(example.module, ec) >= fs::last_write_time(example.source, ec)) {
     return loadControllerModule(example.module, source.string());

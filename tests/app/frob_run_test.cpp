@@ -51,6 +51,15 @@ TEST(FrobRun, GoodControllerWritesEveryOutputWhole) {
   EXPECT_EQ(filesIn(dir / "frames").size(), 60u);                 // 2 s at 30 fps
 }
 
+TEST(FrobRun, WithoutAControllerTheDemoWritesAVideo) {
+  const fs::path dir = freshFolder("demo");
+  const FrobResult r = runFrob(dir, {"run", "--seconds", "2"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("bug: bugToGoal (" FROB_EXAMPLES_DIR "/06_bug.cpp)"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("frob: now watch bug.mp4"), std::string::npos) << r.err;
+  EXPECT_EQ(filesIn(dir), std::vector<std::string>{"bug.mp4"});
+}
+
 TEST(FrobRun, SameSeedSameTrace) {
   const fs::path dir = freshFolder("same_seed");
   write(dir, "slow.cpp", controller("0.2"));
