@@ -50,14 +50,19 @@ TEST(Behavior, MathFunctionsArePointwise) {
   EXPECT_DOUBLE_EQ(sample(wrapAngle(constant(3 * pi / 2)), 1.0, 1)[0], wrapAngle(3 * pi / 2));
 }
 
-TEST(Behavior, GlitchFreedomEvaluatesASharedNodeOncePerInstant) {
-  int evaluations = 0;
-  Behavior<double> counted = lift(
+// time(), counting its evaluations in `evaluations`.
+Behavior<double> countedTime(int& evaluations) {
+  return lift(
       [&evaluations](double t) {
         ++evaluations;
         return t;
       },
       time());
+}
+
+TEST(Behavior, GlitchFreedomEvaluatesASharedNodeOncePerInstant) {
+  int evaluations = 0;
+  Behavior<double> counted = countedTime(evaluations);
   Behavior<double> diamond = counted + counted;  // two paths to one node
   Behavior<double> deeper = diamond * counted - counted;
   std::vector<double> s = sample(deeper, 1.0, 5);
@@ -69,12 +74,7 @@ TEST(Behavior, GlitchFreedomEvaluatesASharedNodeOncePerInstant) {
 // two graphs sampled in either order, or sampled on its own, is still evaluated once per instant.
 TEST(Behavior, ANodeSharedBetweenGraphsIsEvaluatedOncePerInstant) {
   int evaluations = 0;
-  Behavior<double> counted = lift(
-      [&evaluations](double t) {
-        ++evaluations;
-        return t;
-      },
-      time());
+  Behavior<double> counted = countedTime(evaluations);
   Behavior<double> area = integral(counted);
   Behavior<double> a = area + counted * 2.0;
   Behavior<double> b = area - counted;
