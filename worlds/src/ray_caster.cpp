@@ -77,7 +77,6 @@ RayCaster::RayCaster(const std::vector<WallDef>& walls, const Point2& lo, const 
       pillarStart_, cellPillars_);
   robotSpan_.assign(cells, Span{});
   x1_ = x0_ + nx_ * cell_, y1_ = y0_ + ny_ * cell_;
-  buildNear(segs, circles);
 }
 
 void RayCaster::cellRange(double ax, double ay, double bx, double by, int& i0, int& j0, int& i1, int& j1) const {
@@ -148,17 +147,11 @@ inline void hitCircle(double cx, double cy, double r, double ox, double oy, doub
 
 }  // namespace
 
-namespace {
-
-// A ray against runs of segments, pillars and robots (of a grid cell or a near set); updates `best`.
-template <class S, class C, class R>
-[[gnu::always_inline]] inline void testItems(const S* seg, const S* segEnd, const C* pil, const C* pilEnd, const R* rob,
-                                             const R* robEnd, double ox, double oy, double ux, double uy, int self,
-                                             RayHit& best) {
-  for (; seg < segEnd; ++seg) {
+[[gnu::always_inline]] inline void RayCaster::testCell(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const {
+  for (std::uint32_t k = segStart_[cell], end = segStart_[cell + 1]; k < end; ++k) {
     // Ray o + t u against segment a + v d: t = tn / denom, v = vn / denom. Compared without
     // dividing (the sign of denom folded in) so that only an accepted hit costs a division.
-    const S& s = *seg;
+    const Seg& s = cellSegs_[k];
     double denom = ux * s.dy - uy * s.dx;  // cross(u, d); 0 when parallel: an edge-on wall is never heard
     const double wx = s.ax - ox, wy = s.ay - oy;
     double tn = wx * s.dy - wy * s.dx;
@@ -168,26 +161,15 @@ template <class S, class C, class R>
     if (!((tn >= 0.0) & (vn >= 0.0) & (vn <= denom) & (tn < best.distance * denom))) continue;
     best = {tn / denom, std::abs(ux * s.nx + uy * s.ny)};
   }
-  for (; pil < pilEnd; ++pil) hitCircle(pil->cx, pil->cy, pil->r, ox, oy, ux, uy, best);
-  for (; rob < robEnd; ++rob)
-    if (rob->index != self) hitCircle(rob->cx, rob->cy, rob->r, ox, oy, ux, uy, best);
-}
-
-}  // namespace
-
-[[gnu::always_inline]] inline void RayCaster::testCell(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const {
+  for (std::uint32_t k = pillarStart_[cell], end = pillarStart_[cell + 1]; k < end; ++k) {
+    const Circle& c = cellPillars_[k];
+    hitCircle(c.cx, c.cy, c.r, ox, oy, ux, uy, best);
+  }
   const Span robots = robotSpan_[cell];
-  testItems(cellSegs_.data() + segStart_[cell], cellSegs_.data() + segStart_[cell + 1],
-            cellPillars_.data() + pillarStart_[cell], cellPillars_.data() + pillarStart_[cell + 1],
-            cellRobots_.data() + robots.begin, cellRobots_.data() + robots.end, ox, oy, ux, uy, self, best);
-}
-
-void RayCaster::testNear(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const {
-  testNearWalls(cell, ox, oy, ux, uy, best);
-  const Robot* none = robots_.data();  // the near set serves a lone robot, which never sees itself
-  testItems(nearSegs_.data(), nearSegs_.data(),
-            nearPillars_.data() + nearPillarStart_[cell], nearPillars_.data() + nearPillarStart_[cell + 1],
-            none, none, ox, oy, ux, uy, self, best);
+  for (std::uint32_t k = robots.begin; k < robots.end; ++k) {
+    const Robot& c = cellRobots_[k];
+    if (c.index != self) hitCircle(c.cx, c.cy, c.r, ox, oy, ux, uy, best);
+  }
 }
 
 [[gnu::always_inline]] inline void RayCaster::walk(int i, int j, double bx0, double bx1, double by0, double by1, double ox,
@@ -265,40 +247,25 @@ double RayCaster::castCone(const Point2& origin, std::span<const Vec2> dirs, dou
     }
     return nearest;
   }
-  // The origin's near set, shared by every ray of the cone. Only for a lone robot: among many,
-  // gathering the robots near each cone cost more than the near set saved (measured).
-  const int near = robots_.size() > 1 || nearRange_ <= 0.0 ? -1 : nearCellOf(ox, oy);
+  // What cast() computes per ray from the origin alone (tmin = 0 inside the grid), done once.
+  const double px = (ox - x0_) * inv_, py = (oy - y0_) * inv_;
+  const int i = std::min(std::max(static_cast<int>(px), 0), nx_ - 1);
+  const int j = std::min(std::max(static_cast<int>(py), 0), ny_ - 1);
+  const double bx0 = x0_ + i * cell_ - ox, bx1 = x0_ + (i + 1) * cell_ - ox;
+  const double by0 = y0_ + j * cell_ - oy, by1 = y0_ + (j + 1) * cell_ - oy;
   // Four rays at a time, then the rest one by one, each bounded by the nearest echo so far. The
   // reading is the minimum over the rays, so the order does not change it.
   const std::size_t fans = dirs.size() / 4 * 4;
   for (std::size_t k = 0; k < fans; k += 4) {
     const double ux[4] = {dirs[k].x(), dirs[k + 1].x(), dirs[k + 2].x(), dirs[k + 3].x()};
     const double uy[4] = {dirs[k].y(), dirs[k + 1].y(), dirs[k + 2].y(), dirs[k + 3].y()};
-    nearest = castFan(ox, oy, ux, uy, nearest, self, cosCutoff, near);
+    nearest = castFan(ox, oy, ux, uy, nearest, self, cosCutoff);
   }
   for (const Vec2& d : dirs.subspan(fans)) {
     const double ux = d.x(), uy = d.y();
     RayHit best{nearest, 1.0};
     testOutside(ox, oy, ux, uy, self, best);
-    // Past the near set, walk the grid from the origin, or when nothing lay within nearRange_ (the
-    // near set would hold it) from a little before it, so that rounding can put the start in the
-    // cell before but never skip one; a start outside the grid means the ray has left it for good.
-    double start = 0.0;
-    if (near >= 0) {
-      testNear(near, ox, oy, ux, uy, self, best);
-      if (best.distance <= nearRange_) start = -1.0;
-      else start = nearRange_ - 1e-6;
-    }
-    if (start >= 0.0) {
-      const double px = (ox + start * ux - x0_) * inv_, py = (oy + start * uy - y0_) * inv_;
-      constexpr double eps = 1e-9;  // cells; the origin itself lies in the box up to rounding
-      if (start == 0.0 || (px >= -eps && py >= -eps && px <= nx_ + eps && py <= ny_ + eps)) {
-        const int si = std::min(std::max(static_cast<int>(px), 0), nx_ - 1);
-        const int sj = std::min(std::max(static_cast<int>(py), 0), ny_ - 1);
-        walk(si, sj, x0_ + si * cell_ - ox, x0_ + (si + 1) * cell_ - ox, y0_ + sj * cell_ - oy,
-             y0_ + (sj + 1) * cell_ - oy, ox, oy, ux, uy, nearest, self, best);
-      }
-    }
+    walk(i, j, bx0, bx1, by0, by1, ox, oy, ux, uy, nearest, self, best);
     // As cast() then min(): a ray that met nothing nearer leaves `nearest` as it is.
     if (best.distance < nearest && best.cosIncidence >= cosCutoff) nearest = best.distance;
   }

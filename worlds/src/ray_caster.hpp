@@ -59,16 +59,9 @@ class RayCaster {
             double uy, double tmax, int self, RayHit& best) const;
   void testOutside(double ox, double oy, double ux, double uy, int self, RayHit& best) const;
   void testCell(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const;
-  // Near sets (ray_near.cpp): per cell of a finer grid, every wall within nearRange_ of the cell, so
-  // a ray from the cell whose nearest near-set hit lies within nearRange_ needs no grid walk.
-  void buildNear(const std::vector<Seg>& segs, const std::vector<Circle>& circles);
-  [[nodiscard]] int nearCellOf(double ox, double oy) const;
-  void testNear(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const;
-  // One ray against a near set's walls four at a time (ray_fan.cpp, for AVX2 or plain x86-64).
-  void testNearWalls(int cell, double ox, double oy, double ux, double uy, RayHit& best) const;
   // Four rays of one cone at once (ray_fan.cpp): the nearest echo below `cap`, else `cap`.
   double castFan(double ox, double oy, const double* ux, const double* uy, double cap, int self,
-                 double cosCutoff, int near) const;
+                 double cosCutoff) const;
   friend struct FanCaster;  // ray_fan.cpp: castFan's body, compiled for AVX2 and for plain x86-64
 
   std::size_t segmentCount_ = 0;
@@ -83,19 +76,6 @@ class RayCaster {
   std::vector<int> touched_;      // cells whose robotSpan_ is set
   double x0_ = 0, y0_ = 0, x1_ = 1, y1_ = 1, cell_ = 1, inv_ = 1;  // grid box [x0_, x1_] x [y0_, y1_]
   int nx_ = 1, ny_ = 1;
-  // The near grid: the same box, cells of nearCell_; as above, walls by value.
-  std::vector<std::uint32_t> nearSegStart_, nearPillarStart_;
-  std::vector<Seg> nearSegs_;
-  // The same walls four to a block, a coordinate per array, for one ray to test four at once; a
-  // cell's last block is padded with NaN walls, which never hit.
-  struct SegBlock {
-    alignas(32) double ax[4], ay[4], dx[4], dy[4], nx[4], ny[4];
-  };
-  std::vector<SegBlock> nearBlocks_;
-  std::vector<std::uint32_t> nearBlockStart_;
-  std::vector<Circle> nearPillars_;
-  double nearCell_ = 1, nearInv_ = 1, nearRange_ = 0;  // nearRange_ 0: no near sets
-  int nearNx_ = 1, nearNy_ = 1;
 };
 
 }  // namespace frob::worlds::detail

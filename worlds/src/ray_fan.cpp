@@ -67,16 +67,12 @@ struct FanCaster {
   using Seg = RayCaster::Seg;
   using Span = RayCaster::Span;
   using Robot = RayCaster::Robot;
-  using Circle = RayCaster::Circle;
 
-  // Runs of segments, pillars and robots (of a grid cell or a near set) against the fan.
-  [[gnu::always_inline]] static void testItems(const Seg* seg, const Seg* segEnd, const Circle* pil,
-                                               const Circle* pilEnd, const Robot* rob, const Robot* robEnd,
-                                               Fan& f, int self) {
+  [[gnu::always_inline]] static void testCell(const RayCaster& g, int cell, Fan& f, int self) {
     const M sign = M{kSign, kSign, kSign, kSign};
-    for (; seg < segEnd; ++seg) {
+    for (std::uint32_t k = g.segStart_[cell], end = g.segStart_[cell + 1]; k < end; ++k) {
       // As testCell(): the sign of denom folded in (an exact sign flip), then compared without dividing.
-      const Seg& s = *seg;
+      const Seg& s = g.cellSegs_[k];
       const V denomRaw = f.ux * s.dy - f.uy * s.dx;
       const double wx = s.ax - f.ox, wy = s.ay - f.oy;
       const double tn = wx * s.dy - wy * s.dx;  // the same for every ray of the fan
@@ -90,52 +86,14 @@ struct FanCaster {
       f.best = select(hit, tns / denom, f.best);
       f.cos = select(hit, fromBits(bitsOf(cosI) & ~sign), f.cos);
     }
-    for (; pil < pilEnd; ++pil) fanCircle(pil->cx, pil->cy, pil->r, f);
-    for (; rob < robEnd; ++rob)
-      if (rob->index != self) fanCircle(rob->cx, rob->cy, rob->r, f);
-  }
-
-  [[gnu::always_inline]] static void testCell(const RayCaster& g, int cell, Fan& f, int self) {
+    for (std::uint32_t k = g.pillarStart_[cell], end = g.pillarStart_[cell + 1]; k < end; ++k)
+      fanCircle(g.cellPillars_[k].cx, g.cellPillars_[k].cy, g.cellPillars_[k].r, f);
     const Span robots = g.robotSpan_[cell];
-    testItems(g.cellSegs_.data() + g.segStart_[cell], g.cellSegs_.data() + g.segStart_[cell + 1],
-              g.cellPillars_.data() + g.pillarStart_[cell], g.cellPillars_.data() + g.pillarStart_[cell + 1],
-              g.cellRobots_.data() + robots.begin, g.cellRobots_.data() + robots.end, f, self);
-  }
-
-  [[gnu::always_inline]] static void testNear(const RayCaster& g, int cell, Fan& f, int self) {
-    const Robot* none = g.robots_.data();  // the near set serves a lone robot, which never sees itself
-    testItems(g.nearSegs_.data() + g.nearSegStart_[cell], g.nearSegs_.data() + g.nearSegStart_[cell + 1],
-              g.nearPillars_.data() + g.nearPillarStart_[cell], g.nearPillars_.data() + g.nearPillarStart_[cell + 1],
-              none, none, f, self);
-  }
-
-  // One ray against four walls at a time: per lane the arithmetic of testItems() in ray_caster.cpp,
-  // and hits taken lane by lane in the walls' order, so the result is the sequential one.
-  [[gnu::always_inline]] static void testBlocks(const RayCaster& g, int cell, double ox, double oy, double ux,
-                                                double uy, RayHit& best) {
-    const M sign = M{kSign, kSign, kSign, kSign};
-    auto load = [](const double* p) { return V{p[0], p[1], p[2], p[3]}; };
-    for (std::uint32_t k = g.nearBlockStart_[cell], end = g.nearBlockStart_[cell + 1]; k < end; ++k) {
-      const RayCaster::SegBlock& b = g.nearBlocks_[k];
-      const V dx = load(b.dx), dy = load(b.dy);
-      const V denomRaw = ux * dy - uy * dx;
-      const V wx = load(b.ax) - ox, wy = load(b.ay) - oy;
-      const V tnRaw = wx * dy - wy * dx;
-      const V vnRaw = wx * uy - wy * ux;
-      const M flip = bitsOf(denomRaw) & sign;
-      const V denom = fromBits(bitsOf(denomRaw) ^ flip), tn = fromBits(bitsOf(tnRaw) ^ flip),
-              vn = fromBits(bitsOf(vnRaw) ^ flip);
-      const M hit = (tn >= 0.0) & (vn >= 0.0) & (vn <= denom) & (tn < best.distance * denom);
-      if (!any(hit)) continue;
-      for (int l = 0; l < 4; ++l)
-        if (hit[l] && tn[l] < best.distance * denom[l]) best = {tn[l] / denom[l], std::abs(ux * b.nx[l] + uy * b.ny[l])};
+    for (std::uint32_t k = robots.begin; k < robots.end; ++k) {
+      const Robot& c = g.cellRobots_[k];
+      if (c.index != self) fanCircle(c.cx, c.cy, c.r, f);
     }
   }
-
-  static double castAvx2(const RayCaster& g, double ox, double oy, const double* ux, const double* uy, double cap,
-                         int self, double cosCutoff, int near);
-  static double castBaseline(const RayCaster& g, double ox, double oy, const double* ux, const double* uy,
-                             double cap, int self, double cosCutoff, int near);
 
   // As RayCaster::cellRange() for one axis: the cells of [lo, hi], padded by a little, clamped.
   [[gnu::always_inline]] static void cells(double lo, double hi, double origin, double inv, int n, int& c0, int& c1) {
@@ -147,27 +105,14 @@ struct FanCaster {
   }
 
   [[gnu::always_inline]] static double cast(const RayCaster& g, double ox, double oy, const double* ux,
-                                            const double* uy, double cap, int self, double cosCutoff, int near) {
+                                            const double* uy, double cap, int self, double cosCutoff) {
     Fan f{ox, oy, V{ux[0], ux[1], ux[2], ux[3]}, V{uy[0], uy[1], uy[2], uy[3]}, splat(cap), splat(1.0)};
     for (int k : g.outside_)
       if (k != self) fanCircle(g.robots_[k].cx, g.robots_[k].cy, g.robots_[k].r, f);
     double nearest = cap;  // the nearest echo of the lanes found final so far
     M live = M{-1, -1, -1, -1};
-    // The near set first (ray_near.cpp): a lane whose nearest hit there is within its reach is final.
-    // near < 0: no near set for this cone (robots about); the sweep starts at the origin.
-    double d0 = 0.0;
-    if (near >= 0) {
-      testNear(g, near, f, self);
-      const M close = f.best <= g.nearRange_;
-      for (int k = 0; k < 4; ++k)
-        if (close[k] && f.best[k] < nearest && f.cos[k] >= cosCutoff) nearest = f.best[k];
-      live &= ~close;
-      // The live lanes met nothing within nearRange_ (else the near set would hold it), so their
-      // sweep starts there: a surface they meet later lies in a cell of a later band.
-      d0 = g.nearRange_;
-    }
     int pi0 = 1, pj0 = 1, pi1 = 0, pj1 = 0;  // the cells of the previous band, already tested
-    while (any(live) && d0 < nearest) {
+    for (double d0 = 0.0; any(live) && d0 < nearest;) {
       const double d1 = std::min(d0 + g.cell_, nearest);
       // The live rays' pieces over [d0, d1] lie in the box of their end points.
       const V xa = ox + d0 * f.ux, xb = ox + d1 * f.ux, ya = oy + d0 * f.uy, yb = oy + d1 * f.uy;
@@ -197,24 +142,16 @@ struct FanCaster {
   }
 };
 
-// Both builds give bit-identical results: the same IEEE operations, no fused multiply-adds.
-[[gnu::target("avx2")]] double FanCaster::castAvx2(const RayCaster& g, double ox, double oy, const double* ux,
-                                        const double* uy, double cap, int self, double cosCutoff, int near) {
-  return FanCaster::cast(g, ox, oy, ux, uy, cap, self, cosCutoff, near);
-}
-double FanCaster::castBaseline(const RayCaster& g, double ox, double oy, const double* ux, const double* uy, double cap,
-                    int self, double cosCutoff, int near) {
-  return FanCaster::cast(g, ox, oy, ux, uy, cap, self, cosCutoff, near);
-}
-
 namespace {
 
-[[gnu::target("avx2")]] void blocksAvx2(const RayCaster& g, int cell, double ox, double oy, double ux, double uy,
-                                         RayHit& best) {
-  FanCaster::testBlocks(g, cell, ox, oy, ux, uy, best);
+// Both builds give bit-identical results: the same IEEE operations, no fused multiply-adds.
+[[gnu::target("avx2")]] double castAvx2(const RayCaster& g, double ox, double oy, const double* ux,
+                                        const double* uy, double cap, int self, double cosCutoff) {
+  return FanCaster::cast(g, ox, oy, ux, uy, cap, self, cosCutoff);
 }
-void blocksBaseline(const RayCaster& g, int cell, double ox, double oy, double ux, double uy, RayHit& best) {
-  FanCaster::testBlocks(g, cell, ox, oy, ux, uy, best);
+double castBaseline(const RayCaster& g, double ox, double oy, const double* ux, const double* uy, double cap,
+                    int self, double cosCutoff) {
+  return FanCaster::cast(g, ox, oy, ux, uy, cap, self, cosCutoff);
 }
 std::atomic<bool> avx2 = [] {
   __builtin_cpu_init();  // may run before the runtime's own initialisation
@@ -224,13 +161,8 @@ std::atomic<bool> avx2 = [] {
 }  // namespace
 
 double RayCaster::castFan(double ox, double oy, const double* ux, const double* uy, double cap, int self,
-                          double cosCutoff, int near) const {
-  return (avx2.load(std::memory_order_relaxed) ? FanCaster::castAvx2 : FanCaster::castBaseline)(*this, ox, oy, ux, uy, cap, self, cosCutoff,
-                                                                           near);
-}
-
-void RayCaster::testNearWalls(int cell, double ox, double oy, double ux, double uy, RayHit& best) const {
-  (avx2.load(std::memory_order_relaxed) ? blocksAvx2 : blocksBaseline)(*this, cell, ox, oy, ux, uy, best);
+                          double cosCutoff) const {
+  return (avx2.load(std::memory_order_relaxed) ? castAvx2 : castBaseline)(*this, ox, oy, ux, uy, cap, self, cosCutoff);
 }
 
 bool useAvx2(bool on) {
