@@ -60,6 +60,21 @@ TEST(FrobRun, WithoutAControllerTheDemoWritesAVideo) {
   EXPECT_EQ(filesIn(dir), std::vector<std::string>{"bug.mp4"});
 }
 
+// The README's five-minute tutorial, as a newcomer copies it: it compiles, runs, and wanders
+// the room for its minute without touching a wall.
+TEST(FrobRun, TheReadmeTutorialWorks) {
+  const std::string readme = readFile(FROB_SOURCE_DIR "/README.md");
+  const std::size_t intro = readme.find("Save this as `wander.cpp`");
+  ASSERT_NE(intro, std::string::npos);
+  const std::size_t from = readme.find("```cpp\n", intro) + 7, to = readme.find("```", from);
+  const fs::path dir = freshFolder("readme");
+  write(dir, "wander.cpp", readme.substr(from, to - from));
+  const FrobResult r = runFrob(dir, {"run", "wander.cpp", "--quiet"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("60.00 s simulated"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("collisions 0"), std::string::npos) << r.out;
+}
+
 TEST(FrobRun, SameSeedSameTrace) {
   const fs::path dir = freshFolder("same_seed");
   write(dir, "slow.cpp", controller("0.2"));
