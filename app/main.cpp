@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -127,10 +128,18 @@ int runCommand(RunArgs a) {
   bar.finish();
   if (!summary) return fail(summary.error());
   if (a.json) std::cout << course::summaryJson(summary.value(), wall);
-  for (const course::RobotSummary& r : summary.value().robots) {
-    if (!r.failure.empty()) return fail("the controller failed: " + r.failure + "; no output files were written");
+  const course::Summary& sum = summary.value();
+  for (const course::RobotSummary& r : sum.robots) {
+    if (r.failure.empty()) continue;
+    // The run up to just before the failure can be written whole: say how.
+    const double before = std::floor((sum.simulatedSeconds - 1.5 * sum.dt) * 100.0) / 100.0;
+    const course::RunOutputs& o = a.outputs;
+    const bool outputs = !(o.video.empty() && o.frames.empty() && o.plot.empty() && o.trace.empty() && o.timeline.empty());
+    char hint[96] = "";
+    if (outputs && before > 0.0) std::snprintf(hint, sizeof hint, " (--seconds %.2f keeps the run up to the failure)", before);
+    return fail("the controller failed: " + r.failure + "; no output files were written" + hint);
   }
-  if (!a.json) std::cout << course::formatSummary(summary.value(), wall);
+  if (!a.json) std::cout << course::formatSummary(sum, wall);
   if (demo && !a.quiet && !a.outputs.video.empty()) std::fprintf(stderr, "frob: now watch %s\n", a.outputs.video.c_str());
   return 0;
 }

@@ -114,17 +114,18 @@ TEST(FrobRun, CompileErrorShowsTheCompilerThenOneLine) {
   EXPECT_EQ(filesIn(dir), std::vector<std::string>{"broken.cpp"});
 }
 
-// Each way a controller misbehaves: exit 1, one line on stderr, no output files at all.
-void expectCleanFailure(const std::string& name, const std::string& file, const std::string& message) {
+// Each way a controller misbehaves: exit 1, one line on stderr, no output files at all; returns the line.
+std::string expectCleanFailure(const std::string& name, const std::string& file, const std::string& message) {
   const fs::path dir = freshFolder(name);
   write(dir, name + ".cpp", file);
   const FrobResult r = runFrob(dir, with({"run", name + ".cpp", "--quiet"}, kAllOutputs));
   EXPECT_EQ(r.status, 1);
-  ASSERT_EQ(lines(r.err).size(), 1u) << r.err;
+  EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
   EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("no output files were written"), std::string::npos) << r.err;
   EXPECT_EQ(r.out, "");
   EXPECT_EQ(filesIn(dir), std::vector<std::string>{name + ".cpp"});
+  return r.err;
 }
 
 TEST(FrobRun, ControllerThatThrows) {
@@ -135,8 +136,11 @@ TEST(FrobRun, ControllerThatThrows) {
 }
 
 TEST(FrobRun, ControllerThatGivesNaN) {
-  expectCleanFailure("nan", controller("lift([](double t) { return t > 1.0 ? std::nan(\"\") : 0.1; }, time())", "#include <cmath>\n"),
+  // NaN from t = 1.01 s: the message says how to keep the run up to then.
+  const std::string err = expectCleanFailure("nan", controller("lift([](double t) { return t > 1.0 ? std::nan(\"\") : 0.1; }, time())", "#include <cmath>\n"),
                      "non-finite wheels");
+  EXPECT_NE(err.find("at t = 1.010 s; no output files were written (--seconds 1.00 keeps the run up to the failure)"),
+            std::string::npos) << err;
 }
 
 TEST(FrobRun, FileWithoutControllerLine) {
