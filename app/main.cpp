@@ -94,8 +94,7 @@ int runCommand(RunArgs a) {
   const bool demo = a.controllers.empty();
   if (demo) {
     a.controllers.push_back("bug");
-    const course::RunOutputs& o = a.outputs;
-    if (o.video.empty() && o.frames.empty() && o.plot.empty() && o.trace.empty() && o.timeline.empty()) a.outputs.video = "bug.mp4";
+    if (a.outputs.empty()) a.outputs.video = "bug.mp4";
     if (!a.quiet) std::fprintf(stderr, "frob: no controller given, so here is the demo: the paper's BUG algorithm (course/examples/06_bug.cpp)\n");
   }
   // The demo's video plays 4 times faster than the robot drives: two minutes of BUG in half a minute.
@@ -133,10 +132,8 @@ int runCommand(RunArgs a) {
     if (r.failure.empty()) continue;
     // The run up to just before the failure can be written whole: say how.
     const double before = std::floor((sum.simulatedSeconds - 1.5 * sum.dt) * 100.0) / 100.0;
-    const course::RunOutputs& o = a.outputs;
-    const bool outputs = !(o.video.empty() && o.frames.empty() && o.plot.empty() && o.trace.empty() && o.timeline.empty());
     char hint[96] = "";
-    if (outputs && before > 0.0) std::snprintf(hint, sizeof hint, " (--seconds %.2f keeps the run up to the failure)", before);
+    if (!a.outputs.empty() && before > 0.0) std::snprintf(hint, sizeof hint, " (--seconds %.2f keeps the run up to the failure)", before);
     return fail("the controller failed: " + r.failure + "; no output files were written" + hint);
   }
   if (!a.json) std::cout << course::formatSummary(sum, wall);

@@ -3,6 +3,7 @@
 #include "controller_setup.inc"
 
 #include <algorithm>
+#include <cctype>
 
 namespace frob::course {
 
@@ -13,7 +14,8 @@ std::vector<Example> examples() {
   std::error_code ec;
   for (const fs::directory_entry& e : fs::directory_iterator(FROB_EXAMPLES_SOURCE_DIR, ec)) {
     const std::string stem = e.path().stem().string();
-    if (e.path().extension() != ".cpp" || stem.size() < 4 || !std::isdigit(stem[0]) || !std::isdigit(stem[1])) continue;
+    if (e.path().extension() != ".cpp" || stem.size() < 4 || !std::isdigit(static_cast<unsigned char>(stem[0])) ||
+        !std::isdigit(static_cast<unsigned char>(stem[1]))) continue;
     list.push_back({stem, e.path(), fs::path(FROB_EXAMPLES_MODULE_DIR) / (stem + ".so")});
   }
   std::sort(list.begin(), list.end(), [](const Example& a, const Example& b) { return a.name < b.name; });

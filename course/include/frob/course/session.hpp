@@ -27,6 +27,8 @@ struct RunOutputs {
   std::string plot;      ///< PNG of the plotted signals over the whole run
   std::string trace;     ///< CSV, one row per robot per step: poses, wheels, sonars, bumper, current task
   std::string timeline;  ///< task timeline as Chrome/Perfetto trace-event JSON
+  /// True when no file is asked for.
+  [[nodiscard]] bool empty() const { return video.empty() && frames.empty() && plot.empty() && trace.empty() && timeline.empty(); }
 };
 
 /// A run to make. Fill with designated initializers.

@@ -7,7 +7,6 @@
 #include "frob/worlds/recorder.hpp"
 #include "frob/worlds/simulation.hpp"
 
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
