@@ -19,6 +19,8 @@ constexpr int kPositionIterations = 3;
 // threads; odometry costs well under 1 us a robot, so it is split only among many robots.
 constexpr std::size_t kSenseGrain = 4;
 constexpr std::size_t kOdometryGrain = 256;
+// Continuous collision is on when a robot can cover more than this part of its radius in a step.
+constexpr double kTunnelFraction = 0.25;
 
 // One robot's state apart from its Box2D body.
 struct RobotState {
@@ -75,10 +77,20 @@ struct Simulation::Impl : b2ContactListener {
     physics.SetContactListener(this);
     buildWalls();
     for (std::size_t i = 0; i < w.robots.size(); ++i) addRobot(w.robots[i], i);
+    physics.SetContinuousPhysics(mayTunnel());
     for (const auto& list : {w.keys, o.keys})
       for (const KeyEventDef& k : list)
         keys.emplace_back(static_cast<std::int64_t>(std::ceil(k.time / o.dt - 1e-9)), k);
     std::stable_sort(keys.begin(), keys.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  }
+
+  // Box2D's continuous collision (time of impact for every contact, a tenth of a 100-robot step)
+  // only matters when a robot can move a sizeable part of its radius in one step; otherwise the
+  // position solver keeps discs out of walls.
+  bool mayTunnel() const {
+    return std::any_of(robots.begin(), robots.end(), [&](const RobotState& r) {
+      return r.def.drive.maxSpeed * options.dt > kTunnelFraction * r.def.radius;
+    });
   }
 
   static std::vector<WallDef> withEnclosure(const WorldDef& w) {
