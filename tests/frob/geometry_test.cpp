@@ -1,6 +1,7 @@
 #include "frob/geometry.hpp"
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <gtest/gtest.h>
 
 namespace frob {
@@ -23,6 +24,9 @@ TEST(Geometry, WrapAngleLandsInHalfOpenInterval) {
   EXPECT_NEAR(wrapAngle(3 * pi / 2), -pi / 2, 1e-15);
   EXPECT_NEAR(wrapAngle(-7 * pi / 2), pi / 2, 1e-14);
   EXPECT_NEAR(wrapAngle(4 * pi + 0.25), 0.25, 1e-14);
+  EXPECT_EQ(wrapAngle(std::nextafter(-pi, 0.0)), std::nextafter(-pi, 0.0));  // inside: unchanged, to the bit
+  EXPECT_EQ(wrapAngle(std::nextafter(pi, 4.0)), std::nextafter(pi, 4.0) - 2.0 * pi);
+  EXPECT_TRUE(std::isnan(wrapAngle(std::nan(""))));
 }
 
 TEST(Geometry, AngleDiffTakesTheShortWayRound) {

@@ -29,7 +29,7 @@ constexpr std::int64_t kSign = INT64_MIN;
 [[gnu::always_inline]] inline M bitsOf(V v) { return __builtin_bit_cast(M, v); }
 [[gnu::always_inline]] inline V fromBits(M m) { return __builtin_bit_cast(V, m); }
 [[gnu::always_inline]] inline V select(M mask, V a, V b) { return fromBits((bitsOf(a) & mask) | (bitsOf(b) & ~mask)); }
-[[gnu::always_inline]] inline bool any(M m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
+[[gnu::always_inline]] inline bool any(M m) { return __builtin_reduce_or(m) != 0; }
 
 // The rays of the fan and each one's nearest hit so far.
 struct Fan {
@@ -119,22 +119,17 @@ struct FanCaster {
       const V far = splat(INFINITY);
       const V lxs = select(live, xa < xb ? xa : xb, far), hxs = select(live, xa < xb ? xb : xa, -far);
       const V lys = select(live, ya < yb ? ya : yb, far), hys = select(live, ya < yb ? yb : ya, -far);
-      const double lx = std::min(std::min(lxs[0], lxs[1]), std::min(lxs[2], lxs[3]));
-      const double hx = std::max(std::max(hxs[0], hxs[1]), std::max(hxs[2], hxs[3]));
-      const double ly = std::min(std::min(lys[0], lys[1]), std::min(lys[2], lys[3]));
-      const double hy = std::max(std::max(hys[0], hys[1]), std::max(hys[2], hys[3]));
       int i0, j0, i1, j1;
-      cells(lx, hx, g.x0_, g.inv_, g.nx_, i0, i1);
-      cells(ly, hy, g.y0_, g.inv_, g.ny_, j0, j1);
+      cells(__builtin_reduce_min(lxs), __builtin_reduce_max(hxs), g.x0_, g.inv_, g.nx_, i0, i1);
+      cells(__builtin_reduce_min(lys), __builtin_reduce_max(hys), g.y0_, g.inv_, g.ny_, j0, j1);
       for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i)
           if (i < pi0 || i > pi1 || j < pj0 || j > pj1) testCell(g, j * g.nx_ + i, f, self);
       pi0 = i0, pj0 = j0, pi1 = i1, pj1 = j1;
       // A hit within [0, d1] is final: every cell the ray crosses up to d1 has been tested.
       const M done = live & (f.best <= d1);
-      if (any(done))
-        for (int k = 0; k < 4; ++k)
-          if (done[k] && f.best[k] < nearest && f.cos[k] >= cosCutoff) nearest = f.best[k];
+      const M echoes = done & (f.best < nearest) & (f.cos >= cosCutoff);  // false for NaN
+      if (any(echoes)) nearest = __builtin_reduce_min(select(echoes, f.best, far));
       live &= ~done;
       d0 = d1;
     }

@@ -6,6 +6,19 @@ namespace frob::worlds::detail {
 namespace {
 
 constexpr std::uint64_t kMaxChunks = 0xffff;
+// Polls before sleeping: a simulation step hands out a job every few hundred microseconds, and
+// waking a sleeping thread costs tens of them on a virtual machine. About 50 us of polling.
+constexpr int kSpins = 20000;
+
+// Waits until `word` no longer holds `seen`: polls a while, then sleeps.
+template <class T>
+void awaitChange(const std::atomic<T>& word, T seen) {
+  for (int k = 0; k < kSpins; ++k) {
+    if (word.load(std::memory_order_acquire) != seen) return;
+    __builtin_ia32_pause();
+  }
+  word.wait(seen, std::memory_order_acquire);
+}
 std::uint64_t generationOf(std::uint64_t t) { return t >> 32; }
 std::uint64_t nextOf(std::uint64_t t) { return (t >> 16) & 0xffff; }
 std::uint64_t chunksOf(std::uint64_t t) { return t & 0xffff; }
@@ -19,7 +32,7 @@ Workers::Workers(int count) : count_(count < 1 ? 1 : count) {
       for (;;) {
         std::uint64_t t = ticket_.load(std::memory_order_acquire);
         while (generationOf(t) == seen) {
-          ticket_.wait(t, std::memory_order_acquire);
+          awaitChange(ticket_, t);
           t = ticket_.load(std::memory_order_acquire);
         }
         if (stop_.load(std::memory_order_acquire)) return;
@@ -66,7 +79,7 @@ void Workers::run(std::size_t n, std::size_t grain, const std::function<void(std
   work(generation);
   // Every chunk is claimed; wait for the ones other threads are still running.
   for (std::uint32_t d = done_.load(std::memory_order_acquire); d != chunks; d = done_.load(std::memory_order_acquire))
-    done_.wait(d, std::memory_order_acquire);
+    awaitChange(done_, d);
 }
 
 }  // namespace frob::worlds::detail
