@@ -126,41 +126,9 @@ void RayCaster::setRobots(const std::vector<Point2>& centres, const std::vector<
     if (inside(robots_[k])) forEachCell(robots_[k], [&](int cell) { cellRobots_[robotSpan_[cell].end++] = robots_[k]; });
 }
 
-namespace {
-
-// Ray against circle (cx, cy, r); updates `best` when nearer. A ray starting inside reads 0.
-inline void hitCircle(double cx, double cy, double r, double ox, double oy, double ux, double uy, RayHit& best) {
-  const double px = ox - cx, py = oy - cy;
-  const double b = px * ux + py * uy;
-  const double c = px * px + py * py - r * r;
-  if (c < 0) {
-    best = {0.0, 1.0};
-    return;
-  }
-  const double disc = b * b - c;
-  if (disc < 0 || b > 0) return;  // misses, or the circle is behind the origin
-  const double t = -b - std::sqrt(disc);
-  if (t >= best.distance) return;
-  const double nx = (px + t * ux) / r, ny = (py + t * uy) / r;
-  best = {t, std::abs(nx * ux + ny * uy)};
-}
-
-}  // namespace
-
 [[gnu::always_inline]] inline void RayCaster::testCell(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const {
-  for (std::uint32_t k = segStart_[cell], end = segStart_[cell + 1]; k < end; ++k) {
-    // Ray o + t u against segment a + v d: t = tn / denom, v = vn / denom. Compared without
-    // dividing (the sign of denom folded in) so that only an accepted hit costs a division.
-    const Seg& s = cellSegs_[k];
-    double denom = ux * s.dy - uy * s.dx;  // cross(u, d); 0 when parallel: an edge-on wall is never heard
-    const double wx = s.ax - ox, wy = s.ay - oy;
-    double tn = wx * s.dy - wy * s.dx;
-    double vn = wx * uy - wy * ux;
-    const double sign = std::copysign(1.0, denom);  // exact: flips signs only, and avoids a branch
-    denom *= sign, tn *= sign, vn *= sign;
-    if (!((tn >= 0.0) & (vn >= 0.0) & (vn <= denom) & (tn < best.distance * denom))) continue;
-    best = {tn / denom, std::abs(ux * s.nx + uy * s.ny)};
-  }
+  for (std::uint32_t k = segStart_[cell], end = segStart_[cell + 1]; k < end; ++k)
+    hitSegment(cellSegs_[k], ox, oy, ux, uy, best);
   for (std::uint32_t k = pillarStart_[cell], end = pillarStart_[cell + 1]; k < end; ++k) {
     const Circle& c = cellPillars_[k];
     hitCircle(c.cx, c.cy, c.r, ox, oy, ux, uy, best);
@@ -253,13 +221,15 @@ double RayCaster::castCone(const Point2& origin, std::span<const Vec2> dirs, dou
   const int j = std::min(std::max(static_cast<int>(py), 0), ny_ - 1);
   const double bx0 = x0_ + i * cell_ - ox, bx1 = x0_ + (i + 1) * cell_ - ox;
   const double by0 = y0_ + j * cell_ - oy, by1 = y0_ + (j + 1) * cell_ - oy;
-  // Four rays at a time, then the rest one by one, each bounded by the nearest echo so far. The
-  // reading is the minimum over the rays, so the order does not change it.
-  const std::size_t fans = dirs.size() / 4 * 4;
-  for (std::size_t k = 0; k < fans; k += 4) {
-    const double ux[4] = {dirs[k].x(), dirs[k + 1].x(), dirs[k + 2].x(), dirs[k + 3].x()};
-    const double uy[4] = {dirs[k].y(), dirs[k + 1].y(), dirs[k + 2].y(), dirs[k + 3].y()};
-    nearest = castFan(ox, oy, ux, uy, nearest, self, cosCutoff);
+  // Four rays at a time (five when five are left), then the rest one by one, each bounded by the
+  // nearest echo so far. The reading is the minimum over the rays, so the order does not change it.
+  std::size_t fans = 0;
+  while (dirs.size() - fans >= 4) {
+    const int rays = dirs.size() - fans == 5 ? 5 : 4;
+    double ux[5], uy[5];
+    for (int k = 0; k < rays; ++k) ux[k] = dirs[fans + k].x(), uy[k] = dirs[fans + k].y();
+    nearest = castFan(rays, ox, oy, ux, uy, nearest, self, cosCutoff);
+    fans += static_cast<std::size_t>(rays);
   }
   for (const Vec2& d : dirs.subspan(fans)) {
     const double ux = d.x(), uy = d.y();

@@ -5,6 +5,7 @@
 
 #include "frob/worlds/world_def.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -57,10 +58,13 @@ class RayCaster {
   void cellRange(double x0, double y0, double x1, double y1, int& i0, int& j0, int& i1, int& j1) const;
   void walk(int i, int j, double bx0, double bx1, double by0, double by1, double ox, double oy, double ux,
             double uy, double tmax, int self, RayHit& best) const;
+  // Ray o + t u against one segment or circle: `best` becomes the hit when it is nearer.
+  static void hitSegment(const Seg& s, double ox, double oy, double ux, double uy, RayHit& best);
+  static void hitCircle(double cx, double cy, double r, double ox, double oy, double ux, double uy, RayHit& best);
   void testOutside(double ox, double oy, double ux, double uy, int self, RayHit& best) const;
   void testCell(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const;
-  // Four rays of one cone at once (ray_fan.cpp): the nearest echo below `cap`, else `cap`.
-  double castFan(double ox, double oy, const double* ux, const double* uy, double cap, int self,
+  // `rays` (4 or 5) rays of one cone at once (ray_fan.cpp): the nearest echo below `cap`, else `cap`.
+  double castFan(int rays, double ox, double oy, const double* ux, const double* uy, double cap, int self,
                  double cosCutoff) const;
   friend struct FanCaster;  // ray_fan.cpp: castFan's body, compiled for AVX2 and for plain x86-64
 
@@ -77,5 +81,37 @@ class RayCaster {
   double x0_ = 0, y0_ = 0, x1_ = 1, y1_ = 1, cell_ = 1, inv_ = 1;  // grid box [x0_, x1_] x [y0_, y1_]
   int nx_ = 1, ny_ = 1;
 };
+
+[[gnu::always_inline]] inline void RayCaster::hitSegment(const Seg& s, double ox, double oy, double ux, double uy,
+                                                        RayHit& best) {
+  // Segment a + v d: t = tn / denom, v = vn / denom. Compared without dividing (the sign of denom
+  // folded in) so that only an accepted hit costs a division.
+  double denom = ux * s.dy - uy * s.dx;  // cross(u, d); 0 when parallel: an edge-on wall is never heard
+  const double wx = s.ax - ox, wy = s.ay - oy;
+  double tn = wx * s.dy - wy * s.dx;
+  double vn = wx * uy - wy * ux;
+  const double sign = std::copysign(1.0, denom);  // exact: flips signs only, and avoids a branch
+  denom *= sign, tn *= sign, vn *= sign;
+  if (!((tn >= 0.0) & (vn >= 0.0) & (vn <= denom) & (tn < best.distance * denom))) return;
+  best = {tn / denom, std::abs(ux * s.nx + uy * s.ny)};
+}
+
+// A ray starting inside the circle reads 0.
+[[gnu::always_inline]] inline void RayCaster::hitCircle(double cx, double cy, double r, double ox, double oy, double ux,
+                                                       double uy, RayHit& best) {
+  const double px = ox - cx, py = oy - cy;
+  const double b = px * ux + py * uy;
+  const double c = px * px + py * py - r * r;
+  if (c < 0) {
+    best = {0.0, 1.0};
+    return;
+  }
+  const double disc = b * b - c;
+  if (disc < 0 || b > 0) return;  // misses, or the circle is behind the origin
+  const double t = -b - std::sqrt(disc);
+  if (t >= best.distance) return;
+  const double nx = (px + t * ux) / r, ny = (py + t * uy) / r;
+  best = {t, std::abs(nx * ux + ny * uy)};
+}
 
 }  // namespace frob::worlds::detail

@@ -39,6 +39,13 @@ struct Fan {
   V cos;   // as RayHit::cosIncidence
 };
 
+// A fifth ray swept with the fan but tested in scalar: five lanes cost less than eight.
+struct Lone {
+  double ux, uy;
+  RayHit best;
+  bool live;
+};
+
 // As hitCircle() in ray_caster.cpp, lane by lane: the scalar parts are shared, the rest per lane.
 [[gnu::always_inline]] inline void fanCircle(double cx, double cy, double r, Fan& f) {
   const double px = f.ox - cx, py = f.oy - cy;
@@ -68,11 +75,13 @@ struct FanCaster {
   using Span = RayCaster::Span;
   using Robot = RayCaster::Robot;
 
-  [[gnu::always_inline]] static void testCell(const RayCaster& g, int cell, Fan& f, int self) {
+  template <bool WithLone>
+  [[gnu::always_inline]] static void testCell(const RayCaster& g, int cell, Fan& f, Lone& lone, int self) {
     const M sign = M{kSign, kSign, kSign, kSign};
     for (std::uint32_t k = g.segStart_[cell], end = g.segStart_[cell + 1]; k < end; ++k) {
       // As testCell(): the sign of denom folded in (an exact sign flip), then compared without dividing.
       const Seg& s = g.cellSegs_[k];
+      if constexpr (WithLone) RayCaster::hitSegment(s, f.ox, f.oy, lone.ux, lone.uy, lone.best);
       const V denomRaw = f.ux * s.dy - f.uy * s.dx;
       const double wx = s.ax - f.ox, wy = s.ay - f.oy;
       const double tn = wx * s.dy - wy * s.dx;  // the same for every ray of the fan
@@ -87,12 +96,18 @@ struct FanCaster {
       f.cos = select(hit, fromBits(bitsOf(cosI) & ~sign), f.cos);
     }
     for (std::uint32_t k = g.pillarStart_[cell], end = g.pillarStart_[cell + 1]; k < end; ++k)
-      fanCircle(g.cellPillars_[k].cx, g.cellPillars_[k].cy, g.cellPillars_[k].r, f);
+      testCircle<WithLone>(g.cellPillars_[k].cx, g.cellPillars_[k].cy, g.cellPillars_[k].r, f, lone);
     const Span robots = g.robotSpan_[cell];
     for (std::uint32_t k = robots.begin; k < robots.end; ++k) {
       const Robot& c = g.cellRobots_[k];
-      if (c.index != self) fanCircle(c.cx, c.cy, c.r, f);
+      if (c.index != self) testCircle<WithLone>(c.cx, c.cy, c.r, f, lone);
     }
+  }
+
+  template <bool WithLone>
+  [[gnu::always_inline]] static void testCircle(double cx, double cy, double r, Fan& f, Lone& lone) {
+    if constexpr (WithLone) RayCaster::hitCircle(cx, cy, r, f.ox, f.oy, lone.ux, lone.uy, lone.best);
+    fanCircle(cx, cy, r, f);
   }
 
   // As RayCaster::cellRange() for one axis: the cells of [lo, hi], padded by a little, clamped.
@@ -104,33 +119,47 @@ struct FanCaster {
     c1 = static_cast<int>(std::min(top, std::max(0.0, (hi - origin) * inv + eps)));
   }
 
+  // The fan of ux/uy[0..3], and ux/uy[4] as a lone fifth ray when WithLone.
+  template <bool WithLone>
   [[gnu::always_inline]] static double cast(const RayCaster& g, double ox, double oy, const double* ux,
                                             const double* uy, double cap, int self, double cosCutoff) {
     Fan f{ox, oy, V{ux[0], ux[1], ux[2], ux[3]}, V{uy[0], uy[1], uy[2], uy[3]}, splat(cap), splat(1.0)};
+    Lone lone{WithLone ? ux[4] : 0.0, WithLone ? uy[4] : 0.0, RayHit{cap, 1.0}, WithLone};
     for (int k : g.outside_)
-      if (k != self) fanCircle(g.robots_[k].cx, g.robots_[k].cy, g.robots_[k].r, f);
+      if (k != self) testCircle<WithLone>(g.robots_[k].cx, g.robots_[k].cy, g.robots_[k].r, f, lone);
     double nearest = cap;  // the nearest echo of the lanes found final so far
     M live = M{-1, -1, -1, -1};
     int pi0 = 1, pj0 = 1, pi1 = 0, pj1 = 0;  // the cells of the previous band, already tested
-    for (double d0 = 0.0; any(live) && d0 < nearest;) {
+    for (double d0 = 0.0; (any(live) || lone.live) && d0 < nearest;) {
       const double d1 = std::min(d0 + g.cell_, nearest);
       // The live rays' pieces over [d0, d1] lie in the box of their end points.
       const V xa = ox + d0 * f.ux, xb = ox + d1 * f.ux, ya = oy + d0 * f.uy, yb = oy + d1 * f.uy;
       const V far = splat(INFINITY);
       const V lxs = select(live, xa < xb ? xa : xb, far), hxs = select(live, xa < xb ? xb : xa, -far);
       const V lys = select(live, ya < yb ? ya : yb, far), hys = select(live, ya < yb ? yb : ya, -far);
+      double lx = __builtin_reduce_min(lxs), hx = __builtin_reduce_max(hxs);
+      double ly = __builtin_reduce_min(lys), hy = __builtin_reduce_max(hys);
+      if (lone.live) {
+        const double xa1 = ox + d0 * lone.ux, xb1 = ox + d1 * lone.ux, ya1 = oy + d0 * lone.uy, yb1 = oy + d1 * lone.uy;
+        lx = std::min({lx, xa1, xb1}), hx = std::max({hx, xa1, xb1});
+        ly = std::min({ly, ya1, yb1}), hy = std::max({hy, ya1, yb1});
+      }
       int i0, j0, i1, j1;
-      cells(__builtin_reduce_min(lxs), __builtin_reduce_max(hxs), g.x0_, g.inv_, g.nx_, i0, i1);
-      cells(__builtin_reduce_min(lys), __builtin_reduce_max(hys), g.y0_, g.inv_, g.ny_, j0, j1);
+      cells(lx, hx, g.x0_, g.inv_, g.nx_, i0, i1);
+      cells(ly, hy, g.y0_, g.inv_, g.ny_, j0, j1);
       for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i)
-          if (i < pi0 || i > pi1 || j < pj0 || j > pj1) testCell(g, j * g.nx_ + i, f, self);
+          if (i < pi0 || i > pi1 || j < pj0 || j > pj1) testCell<WithLone>(g, j * g.nx_ + i, f, lone, self);
       pi0 = i0, pj0 = j0, pi1 = i1, pj1 = j1;
       // A hit within [0, d1] is final: every cell the ray crosses up to d1 has been tested.
       const M done = live & (f.best <= d1);
       const M echoes = done & (f.best < nearest) & (f.cos >= cosCutoff);  // false for NaN
       if (any(echoes)) nearest = __builtin_reduce_min(select(echoes, f.best, far));
       live &= ~done;
+      if (lone.live && lone.best.distance <= d1) {
+        lone.live = false;
+        if (lone.best.distance < nearest && lone.best.cosIncidence >= cosCutoff) nearest = lone.best.distance;
+      }
       d0 = d1;
     }
     return nearest;
@@ -140,13 +169,15 @@ struct FanCaster {
 namespace {
 
 // Both builds give bit-identical results: the same IEEE operations, no fused multiply-adds.
-[[gnu::target("avx2")]] double castAvx2(const RayCaster& g, double ox, double oy, const double* ux,
+[[gnu::target("avx2")]] double castAvx2(const RayCaster& g, int rays, double ox, double oy, const double* ux,
                                         const double* uy, double cap, int self, double cosCutoff) {
-  return FanCaster::cast(g, ox, oy, ux, uy, cap, self, cosCutoff);
+  return rays == 5 ? FanCaster::cast<true>(g, ox, oy, ux, uy, cap, self, cosCutoff)
+                   : FanCaster::cast<false>(g, ox, oy, ux, uy, cap, self, cosCutoff);
 }
-double castBaseline(const RayCaster& g, double ox, double oy, const double* ux, const double* uy, double cap,
-                    int self, double cosCutoff) {
-  return FanCaster::cast(g, ox, oy, ux, uy, cap, self, cosCutoff);
+double castBaseline(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy,
+                    double cap, int self, double cosCutoff) {
+  return rays == 5 ? FanCaster::cast<true>(g, ox, oy, ux, uy, cap, self, cosCutoff)
+                   : FanCaster::cast<false>(g, ox, oy, ux, uy, cap, self, cosCutoff);
 }
 std::atomic<bool> avx2 = [] {
   __builtin_cpu_init();  // may run before the runtime's own initialisation
@@ -155,9 +186,10 @@ std::atomic<bool> avx2 = [] {
 
 }  // namespace
 
-double RayCaster::castFan(double ox, double oy, const double* ux, const double* uy, double cap, int self,
+double RayCaster::castFan(int rays, double ox, double oy, const double* ux, const double* uy, double cap, int self,
                           double cosCutoff) const {
-  return (avx2.load(std::memory_order_relaxed) ? castAvx2 : castBaseline)(*this, ox, oy, ux, uy, cap, self, cosCutoff);
+  return (avx2.load(std::memory_order_relaxed) ? castAvx2 : castBaseline)(*this, rays, ox, oy, ux, uy, cap, self,
+                                                                           cosCutoff);
 }
 
 bool useAvx2(bool on) {
