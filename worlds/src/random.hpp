@@ -3,9 +3,7 @@
 // streams derived from it, so results do not depend on which thread senses which robot.
 
 #include <cmath>
-#include <math.h>  // sincos (GNU)
 #include <cstdint>
-#include <numbers>
 
 namespace frob::worlds::detail {
 
@@ -45,23 +43,23 @@ class Rng {
   }
   // Uniform in (0, 1].
   double uniform() { return (static_cast<double>(next() >> 11) + 1.0) * 0x1.0p-53; }
-  // Standard normal (Box-Muller: two uniforms give two values; the second is kept for the next call).
+  // Standard normal (Marsaglia's polar method: a point uniform in the unit disc gives two values;
+  // the second is kept for the next call). Half the cost of Box-Muller: one log, no sine or cosine.
   double gaussian() {
     if (hasSpare_) {
       hasSpare_ = false;
       return spare_;
     }
-    const double u1 = uniform(), u2 = uniform();
-    const double r = std::sqrt(-2.0 * std::log(u1)), a = 2.0 * std::numbers::pi * u2;
-    double sinA, cosA;
-#if defined(__GLIBC__)
-    ::sincos(a, &sinA, &cosA);  // one argument reduction; glibc gives sin's and cos's very bits
-#else
-    sinA = std::sin(a), cosA = std::cos(a);
-#endif
-    spare_ = r * sinA;
+    double u, v, s;
+    do {
+      u = 2.0 * uniform() - 1.0;
+      v = 2.0 * uniform() - 1.0;
+      s = u * u + v * v;
+    } while (s >= 1.0 || s == 0.0);
+    const double m = std::sqrt(-2.0 * std::log(s) / s);
+    spare_ = v * m;
     hasSpare_ = true;
-    return r * cosA;
+    return u * m;
   }
 
  private:
