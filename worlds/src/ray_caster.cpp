@@ -208,36 +208,22 @@ double RayCaster::castCone(const Point2& origin, std::span<const Vec2> dirs, dou
                            double cosCutoff) const {
   const double ox = origin.x(), oy = origin.y();
   double nearest = range;
-  if (!(ox >= x0_ && ox <= x1_ && oy >= y0_ && oy <= y1_)) [[unlikely]] {
-    for (const Vec2& d : dirs) {
-      const RayHit hit = cast(origin, d, nearest, self);
-      if (hit.cosIncidence >= cosCutoff) nearest = std::min(nearest, hit.distance);
+  // From inside the grid, four rays at a time (five when five are left); the rest one by one.
+  // Each is cast only as far as the nearest echo so far: the reading is the minimum over the
+  // rays, so the order does not change it.
+  std::size_t fanned = 0;
+  if (ox >= x0_ && ox <= x1_ && oy >= y0_ && oy <= y1_) [[likely]] {
+    while (dirs.size() - fanned >= 4) {
+      const int rays = dirs.size() - fanned == 5 ? 5 : 4;
+      double ux[5], uy[5];
+      for (int k = 0; k < rays; ++k) ux[k] = dirs[fanned + k].x(), uy[k] = dirs[fanned + k].y();
+      nearest = castFan(rays, ox, oy, ux, uy, nearest, self, cosCutoff);
+      fanned += static_cast<std::size_t>(rays);
     }
-    return nearest;
   }
-  // What cast() computes per ray from the origin alone (tmin = 0 inside the grid), done once.
-  const double px = (ox - x0_) * inv_, py = (oy - y0_) * inv_;
-  const int i = std::min(std::max(static_cast<int>(px), 0), nx_ - 1);
-  const int j = std::min(std::max(static_cast<int>(py), 0), ny_ - 1);
-  const double bx0 = x0_ + i * cell_ - ox, bx1 = x0_ + (i + 1) * cell_ - ox;
-  const double by0 = y0_ + j * cell_ - oy, by1 = y0_ + (j + 1) * cell_ - oy;
-  // Four rays at a time (five when five are left), then the rest one by one, each bounded by the
-  // nearest echo so far. The reading is the minimum over the rays, so the order does not change it.
-  std::size_t fans = 0;
-  while (dirs.size() - fans >= 4) {
-    const int rays = dirs.size() - fans == 5 ? 5 : 4;
-    double ux[5], uy[5];
-    for (int k = 0; k < rays; ++k) ux[k] = dirs[fans + k].x(), uy[k] = dirs[fans + k].y();
-    nearest = castFan(rays, ox, oy, ux, uy, nearest, self, cosCutoff);
-    fans += static_cast<std::size_t>(rays);
-  }
-  for (const Vec2& d : dirs.subspan(fans)) {
-    const double ux = d.x(), uy = d.y();
-    RayHit best{nearest, 1.0};
-    testOutside(ox, oy, ux, uy, self, best);
-    walk(i, j, bx0, bx1, by0, by1, ox, oy, ux, uy, nearest, self, best);
-    // As cast() then min(): a ray that met nothing nearer leaves `nearest` as it is.
-    if (best.distance < nearest && best.cosIncidence >= cosCutoff) nearest = best.distance;
+  for (const Vec2& d : dirs.subspan(fanned)) {
+    const RayHit hit = cast(origin, d, nearest, self);
+    if (hit.cosIncidence >= cosCutoff) nearest = std::min(nearest, hit.distance);
   }
   return nearest;
 }

@@ -6,9 +6,10 @@ namespace frob::worlds::detail {
 namespace {
 
 constexpr std::uint64_t kMaxChunks = 0xffff;
-// Polls before sleeping: a simulation step hands out a job every few hundred microseconds, and
-// waking a sleeping thread costs tens of them on a virtual machine. About 50 us of polling.
-constexpr int kSpins = 20000;
+// Polls before sleeping: a simulation step hands out jobs tens of microseconds apart, and waking
+// a sleeping thread costs tens of them on a virtual machine. A pause takes some 20 ns on recent
+// x86-64 (1-2 ns on older ones), so this polls for up to about 100 us.
+constexpr int kSpins = 5000;
 
 // Waits until `word` no longer holds `seen`: polls a while, then sleeps.
 template <class T>
