@@ -218,9 +218,11 @@ struct Simulation::Impl : b2ContactListener {
     }
   }
 
-  // Sonar readings of robot `i`: per sonar the nearest echoing ray, with noise proportional to range.
-  void senseSonar(std::size_t i) {
+  // The sensor frame of robot `i`, with the keys from `keysNow` on that fall in this step. Sonars
+  // read per sonar the nearest echoing ray, with noise proportional to range.
+  void senseRobot(std::size_t i, std::vector<std::pair<std::int64_t, KeyEventDef>>::const_iterator keysNow) {
     RobotState& r = robots[i];
+    SensorFrame& f = r.frame;
     const SonarDef& s = r.def.sonar;
     const Pose2 pose = poseOf(r.body);
     const double c = std::cos(pose.heading), sn = std::sin(pose.heading);
@@ -234,9 +236,17 @@ struct Simulation::Impl : b2ContactListener {
       for (std::size_t k = 0; k < rays; ++k) r.coneDirs[k] = rotate(r.rayDirs[j * rays + k]);
       const double nearest = caster.castCone(origin, r.coneDirs, s.maxRange, static_cast<int>(i), r.cosCutoff);
       const double noise = r.sonarRng.gaussian();  // drawn for every sonar so the stream never depends on hits
-      r.frame.sonar[j] = nearest >= s.maxRange ? s.maxRange
-                                               : std::clamp(nearest * (1.0 + s.noise * noise), s.minRange, s.maxRange);
+      f.sonar[j] = nearest >= s.maxRange ? s.maxRange
+                                         : std::clamp(nearest * (1.0 + s.noise * noise), s.minRange, s.maxRange);
     }
+    const b2Vec2 v = r.body->GetLinearVelocity();
+    f.odometry = r.odometry;
+    f.velocity = c * v.x + sn * v.y;
+    f.turnRate = r.body->GetAngularVelocity();
+    f.bumps = r.bumps;
+    f.keys.clear();
+    for (auto k = keysNow; k != keys.end() && k->first == steps; ++k)
+      if (k->second.robot < 0 || static_cast<std::size_t>(k->second.robot) == i) f.keys.push_back(k->second.key);
   }
 
   // Dead reckoning: the true motion of the last step in the robot's frame, with noise, added to the belief.
@@ -296,24 +306,11 @@ void Simulation::sense() {
   s.caster.setRobots(s.centres, s.radii);
   // Ray casting is read-only on shared state and each robot has its own random stream, so robots
   // may be sensed on any thread in any order with bit-identical results.
-  s.workers.run(s.robots.size(), kSenseGrain, [&s](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) s.senseSonar(i);
+  const auto keysNow = std::lower_bound(s.keys.begin(), s.keys.end(), s.steps,
+                                        [](const auto& k, std::int64_t step) { return k.first < step; });
+  s.workers.run(s.robots.size(), kSenseGrain, [&s, keysNow](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) s.senseRobot(i, keysNow);
   });
-  auto first = std::lower_bound(s.keys.begin(), s.keys.end(), s.steps,
-                                [](const auto& k, std::int64_t step) { return k.first < step; });
-  for (std::size_t i = 0; i < s.robots.size(); ++i) {
-    RobotState& r = s.robots[i];
-    SensorFrame& f = r.frame;
-    const Pose2 pose = poseOf(r.body);
-    const b2Vec2 v = r.body->GetLinearVelocity();
-    f.odometry = r.odometry;
-    f.velocity = std::cos(pose.heading) * v.x + std::sin(pose.heading) * v.y;
-    f.turnRate = r.body->GetAngularVelocity();
-    f.bumps = r.bumps;
-    f.keys.clear();
-    for (auto k = first; k != s.keys.end() && k->first == s.steps; ++k)
-      if (k->second.robot < 0 || static_cast<std::size_t>(k->second.robot) == i) f.keys.push_back(k->second.key);
-  }
 }
 
 const SensorFrame& Simulation::frame(std::size_t i) const { return impl_->robots.at(i).frame; }
