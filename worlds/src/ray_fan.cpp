@@ -141,8 +141,8 @@ struct FanCaster {
       double ly = __builtin_reduce_min(lys), hy = __builtin_reduce_max(hys);
       if (lone.live) {
         const double xa1 = ox + d0 * lone.ux, xb1 = ox + d1 * lone.ux, ya1 = oy + d0 * lone.uy, yb1 = oy + d1 * lone.uy;
-        lx = std::min({lx, xa1, xb1}), hx = std::max({hx, xa1, xb1});
-        ly = std::min({ly, ya1, yb1}), hy = std::max({hy, ya1, yb1});
+        lx = std::min(lx, std::min(xa1, xb1)), hx = std::max(hx, std::max(xa1, xb1));
+        ly = std::min(ly, std::min(ya1, yb1)), hy = std::max(hy, std::max(ya1, yb1));
       }
       int i0, j0, i1, j1;
       cells(lx, hx, g.x0_, g.inv_, g.nx_, i0, i1);
