@@ -63,7 +63,8 @@ struct Simulation::Impl : b2ContactListener {
   b2World physics{b2Vec2(0.0f, 0.0f)};
   std::vector<RobotState> robots;
   std::vector<Press> presses;
-  std::vector<std::pair<std::int64_t, KeyEventDef>> keys;  // (step, key), sorted by step
+  using Keys = std::vector<std::pair<std::int64_t, KeyEventDef>>;
+  Keys keys;  // (step, key), sorted by step
   detail::RayCaster caster;
   detail::Workers workers;
   std::int64_t steps = 0;
@@ -220,7 +221,7 @@ struct Simulation::Impl : b2ContactListener {
 
   // The sensor frame of robot `i`, with the keys from `keysNow` on that fall in this step. Sonars
   // read per sonar the nearest echoing ray, with noise proportional to range.
-  void senseRobot(std::size_t i, std::vector<std::pair<std::int64_t, KeyEventDef>>::const_iterator keysNow) {
+  void senseRobot(std::size_t i, Keys::const_iterator keysNow) {
     RobotState& r = robots[i];
     SensorFrame& f = r.frame;
     const SonarDef& s = r.def.sonar;
