@@ -17,6 +17,18 @@ namespace frob {
 namespace detail {
 
 extern std::atomic<long> liveNodes;
+// The last instant at which an exception cut a plan short: at that instant, a node a plan leaves
+// unchecked may already be up to date, so every plan checks every step.
+extern std::atomic<std::uint64_t> planCutShort;
+
+class NodeBase;
+
+// A node a strict node reads, with the number of handles (shared_ptr) that own it: a plan finds
+// from these which nodes no graph but its own can reach. Every input listed is owned by its reader.
+struct Input {
+  NodeBase* node;
+  long owners;
+};
 
 // Counts live nodes; every node derives from it. Holds the instant of the node's value, so that
 // a plan (see StrictNode) can bring nodes of any type up to date.
@@ -31,16 +43,18 @@ class NodeBase {
   [[nodiscard]] std::uint64_t stamp() const { return stamp_; }
   // Computes the value at `now` and holds it; called only when stamp() != now.id.
   virtual void refresh(const Instant& now) = 0;
-  // refresh as a plain function, which a plan calls without a virtual dispatch.
+  // refresh as a plain function, which a plan calls without a virtual dispatch. A `checked` one
+  // first skips a node already up to date (one that other graphs share).
   using Refresher = void (*)(NodeBase&, const Instant&);
-  [[nodiscard]] virtual Refresher refresher() const {
+  [[nodiscard]] virtual Refresher refresher(bool checked) const {
+    if (checked) return [](NodeBase& n, const Instant& now) { if (n.stamp() != now.id) n.refresh(now); };
     return [](NodeBase& n, const Instant& now) { n.refresh(now); };
   }
   // True if the node reads the same inputs at every instant (strictInputs lists them).
   [[nodiscard]] virtual bool strict() const { return false; }
   // Appends the nodes a strict node reads at every instant, in the order it reads them. Other
   // nodes (switches, events) read their inputs only sometimes and pull them themselves.
-  virtual void strictInputs(std::vector<NodeBase*>& out) const { (void)out; }
+  virtual void strictInputs(std::vector<Input>& out) const { (void)out; }
 
  protected:
   std::uint64_t stamp_ = 0;
@@ -93,13 +107,16 @@ struct PlanStep {
 };
 
 // The nodes to bring up to date before `root`, in the order a recursive pull would compute them
-// (inputs before the nodes that read them, each once): `root`'s strict cone, without `root`.
+// (inputs before the nodes that read them, each once): `root`'s strict cone, without `root`. A node
+// that only `root` and nodes of the plan own (so no other graph can reach it) is refreshed
+// unchecked: it is brought up to date at an instant only by a pass that ends with `root`.
 std::vector<PlanStep> planFor(const NodeBase& root);
 
 // A behavior node that reads the same inputs at every instant (pointwise functions, integral...).
 // Sampled directly, it first runs its plan: one flat pass over its strict cone that computes each
 // stale node once, inputs first, exactly as a recursive pull would, but without a nested call and
-// a memo check for every edge. Within a plan, a strict node reads its inputs' values directly.
+// a memo check for every edge (nor for nodes only this graph reaches). Within a plan, a strict node
+// reads its inputs' values directly.
 // Derived provides `T computeFresh(const Instant&)`, which may assume its inputs are up to date.
 template <class T, class Derived>
 class StrictNode : public BehaviorNode<T> {
@@ -109,18 +126,26 @@ class StrictNode : public BehaviorNode<T> {
     this->stamp_ = now.id;
   }
   [[nodiscard]] bool strict() const final { return true; }
-  [[nodiscard]] NodeBase::Refresher refresher() const final {
+  [[nodiscard]] NodeBase::Refresher refresher(bool checked) const final {
+    if (checked) {
+      return [](NodeBase& n, const Instant& now) {
+        if (n.stamp() != now.id) static_cast<StrictNode&>(n).refresh(now);
+      };
+    }
     return [](NodeBase& n, const Instant& now) { static_cast<StrictNode&>(n).refresh(now); };
   }
 
  protected:
   T compute(const Instant& now) final {
     if (!planned_) [[unlikely]] plan();
-    const std::uint64_t id = now.id;  // a local, so that it stays in a register across the calls
-    for (const PlanStep& step : plan_) {
-      if (step.node->stamp() != id) step.refresh(*step.node, now);
+    if (planCutShort.load(std::memory_order_relaxed) == now.id) [[unlikely]] return computeChecked(now);
+    try {
+      for (const PlanStep& step : plan_) step.refresh(*step.node, now);
+      return static_cast<Derived*>(this)->computeFresh(now);
+    } catch (...) {
+      planCutShort.store(now.id, std::memory_order_relaxed);
+      throw;
     }
-    return static_cast<Derived*>(this)->computeFresh(now);
   }
 
  private:
@@ -128,6 +153,13 @@ class StrictNode : public BehaviorNode<T> {
   [[gnu::noinline]] void plan() {
     plan_ = planFor(*this);
     planned_ = true;
+  }
+  // The plan with every step checked (a slower pass, after an exception).
+  [[gnu::noinline]] T computeChecked(const Instant& now) {
+    for (const PlanStep& step : plan_) {
+      if (step.node->stamp() != now.id) step.refresh(*step.node, now);
+    }
+    return static_cast<Derived*>(this)->computeFresh(now);
   }
   std::vector<PlanStep> plan_;  // nodes owned by this node's inputs, which it keeps alive
   bool planned_ = false;
