@@ -69,11 +69,11 @@ std::vector<PlanStep> planFor(const NodeBase& root) {
     for (const Input& i : reader.inputs) ++find(cone, i.node)->ownedByPlan;
   };
   countHandles(cone[0]);
-  std::vector<PlanStep> plan(cone.size() - 1);
+  std::vector<PlanStep> plan(cone.size(), PlanStep{nullptr, &PlanStep::last});
   for (std::size_t k = cone.size() - 1; k > 0; --k) {
     bool own = cone[k].ownedByPlan == cone[k].owners;
     if (own) countHandles(cone[k]);
-    plan[k - 1] = PlanStep{cone[k].node, cone[k].node->refresher(!own)};
+    plan[k - 1] = PlanStep{cone[k].node, cone[k].node->planStep(!own)};
   }
   return plan;
 }

@@ -125,10 +125,19 @@ TEST(Behavior, APlanChecksOnlyTheNodesOtherGraphsCanReach) {
     return Behavior<double>(own * own);
   }();
   std::vector<detail::PlanStep> plan = detail::planFor(*root.node());
-  ASSERT_EQ(plan.size(), 3u);  // time(), shared, own
-  EXPECT_EQ(plan[0].refresh, plan[0].node->refresher(true));
-  EXPECT_EQ(plan[1].refresh, plan[1].node->refresher(true));
-  EXPECT_EQ(plan[2].refresh, plan[2].node->refresher(false));
+  ASSERT_EQ(plan.size(), 4u);  // time(), shared, own, the end
+  EXPECT_EQ(plan[0].run, plan[0].node->planStep(true));
+  EXPECT_EQ(plan[1].run, plan[1].node->planStep(true));
+  EXPECT_EQ(plan[2].run, plan[2].node->planStep(false));
+  EXPECT_EQ(plan[3].node, nullptr);
+}
+
+// A plan of many steps, each running the next by a tail call, runs whole and in order.
+TEST(Behavior, ALongPlanRunsEveryStep) {
+  Behavior<double> t = time();
+  Behavior<double> sum = t;
+  for (int i = 0; i < 1000; ++i) sum = sum + 1.0;
+  EXPECT_EQ(sample(sum, 0.5, 3), (std::vector<double>{1000.0, 1000.5, 1001.0}));
 }
 
 // Nodes that only their graph reaches (refreshed unchecked) give bit-identical values to the same
