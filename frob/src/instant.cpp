@@ -15,6 +15,7 @@ std::atomic<std::uint64_t> nextInstantId{1};
 
 namespace detail {
 std::atomic<long> liveNodes{0};
+std::atomic<std::uint64_t> planCutShort{0};
 
 std::optional<std::int64_t> TimerNode::compute(const Instant& now) {
   double local = start_.local(now);
@@ -28,27 +29,52 @@ std::optional<std::int64_t> TimerNode::compute(const Instant& now) {
 
 namespace detail {
 namespace {
+// A node of a plan's cone: what it reads, its owners, and how many of those are the plan's root and
+// its own nodes.
+struct ConeNode {
+  NodeBase* node;
+  long owners;
+  std::vector<Input> inputs;
+  long ownedByPlan = 0;
+};
+
+std::vector<ConeNode>::iterator find(std::vector<ConeNode>& cone, const NodeBase* node) {
+  return std::find_if(cone.begin(), cone.end(), [node](const ConeNode& c) { return c.node == node; });
+}
+
 // Depth-first, inputs in the order the node reads them, each node listed after its inputs. Plans
-// are small, so `seen` is searched linearly rather than hashed (a switch builds plans often).
-void planCone(NodeBase* node, std::vector<PlanStep>& plan, std::vector<const NodeBase*>& seen) {
-  if (std::find(seen.begin(), seen.end(), node) != seen.end()) return;
-  seen.push_back(node);
-  if (node->strict()) {
-    std::vector<NodeBase*> inputs;
-    node->strictInputs(inputs);
-    for (NodeBase* input : inputs) planCone(input, plan, seen);
+// are small, so the cone is searched linearly rather than hashed (a switch builds plans often).
+void planCone(const Input& input, std::vector<ConeNode>& cone) {
+  if (find(cone, input.node) != cone.end()) return;
+  ConeNode c{.node = input.node, .owners = input.owners, .inputs = {}};
+  if (c.node->strict()) {
+    c.node->strictInputs(c.inputs);
+    for (const Input& i : c.inputs) planCone(i, cone);
   }
-  plan.push_back(PlanStep{node, node->refresher()});
+  cone.push_back(std::move(c));
 }
 }  // namespace
 
 std::vector<PlanStep> planFor(const NodeBase& root) {
-  std::vector<NodeBase*> inputs;
+  std::vector<Input> inputs;
   root.strictInputs(inputs);
-  std::vector<PlanStep> plan;
-  if (inputs.empty()) return plan;
-  std::vector<const NodeBase*> seen{&root};
-  for (NodeBase* input : inputs) planCone(input, plan, seen);
+  if (inputs.empty()) return {};
+  std::vector<ConeNode> cone;
+  cone.push_back({.node = const_cast<NodeBase*>(&root), .owners = 0, .inputs = std::move(inputs)});
+  // By index and by copy: the cone grows as it is walked.
+  for (std::size_t i = 0; i < cone[0].inputs.size(); ++i) planCone(Input(cone[0].inputs[i]), cone);
+  // Readers come after what they read, so going backwards all the handles the plan holds on a node
+  // are counted when it is reached: it is the plan's own if they are all its owners.
+  auto countHandles = [&cone](const ConeNode& reader) {
+    for (const Input& i : reader.inputs) ++find(cone, i.node)->ownedByPlan;
+  };
+  countHandles(cone[0]);
+  std::vector<PlanStep> plan(cone.size(), PlanStep{nullptr, &PlanStep::last});
+  for (std::size_t k = cone.size() - 1; k > 0; --k) {
+    bool own = cone[k].ownedByPlan == cone[k].owners;
+    if (own) countHandles(cone[k]);
+    plan[k - 1] = PlanStep{cone[k].node, cone[k].node->planStep(!own)};
+  }
   return plan;
 }
 }  // namespace detail

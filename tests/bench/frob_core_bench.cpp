@@ -14,8 +14,6 @@ void BM_FrobWallFollowerStep(benchmark::State& state) {
   Robot robot(nomadSpec(), std::shared_ptr<const SensorFrame>(frame));
   Behavior<Wheels> controller = wallFollower(robot);
   Clock clock(0.01);
-  long before = liveNodeCount();
-  (void)before;
   for (auto _ : state) {
     const Instant& now = clock.advance();
     fillFrame(*frame, now.step);
@@ -36,6 +34,11 @@ void BM_HandWrittenWallFollowerStep(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_HandWrittenWallFollowerStep);
+// Both again for a fixed number of steps, so that instruction counts (valgrind --tool=callgrind,
+// which counts independent of load) compare between builds and between the two:
+//   valgrind --tool=callgrind build/tests/bench/frob_core_bench --benchmark_filter=FrobWallFollowerFixedSteps
+BENCHMARK(BM_FrobWallFollowerStep)->Name("FrobWallFollowerFixedSteps")->Iterations(100000);
+BENCHMARK(BM_HandWrittenWallFollowerStep)->Name("HandWrittenWallFollowerFixedSteps")->Iterations(100000);
 
 // The same graph, built fresh each iteration: the cost of creating a task-sized graph.
 void BM_BuildWallFollowerGraph(benchmark::State& state) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <stdexcept>
 
 namespace frob {
 namespace {
@@ -91,6 +92,96 @@ TEST(Behavior, ANodeSharedBetweenGraphsIsEvaluatedOncePerInstant) {
       EXPECT_DOUBLE_EQ(a.at(now), t * t / 2 + 2 * t);
     }
     EXPECT_EQ(evaluations, k + 1);
+  }
+}
+
+// A node that only `inner`'s graph owns is refreshed in its plan without a memo check; `outer`,
+// which reads it through `inner` (shared: the test holds it), still finds it up to date.
+TEST(Behavior, ANodeOnlyOneGraphOwnsIsEvaluatedOncePerInstantWhenAnotherReadsItThroughThatGraph) {
+  int evaluations = 0;
+  Behavior<double> inner = integral(countedTime(evaluations)) + 1.0;
+  Behavior<double> outer = inner * 2.0;
+  Clock clock(0.5);
+  for (int k = 0; k < 4; ++k) {
+    const Instant& now = k == 0 ? clock.now() : clock.advance();
+    double area = now.time * now.time / 2;
+    if (k % 2 == 0) {
+      EXPECT_DOUBLE_EQ(inner.at(now), area + 1.0);
+      EXPECT_DOUBLE_EQ(outer.at(now), 2 * (area + 1.0));
+    } else {
+      EXPECT_DOUBLE_EQ(outer.at(now), 2 * (area + 1.0));
+      EXPECT_DOUBLE_EQ(inner.at(now), area + 1.0);
+    }
+    EXPECT_EQ(evaluations, k + 1);
+  }
+}
+
+// A plan checks the memo of the nodes other graphs can reach (`shared`, and `time()` through it),
+// and refreshes the ones only its own graph reaches unchecked.
+TEST(Behavior, APlanChecksOnlyTheNodesOtherGraphsCanReach) {
+  Behavior<double> shared = time() * 2.0;
+  Behavior<double> root = [&] {
+    Behavior<double> own = shared + 1.0;
+    return Behavior<double>(own * own);
+  }();
+  std::vector<detail::PlanStep> plan = detail::planFor(*root.node());
+  ASSERT_EQ(plan.size(), 4u);  // time(), shared, own, the end
+  EXPECT_EQ(plan[0].run, plan[0].node->planStep(true));
+  EXPECT_EQ(plan[1].run, plan[1].node->planStep(true));
+  EXPECT_EQ(plan[2].run, plan[2].node->planStep(false));
+  EXPECT_EQ(plan[3].node, nullptr);
+}
+
+// A plan of many steps, each running the next by a tail call, runs whole and in order.
+TEST(Behavior, ALongPlanRunsEveryStep) {
+  Behavior<double> t = time();
+  Behavior<double> sum = t;
+  for (int i = 0; i < 1000; ++i) sum = sum + 1.0;
+  EXPECT_EQ(sample(sum, 0.5, 3), (std::vector<double>{1000.0, 1000.5, 1001.0}));
+}
+
+// Nodes that only their graph reaches (refreshed unchecked) give bit-identical values to the same
+// nodes with handles held on them elsewhere (refreshed checked).
+TEST(Behavior, NodesOnlyTheirGraphReachesGiveTheSameValuesAsSharedOnes) {
+  auto build = [](std::vector<Behavior<double>>& keep) {
+    Behavior<double> t = time();
+    Behavior<double> wave = sin(t * 3.7) + 0.1 * t;
+    Behavior<double> area = integral(wave);
+    Behavior<double> slope = derivative(wave);
+    keep = {t, wave, area, slope};
+    return Behavior<double>(area * slope + wave / (1.0 + area * area));
+  };
+  std::vector<Behavior<double>> handles;
+  Behavior<double> own = build(handles);
+  handles.clear();
+  Behavior<double> shared = build(handles);
+  std::vector<double> a = sample(own, 0.01, 1000);
+  std::vector<double> b = sample(shared, 0.01, 1000);
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
+}
+
+// An exception that cuts a plan short, in a node of the plan or in its root, leaves the nodes it
+// brought up to date as they are: sampled again at the same instant, none is evaluated twice.
+TEST(Behavior, AnExceptionThatCutsAPlanShortLeavesNoNodeToBeEvaluatedTwice) {
+  for (bool inRoot : {false, true}) {
+    int evaluations = 0;
+    bool fail = true;
+    Behavior<double> b = [&] {
+      Behavior<double> area = integral(countedTime(evaluations));
+      auto failing = [&fail](double a) {
+        if (fail) throw std::runtime_error("cut short");
+        return a;
+      };
+      return inRoot ? Behavior<double>(lift(failing, area)) : Behavior<double>(lift(failing, area)) + 1.0;
+    }();
+    Clock clock(0.5);
+    EXPECT_THROW(b.at(clock.now()), std::runtime_error);
+    fail = false;
+    EXPECT_DOUBLE_EQ(b.at(clock.now()), inRoot ? 0.0 : 1.0);
+    EXPECT_EQ(evaluations, 1);
+    EXPECT_DOUBLE_EQ(b.at(clock.advance()), inRoot ? 0.125 : 1.125);
+    EXPECT_EQ(evaluations, 2);
   }
 }
 

@@ -140,21 +140,21 @@ struct Arg {
   A value;
   const A& get(const Instant&) const { return value; }
   const A& fresh(const Instant&) const { return value; }
-  void inputs(std::vector<NodeBase*>&) const {}
+  void inputs(std::vector<Input>&) const {}
 };
 template <class T>
 struct Arg<Behavior<T>> {
   std::shared_ptr<BehaviorNode<T>> node;
   const T& get(const Instant& now) const { return node->at(now); }
   const T& fresh(const Instant&) const { return node->value(); }
-  void inputs(std::vector<NodeBase*>& out) const { out.push_back(node.get()); }
+  void inputs(std::vector<Input>& out) const { out.push_back({node.get(), node.use_count()}); }
 };
 template <class R, class F, class... Args>
 struct Arg<Pointwise<R, F, Args...>> {
   Pointwise<R, F, Args...> expr;
   R get(const Instant& now) const { return expr.eval(now); }
   R fresh(const Instant& now) const { return expr.evalFresh(now); }
-  void inputs(std::vector<NodeBase*>& out) const { expr.inputs(out); }
+  void inputs(std::vector<Input>& out) const { expr.inputs(out); }
 };
 
 template <class A>
@@ -172,7 +172,7 @@ class PointwiseNode final : public StrictNode<R, PointwiseNode<R, Expr>> {
  public:
   explicit PointwiseNode(Expr e) : expr_(std::move(e)) {}
   R computeFresh(const Instant& now) { return expr_.evalFresh(now); }
-  void strictInputs(std::vector<NodeBase*>& out) const override { expr_.inputs(out); }
+  void strictInputs(std::vector<Input>& out) const override { expr_.inputs(out); }
 
  private:
   Expr expr_;
@@ -206,7 +206,7 @@ class Pointwise {
     return std::apply([&](const auto&... a) { return R(detail::plain(std::invoke(f_, a.fresh(now)...))); }, args_);
   }
   /// Appends the nodes this expression reads, in the order it reads them (for the library's plans).
-  void inputs(std::vector<detail::NodeBase*>& out) const {
+  void inputs(std::vector<detail::Input>& out) const {
     std::apply([&](const auto&... a) { (a.inputs(out), ...); }, args_);
   }
   /// This expression as one node of the graph.

@@ -69,8 +69,8 @@ struct FrameArg {
   [[gnu::noinline]] const SensorFrame* fetch(const Instant& now) const { return node->at(now); }
   // As for any lifted argument (see Arg): the frame once a plan has fetched it; the node to fetch.
   const SensorFrame* fresh(const Instant&) const { return *slot; }
-  void inputs(std::vector<NodeBase*>& out) const {
-    if (fetched) out.push_back(node.get());
+  void inputs(std::vector<Input>& out) const {
+    if (fetched) out.push_back({node.get(), node.use_count()});
   }
 };
 }  // namespace detail

@@ -9,6 +9,13 @@
 #include <type_traits>
 #include <vector>
 
+// A call that must be compiled as a jump (a plan's steps chain this way), where the compiler can.
+#if defined(__has_cpp_attribute) && __has_cpp_attribute(clang::musttail)
+#define FROB_TAIL_CALL [[clang::musttail]]
+#else
+#define FROB_TAIL_CALL
+#endif
+
 namespace frob {
 
 /// The number of behavior and event nodes alive in the process (to prove memory stays bounded).
@@ -17,6 +24,31 @@ namespace frob {
 namespace detail {
 
 extern std::atomic<long> liveNodes;
+// The last instant at which an exception cut a plan short: at that instant, a node a plan leaves
+// unchecked may already be up to date, so every plan checks every step.
+extern std::atomic<std::uint64_t> planCutShort;
+
+class NodeBase;
+
+// A node a strict node reads, with the number of handles (shared_ptr) that own it: a plan finds
+// from these which nodes no graph but its own can reach. Every input listed is owned by its reader.
+struct Input {
+  NodeBase* node;
+  long owners;
+};
+
+// One step of a plan: refreshes its node, then runs the next step by a tail call, so that a plan
+// runs without a loop or a return per step. The last step of a plan is `last`, which ends it.
+struct PlanStep {
+  using Run = void (*)(const PlanStep*, const Instant&, std::uint64_t id);
+  NodeBase* node;
+  Run run;
+  static void last(const PlanStep*, const Instant&, std::uint64_t) {}
+};
+
+// Refreshes the node of `step` as a `Node` (its refresh inlined when final), then the next step.
+template <class Node, bool checked>
+void runStep(const PlanStep* step, const Instant& now, std::uint64_t id);
 
 // Counts live nodes; every node derives from it. Holds the instant of the node's value, so that
 // a plan (see StrictNode) can bring nodes of any type up to date.
@@ -31,20 +63,29 @@ class NodeBase {
   [[nodiscard]] std::uint64_t stamp() const { return stamp_; }
   // Computes the value at `now` and holds it; called only when stamp() != now.id.
   virtual void refresh(const Instant& now) = 0;
-  // refresh as a plain function, which a plan calls without a virtual dispatch.
-  using Refresher = void (*)(NodeBase&, const Instant&);
-  [[nodiscard]] virtual Refresher refresher() const {
-    return [](NodeBase& n, const Instant& now) { n.refresh(now); };
+  // refresh, given now.id, which a plan keeps in a register.
+  void refreshAt(const Instant& now, std::uint64_t id) { (void)id; refresh(now); }
+  // A plan's step for this node (see PlanStep). A `checked` one first skips a node already up to
+  // date (one that other graphs share).
+  [[nodiscard]] virtual PlanStep::Run planStep(bool checked) const {
+    return checked ? &runStep<NodeBase, true> : &runStep<NodeBase, false>;
   }
   // True if the node reads the same inputs at every instant (strictInputs lists them).
   [[nodiscard]] virtual bool strict() const { return false; }
   // Appends the nodes a strict node reads at every instant, in the order it reads them. Other
   // nodes (switches, events) read their inputs only sometimes and pull them themselves.
-  virtual void strictInputs(std::vector<NodeBase*>& out) const { (void)out; }
+  virtual void strictInputs(std::vector<Input>& out) const { (void)out; }
 
  protected:
   std::uint64_t stamp_ = 0;
 };
+
+template <class Node, bool checked>
+void runStep(const PlanStep* step, const Instant& now, std::uint64_t id) {
+  if (!checked || step->node->stamp() != id) static_cast<Node*>(step->node)->refreshAt(now, id);
+  FROB_TAIL_CALL return step[1].run(step + 1, now, id);
+}
+#undef FROB_TAIL_CALL
 
 // A behavior node: a value at every instant, computed once per instant after its inputs.
 template <class T>
@@ -86,51 +127,61 @@ class BehaviorNode : public NodeBase {
   std::conditional_t<kPlain, T, std::optional<T>> value_{};
 };
 
-// One step of a plan: a node and how to refresh it.
-struct PlanStep {
-  NodeBase* node;
-  NodeBase::Refresher refresh;
-};
-
 // The nodes to bring up to date before `root`, in the order a recursive pull would compute them
-// (inputs before the nodes that read them, each once): `root`'s strict cone, without `root`.
+// (inputs before the nodes that read them, each once): `root`'s strict cone, without `root`. A node
+// that only `root` and nodes of the plan own (so no other graph can reach it) is refreshed
+// unchecked: it is brought up to date at an instant only by a pass that ends with `root`. The last
+// step ends the plan; no steps at all if `root` reads no node.
 std::vector<PlanStep> planFor(const NodeBase& root);
 
 // A behavior node that reads the same inputs at every instant (pointwise functions, integral...).
 // Sampled directly, it first runs its plan: one flat pass over its strict cone that computes each
 // stale node once, inputs first, exactly as a recursive pull would, but without a nested call and
-// a memo check for every edge. Within a plan, a strict node reads its inputs' values directly.
+// a memo check for every edge (nor for nodes only this graph reaches). Within a plan, a strict node
+// reads its inputs' values directly.
 // Derived provides `T computeFresh(const Instant&)`, which may assume its inputs are up to date.
 template <class T, class Derived>
 class StrictNode : public BehaviorNode<T> {
  public:
-  void refresh(const Instant& now) final {
+  void refresh(const Instant& now) final { refreshAt(now, now.id); }
+  void refreshAt(const Instant& now, std::uint64_t id) {
     this->hold(static_cast<Derived*>(this)->computeFresh(now));
-    this->stamp_ = now.id;
+    this->stamp_ = id;
   }
   [[nodiscard]] bool strict() const final { return true; }
-  [[nodiscard]] NodeBase::Refresher refresher() const final {
-    return [](NodeBase& n, const Instant& now) { static_cast<StrictNode&>(n).refresh(now); };
+  [[nodiscard]] PlanStep::Run planStep(bool checked) const final {
+    return checked ? &runStep<StrictNode, true> : &runStep<StrictNode, false>;
   }
 
  protected:
   T compute(const Instant& now) final {
-    if (!planned_) [[unlikely]] plan();
-    const std::uint64_t id = now.id;  // a local, so that it stays in a register across the calls
-    for (const PlanStep& step : plan_) {
-      if (step.node->stamp() != id) step.refresh(*step.node, now);
+    if (first_ == nullptr) [[unlikely]] plan();
+    if (planCutShort.load(std::memory_order_relaxed) == now.id) [[unlikely]] return computeChecked(now);
+    try {
+      first_->run(first_, now, now.id);
+      return static_cast<Derived*>(this)->computeFresh(now);
+    } catch (...) {
+      planCutShort.store(now.id, std::memory_order_relaxed);
+      throw;
     }
-    return static_cast<Derived*>(this)->computeFresh(now);
   }
 
  private:
   // At the first sample, not at creation, so that building a graph stays cheap.
   [[gnu::noinline]] void plan() {
+    static constexpr PlanStep kNoSteps{nullptr, &PlanStep::last};
     plan_ = planFor(*this);
-    planned_ = true;
+    first_ = plan_.empty() ? &kNoSteps : plan_.data();
   }
-  std::vector<PlanStep> plan_;  // nodes owned by this node's inputs, which it keeps alive
-  bool planned_ = false;
+  // The plan with every step checked (a slower pass, after an exception).
+  [[gnu::noinline]] T computeChecked(const Instant& now) {
+    for (const PlanStep& step : plan_) {
+      if (step.node != nullptr && step.node->stamp() != now.id) step.node->refresh(now);
+    }
+    return static_cast<Derived*>(this)->computeFresh(now);
+  }
+  std::vector<PlanStep> plan_;        // nodes owned by this node's inputs, which it keeps alive
+  const PlanStep* first_ = nullptr;  // where the plan starts; none before the first sample
 };
 
 // An event node: at each instant, at most one occurrence carrying a T.
