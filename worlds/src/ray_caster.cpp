@@ -80,12 +80,8 @@ RayCaster::RayCaster(const std::vector<WallDef>& walls, const Point2& lo, const 
 }
 
 void RayCaster::cellRange(double ax, double ay, double bx, double by, int& i0, int& j0, int& i1, int& j1) const {
-  auto clampCell = [](double v, int n) {
-    return static_cast<int>(std::clamp(std::floor(v), 0.0, static_cast<double>(n - 1)));
-  };
-  constexpr double eps = 1e-9;
-  i0 = clampCell((ax - x0_) * inv_ - eps, nx_), i1 = clampCell((bx - x0_) * inv_ + eps, nx_);
-  j0 = clampCell((ay - y0_) * inv_ - eps, ny_), j1 = clampCell((by - y0_) * inv_ + eps, ny_);
+  cellSpan(ax, bx, x0_, inv_, nx_, i0, i1);
+  cellSpan(ay, by, y0_, inv_, ny_, j0, j1);
 }
 
 void RayCaster::setRobots(const std::vector<Point2>& centres, const std::vector<double>& radii) {

@@ -5,6 +5,7 @@
 
 #include "frob/worlds/world_def.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -56,6 +57,15 @@ class RayCaster {
     std::uint32_t begin = 0, end = 0;
   };
   void cellRange(double x0, double y0, double x1, double y1, int& i0, int& j0, int& i1, int& j1) const;
+  // Along one axis, the cells [c0, c1] of n, from `origin`, 1 / size `inv`, that [lo, hi] touches,
+  // padded by a little and clamped to the grid.
+  static void cellSpan(double lo, double hi, double origin, double inv, int n, int& c0, int& c1) {
+    constexpr double eps = 1e-9;
+    const double top = n - 1;
+    // Truncation is floor here: anything below 0 clamps to cell 0 anyway (and NaN too).
+    c0 = static_cast<int>(std::min(top, std::max(0.0, (lo - origin) * inv - eps)));
+    c1 = static_cast<int>(std::min(top, std::max(0.0, (hi - origin) * inv + eps)));
+  }
   void walk(int i, int j, double bx0, double bx1, double by0, double by1, double ox, double oy, double ux,
             double uy, double tmax, int self, RayHit& best) const;
   // Ray o + t u against one segment or circle: `best` becomes the hit when it is nearer.

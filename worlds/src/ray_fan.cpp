@@ -110,15 +110,6 @@ struct FanCaster {
     fanCircle(cx, cy, r, f);
   }
 
-  // As RayCaster::cellRange() for one axis: the cells of [lo, hi], padded by a little, clamped.
-  [[gnu::always_inline]] static void cells(double lo, double hi, double origin, double inv, int n, int& c0, int& c1) {
-    constexpr double eps = 1e-9;
-    const double top = n - 1;
-    // Truncation is floor here: anything below 0 clamps to cell 0 anyway (and NaN too).
-    c0 = static_cast<int>(std::min(top, std::max(0.0, (lo - origin) * inv - eps)));
-    c1 = static_cast<int>(std::min(top, std::max(0.0, (hi - origin) * inv + eps)));
-  }
-
   // The fan of ux/uy[0..3], and ux/uy[4] as a lone fifth ray when WithLone.
   template <bool WithLone>
   [[gnu::always_inline]] static double cast(const RayCaster& g, double ox, double oy, const double* ux,
@@ -145,8 +136,8 @@ struct FanCaster {
         ly = std::min(ly, std::min(ya1, yb1)), hy = std::max(hy, std::max(ya1, yb1));
       }
       int i0, j0, i1, j1;
-      cells(lx, hx, g.x0_, g.inv_, g.nx_, i0, i1);
-      cells(ly, hy, g.y0_, g.inv_, g.ny_, j0, j1);
+      RayCaster::cellSpan(lx, hx, g.x0_, g.inv_, g.nx_, i0, i1);
+      RayCaster::cellSpan(ly, hy, g.y0_, g.inv_, g.ny_, j0, j1);
       for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i)
           if (i < pi0 || i > pi1 || j < pj0 || j > pj1) testCell<WithLone>(g, j * g.nx_ + i, f, lone, self);
