@@ -203,16 +203,21 @@ void RayCastCone(benchmark::State& state) {
   const detail::RayCaster caster(sim.walls(), Point2(-1, -1), Point2(21, 21));
   const std::vector<Ray> rays = mazeRays();
   const double step = 25.0 * pi / 180.0 / 4.0, cosCutoff = std::cos(22.5 * pi / 180.0);
-  std::vector<std::array<Vec2, 5>> cones;  // axis first, then outwards, as the simulation orders them
+  struct Cone {
+    std::array<double, 5> x, y;  // axis first, then outwards, as the simulation orders them
+  };
+  std::vector<Cone> cones;
   for (const Ray& r : rays) {
     const double a = std::atan2(r.dir.y(), r.dir.x());
-    cones.push_back({r.dir, unitVector(a + step), unitVector(a - step), unitVector(a + 2 * step),
-                     unitVector(a - 2 * step)});
+    Cone c{};
+    const double offsets[5] = {0.0, step, -step, 2 * step, -2 * step};
+    for (int k = 0; k < 5; ++k) c.x[k] = std::cos(a + offsets[k]), c.y[k] = std::sin(a + offsets[k]);
+    cones.push_back(c);
   }
   std::size_t k = 0;
   for (auto _ : state) {
     const std::size_t c = k++ % rays.size();
-    benchmark::DoNotOptimize(caster.castCone(rays[c].origin, cones[c], 6.5, -1, cosCutoff));
+    benchmark::DoNotOptimize(caster.castCone(rays[c].origin, cones[c].x, cones[c].y, 6.5, -1, cosCutoff));
   }
   state.counters["rays/s"] = benchmark::Counter(5, benchmark::Counter::kIsIterationInvariantRate);
 }

@@ -63,10 +63,12 @@ TEST(RayCaster, AConeReadsWhatItsRaysReadOneByOneOnEveryInstructionSet) {
     std::vector<Vec2> dirs;
     for (int r = 0; r < rays; ++r) dirs.push_back(unitVector(a + (rays == 1 ? 0.0 : width * (r / (rays - 1.0) - 0.5))));
     const double expected = perRay(caster, o, dirs, range, self, cosCutoff);
+    std::vector<double> xs, ys;
+    for (const Vec2& d : dirs) xs.push_back(d.x()), ys.push_back(d.y());
     const bool before = useAvx2(true);
-    const double withAvx2 = caster.castCone(o, dirs, range, self, cosCutoff);
+    const double withAvx2 = caster.castCone(o, xs, ys, range, self, cosCutoff);
     useAvx2(false);
-    const double baseline = caster.castCone(o, dirs, range, self, cosCutoff);
+    const double baseline = caster.castCone(o, xs, ys, range, self, cosCutoff);
     useAvx2(before);
     ASSERT_EQ(withAvx2, expected) << "cone " << k;
     ASSERT_EQ(baseline, expected) << "cone " << k;

@@ -200,25 +200,24 @@ RayHit RayCaster::cast(const Point2& origin, const Vec2& dir, double range, int 
   return best;
 }
 
-double RayCaster::castCone(const Point2& origin, std::span<const Vec2> dirs, double range, int self,
-                           double cosCutoff) const {
+double RayCaster::castCone(const Point2& origin, std::span<const double> dirX, std::span<const double> dirY,
+                           double range, int self, double cosCutoff) const {
   const double ox = origin.x(), oy = origin.y();
+  const std::size_t n = dirX.size();
   double nearest = range;
   // From inside the grid, four rays at a time (five when five are left); the rest one by one.
   // Each is cast only as far as the nearest echo so far: the reading is the minimum over the
   // rays, so the order does not change it.
   std::size_t fanned = 0;
   if (ox >= x0_ && ox <= x1_ && oy >= y0_ && oy <= y1_) [[likely]] {
-    while (dirs.size() - fanned >= 4) {
-      const int rays = dirs.size() - fanned == 5 ? 5 : 4;
-      double ux[5], uy[5];
-      for (int k = 0; k < rays; ++k) ux[k] = dirs[fanned + k].x(), uy[k] = dirs[fanned + k].y();
-      nearest = castFan(rays, ox, oy, ux, uy, nearest, self, cosCutoff);
+    while (n - fanned >= 4) {
+      const int rays = n - fanned == 5 ? 5 : 4;
+      nearest = castFan(rays, ox, oy, &dirX[fanned], &dirY[fanned], nearest, self, cosCutoff);
       fanned += static_cast<std::size_t>(rays);
     }
   }
-  for (const Vec2& d : dirs.subspan(fanned)) {
-    const RayHit hit = cast(origin, d, nearest, self);
+  for (; fanned < n; ++fanned) {
+    const RayHit hit = cast(origin, Vec2(dirX[fanned], dirY[fanned]), nearest, self);
     if (hit.cosIncidence >= cosCutoff) nearest = std::min(nearest, hit.distance);
   }
   return nearest;

@@ -27,9 +27,9 @@ struct RobotState {
   RobotDef def;
   RobotSpec spec;
   b2Body* body = nullptr;
-  std::vector<Vec2> rayDirs;       // per sonar, per ray: direction relative to heading
+  std::vector<double> rayX, rayY;  // per sonar, per ray: direction relative to heading
   std::vector<Vec2> sonarOffsets;  // per sonar: sensor position relative to the centre, robot frame
-  std::vector<Vec2> coneDirs;      // scratch while sensing: one cone's ray directions in the world frame
+  std::vector<double> worldX, worldY;  // scratch while sensing: rayX/rayY in the world frame
   double cosCutoff = 1.0;
   double forward = 0.0, turn = 0.0;  // commands after acceleration limits
   Pose2 odometry;
@@ -169,9 +169,12 @@ struct Simulation::Impl : b2ContactListener {
       for (int k = 0; k < s.rays; ++k) offsets.push_back((k - centre) * spacing);
       std::stable_sort(offsets.begin(), offsets.end(),
                        [](double x, double y) { return std::abs(x) < std::abs(y) || (std::abs(x) == std::abs(y) && x > y); });
-      for (double off : offsets) r.rayDirs.push_back(unitVector(a + off));
+      for (double off : offsets) {
+        const Vec2 u = unitVector(a + off);
+        r.rayX.push_back(u.x()), r.rayY.push_back(u.y());
+      }
     }
-    r.coneDirs.resize(static_cast<std::size_t>(s.rays));
+    r.worldX.resize(r.rayX.size()), r.worldY.resize(r.rayY.size());
     r.cosCutoff = std::cos(s.specularCutoff);
     r.previous = poseOf(r.body);
     r.odometry = r.previous;
@@ -228,14 +231,18 @@ struct Simulation::Impl : b2ContactListener {
     const Pose2 pose = poseOf(r.body);
     const double c = std::cos(pose.heading), sn = std::sin(pose.heading);
     auto rotate = [&](const Vec2& v) { return Vec2(c * v.x() - sn * v.y(), sn * v.x() + c * v.y()); };
+    for (std::size_t k = 0; k < r.rayX.size(); ++k) {  // every ray at once: the compiler vectorises it
+      r.worldX[k] = c * r.rayX[k] - sn * r.rayY[k];
+      r.worldY[k] = sn * r.rayX[k] + c * r.rayY[k];
+    }
     const std::size_t rays = static_cast<std::size_t>(s.rays);
     for (std::size_t j = 0; j < r.sonarOffsets.size(); ++j) {
       const Point2 origin = pose.position + rotate(r.sonarOffsets[j]);
       // Rays run from the cone's axis outwards, each only as far as the nearest echo so far: a
       // surface beyond it cannot change the reading, and the shorter walk saves most of the work.
       // A hit whose cosIncidence is below the cutoff is reflected away and does not echo.
-      for (std::size_t k = 0; k < rays; ++k) r.coneDirs[k] = rotate(r.rayDirs[j * rays + k]);
-      const double nearest = caster.castCone(origin, r.coneDirs, s.maxRange, static_cast<int>(i), r.cosCutoff);
+      const double nearest = caster.castCone(origin, {&r.worldX[j * rays], rays}, {&r.worldY[j * rays], rays},
+                                             s.maxRange, static_cast<int>(i), r.cosCutoff);
       const double noise = r.sonarRng.gaussian();  // drawn for every sonar so the stream never depends on hits
       f.sonar[j] = nearest >= s.maxRange ? s.maxRange
                                          : std::clamp(nearest * (1.0 + s.noise * noise), s.minRange, s.maxRange);
