@@ -15,9 +15,9 @@ namespace {
 
 constexpr int kVelocityIterations = 8;
 constexpr int kPositionIterations = 3;
-// Robots per chunk of parallel work: sensing a robot costs some 5 us, small chunks balance the
-// threads; noisy odometry costs some 0.15 us a robot, so chunks of 32 are worth handing out.
-constexpr std::size_t kSenseGrain = 2;
+// Robots per chunk of parallel work at least (Workers makes a few chunks per thread): sensing a
+// robot costs some 5 us; noisy odometry some 0.15 us, so chunks of 32 are worth handing out.
+constexpr std::size_t kSenseGrain = 1;
 constexpr std::size_t kOdometryGrain = 32;
 // Continuous collision is on when a robot can cover more than this part of its radius in a step.
 constexpr double kTunnelFraction = 0.25;

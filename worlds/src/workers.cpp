@@ -6,6 +6,10 @@ namespace frob::worlds::detail {
 namespace {
 
 constexpr std::uint64_t kMaxChunks = 0xffff;
+// Each chunk handed out costs about a microsecond here (the claim, the count, and cache lines of
+// neighbouring items moving between cores): a few chunks per thread balance the load well enough.
+// 100 robots sensed on two threads: 337 us a step in chunks of 2, 296 in 8 chunks, 286 in 2.
+constexpr std::size_t kChunksPerThread = 4;
 // Polls before sleeping: a simulation step hands out jobs tens of microseconds apart, and waking
 // a sleeping thread costs tens of them on a virtual machine. A pause takes some 20 ns on recent
 // x86-64 (1-2 ns on older ones), so this polls for up to about 100 us.
@@ -66,7 +70,8 @@ void Workers::work(std::uint64_t generation) {
 }
 
 void Workers::run(std::size_t n, std::size_t grain, const std::function<void(std::size_t, std::size_t)>& job) {
-  grain = std::max({grain, std::size_t{1}, (n + kMaxChunks - 1) / kMaxChunks});
+  const std::size_t most = std::min<std::size_t>(kMaxChunks, kChunksPerThread * static_cast<std::size_t>(count_));
+  grain = std::max({grain, std::size_t{1}, (n + most - 1) / most});
   const std::uint64_t chunks = (n + grain - 1) / grain;
   if (count_ == 1 || chunks <= 1) {
     if (n > 0) job(0, n);
