@@ -1,5 +1,5 @@
-// The ray caster (private to worlds/): a cone cast in one call, with its rays four at a time in
-// SIMD lanes, reads exactly what casting each ray alone reads, with AVX2 and without.
+// The ray caster (private to worlds/): a cone cast in one call, with its rays four or five at a
+// time in SIMD lanes, reads exactly what casting each ray alone reads, with AVX2 and without.
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/simulation.hpp"
 #include "random.hpp"

@@ -31,10 +31,10 @@ class RayCaster {
   void setRobots(const std::vector<Point2>& centres, const std::vector<double>& radii);
   // The nearest hit of the ray from `origin` along unit `dir` within `range`, ignoring robot `self`.
   [[nodiscard]] RayHit cast(const Point2& origin, const Vec2& dir, double range, int self) const;
-  // The sonar reading of a cone: rays from `origin` along the unit (dirX[k], dirY[k]), in order, each cast only
-  // as far as the nearest echo so far; a hit echoes when its cosIncidence >= `cosCutoff`. Returns
-  // the nearest echo, or `range` when none. Bit-identical to calling cast() per ray, but the work
-  // that depends on the origin alone is done once per cone.
+  // The sonar reading of a cone: rays from `origin` along the unit (dirX[k], dirY[k]), in order,
+  // each cast only as far as the nearest echo so far; a hit echoes when its cosIncidence >=
+  // `cosCutoff`. Returns the nearest echo, or `range` when none. Bit-identical to calling cast()
+  // per ray, but the rays of a cone share the walk through the grid.
   [[nodiscard]] double castCone(const Point2& origin, std::span<const double> dirX, std::span<const double> dirY,
                                 double range, int self, double cosCutoff) const;
   // Number of static segments (rectangles and polylines count their sides).

@@ -1,8 +1,9 @@
-// Four rays of a sonar cone cast together. Rays from one origin a few degrees apart cross nearly
-// the same cells, so instead of walking each ray's cells alone (most of the cost was the walk, not
-// the tests), the fan is swept in bands of one cell's length: each band tests the cells under the
-// bounding box of the rays' pieces in it, against all four rays at once in SIMD lanes. A lane is
-// final once its nearest hit lies within the bands swept so far. Every lane computes the same
+// Four rays of a sonar cone cast together, and a fifth alongside. Rays from one origin a few
+// degrees apart cross nearly the same cells, so instead of walking each ray's cells alone (most of
+// the cost was the walk, not the tests), the fan is swept in bands of one cell's length: each band
+// tests the cells under the bounding box of the rays' pieces in it, against four rays at once in
+// SIMD lanes (and a fifth in scalar). A lane is final once its nearest hit lies within the bands
+// swept so far. Every lane computes the same
 // operations as RayCaster::cast() in the same order, so each ray's distance and incidence are
 // bit-identical to casting it alone; only exact ties between two different surfaces could resolve
 // differently, as the cells are visited in another order.
