@@ -147,7 +147,7 @@ struct Arg<Behavior<T>> {
   std::shared_ptr<BehaviorNode<T>> node;
   const T& get(const Instant& now) const { return node->at(now); }
   const T& fresh(const Instant&) const { return node->value(); }
-  void inputs(std::vector<Input>& out) const { out.push_back({node.get(), node.use_count()}); }
+  void inputs(std::vector<Input>& out) const { out.push_back(inputOf(node)); }
 };
 template <class R, class F, class... Args>
 struct Arg<Pointwise<R, F, Args...>> {

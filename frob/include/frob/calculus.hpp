@@ -13,7 +13,7 @@ template <class T>
 class IntegralNode final : public StrictNode<T, IntegralNode<T>> {
  public:
   explicit IntegralNode(std::shared_ptr<BehaviorNode<T>> b) : b_(std::move(b)), sum_(zeroOf<T>()) {}
-  void strictInputs(std::vector<Input>& out) const override { out.push_back({b_.get(), b_.use_count()}); }
+  void strictInputs(std::vector<Input>& out) const override { out.push_back(inputOf(b_)); }
   T computeFresh(const Instant& now) {
     const T& v = b_->value();
     if (started_) sum_ = sum_ + (v + previous_) * (0.5 * (now.time - previousTime_));
@@ -36,7 +36,7 @@ template <class T>
 class DerivativeNode final : public StrictNode<T, DerivativeNode<T>> {
  public:
   explicit DerivativeNode(std::shared_ptr<BehaviorNode<T>> b) : b_(std::move(b)) {}
-  void strictInputs(std::vector<Input>& out) const override { out.push_back({b_.get(), b_.use_count()}); }
+  void strictInputs(std::vector<Input>& out) const override { out.push_back(inputOf(b_)); }
   T computeFresh(const Instant& now) {
     const T& v = b_->value();
     T d = zeroOf<T>();
@@ -59,8 +59,8 @@ class AtExtremumNode final : public StrictNode<T, AtExtremumNode<K, T>> {
   AtExtremumNode(std::shared_ptr<BehaviorNode<K>> key, std::shared_ptr<BehaviorNode<T>> b, bool wantMax)
       : key_(std::move(key)), b_(std::move(b)), wantMax_(wantMax) {}
   void strictInputs(std::vector<Input>& out) const override {
-    out.push_back({key_.get(), key_.use_count()});
-    out.push_back({b_.get(), b_.use_count()});
+    out.push_back(inputOf(key_));
+    out.push_back(inputOf(b_));
   }
   T computeFresh(const Instant&) {
     const K& k = key_->value();

@@ -70,7 +70,7 @@ struct FrameArg {
   // As for any lifted argument (see Arg): the frame once a plan has fetched it; the node to fetch.
   const SensorFrame* fresh(const Instant&) const { return *slot; }
   void inputs(std::vector<Input>& out) const {
-    if (fetched) out.push_back({node.get(), node.use_count()});
+    if (fetched) out.push_back(inputOf(node));
   }
 };
 }  // namespace detail

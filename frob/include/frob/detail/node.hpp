@@ -36,6 +36,11 @@ struct Input {
   NodeBase* node;
   long owners;
 };
+// The Input of a node its reader holds through `handle`.
+template <class Node>
+Input inputOf(const std::shared_ptr<Node>& handle) {
+  return {handle.get(), handle.use_count()};
+}
 
 // One step of a plan: refreshes its node, then runs the next step by a tail call, so that a plan
 // runs without a loop or a return per step. The last step of a plan is `last`, which ends it.
