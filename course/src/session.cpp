@@ -145,7 +145,7 @@ Result<Summary> runSession(const RunDef& def) {
         w.summary.goalDistance = std::min(d, w.summary.goalDistance.value_or(d));
         if (d <= kGoalRadius && !w.summary.goalTime) w.summary.goalTime = rec.time;
       }
-      Timeline& timeline = run.robot(i).debugChannel()->timeline();
+      Timeline& timeline = run.timeline(i);
       for (TaskRecord& ended : timeline.drainEnded()) {
         // The top task returning with nothing left running: this controller is done.
         if (ended.parent < 0 && ended.how == TaskEnd::Returned && timeline.running().empty()) w.summary.finishedAt = ended.end;
@@ -175,7 +175,7 @@ Result<Summary> runSession(const RunDef& def) {
   for (std::size_t i = 0; i < n; ++i) {
     RobotWatch& w = watch[i];
     w.summary.lastTasks.assign(w.lastEnded.begin(), w.lastEnded.end());
-    for (TaskRecord& r : run.robot(i).debugChannel()->timeline().running()) {
+    for (TaskRecord& r : run.timeline(i).running()) {
       r.end = sim.time();
       if (!out.timeline.empty()) w.all.push_back(r);
       w.summary.lastTasks.push_back(std::move(r));

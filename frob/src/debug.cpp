@@ -19,8 +19,9 @@ std::int64_t Timeline::start(std::int64_t parent, std::string name, std::string 
   std::int64_t id = next_++;
   auto p = running_.find(parent);
   int depth = p == running_.end() ? 0 : p->second.depth + 1;
-  running_.emplace(id, TaskRecord{.id = id, .parent = parent, .depth = depth, .name = std::move(name),
-                                  .where = std::move(where), .start = time});
+  const auto at = running_.emplace(id, TaskRecord{.id = id, .parent = parent, .depth = depth, .name = std::move(name),
+                                                  .where = std::move(where), .start = time}).first;
+  if (observer_) observer_(at->second);
   return id;
 }
 
@@ -32,6 +33,7 @@ void Timeline::end(std::int64_t id, double time, TaskEnd how, std::string detail
   r.end = time;
   r.how = how;
   r.detail = std::move(detail);
+  if (observer_) observer_(r);
   if (ended_.size() == capacity_) {
     ended_.pop_front();
     ++dropped_;

@@ -131,7 +131,7 @@ void RunView::takeInstant(const worlds::StepRecord& rec) {
 
 void RunView::markTasks(const worlds::Run& run, double now) {
   if (def_.plotRobot >= scene_.robots.size()) return;
-  const std::vector<TaskRecord> running = run.robot(def_.plotRobot).debugChannel()->timeline().running();
+  const std::vector<TaskRecord> running = run.timeline(def_.plotRobot).running();
   if (running.empty()) {
     lastTaskId_ = -1;
     return;
@@ -164,7 +164,7 @@ void RunView::update(const worlds::Run& run) {
     v.bumps = r.bumps;
     v.wheels = r.wheels;
     v.picture = r.picture;
-    v.task = run.robot(i).debugChannel()->timeline().current();
+    v.task = run.timeline(i).current();
   }
   markTasks(run, last.time);
 }

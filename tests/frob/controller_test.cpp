@@ -48,6 +48,29 @@ TEST(Controller, TaskRunsUntilItEndsThenStops) {
   EXPECT_EQ(forwardAt(makeController(followTaskOf), 7), expected);
 }
 
+TEST(RunningController, FailsOnNonFiniteWheelsAndStopsFromThenOn) {
+  Robot r = scripted();
+  RunningController c([](const Robot& robot) { return wheels(1.0 / (frontSonar(robot) - 1.5), 0.0); }, r);
+  Clock clock(0.25);
+  EXPECT_EQ(c.step(clock.now()).forward, 2.0);  // 1 / (2 - 1.5)
+  EXPECT_FALSE(c.failed());
+  (void)c.step(clock.advance());                 // 1 / (1.75 - 1.5) = 4
+  EXPECT_EQ(c.step(clock.advance()).forward, 0.0);  // 1 / 0: infinite
+  EXPECT_TRUE(c.failed());
+  EXPECT_EQ(c.failure(), "the controller commanded non-finite wheels {forward inf m/s, turn 0.000 rad/s} at t = 0.500 s");
+  EXPECT_EQ(c.step(clock.advance()).forward, 0.0);
+}
+
+TEST(RunningController, ABuildThatThrowsOrAnAllocationThatFailsIsAReason) {
+  Robot r = scripted();
+  RunningController bad([](const Robot&) -> Behavior<Wheels> { throw std::runtime_error("no sonar"); }, r);
+  EXPECT_TRUE(bad.failed());
+  EXPECT_EQ(bad.failure(), "building its controller failed: no sonar");
+  RunningController hungry([](const Robot&) { return toBehavior(lift([](double) -> Wheels { throw std::bad_alloc(); }, time())); }, r);
+  (void)hungry.step(Clock(0.1).now());
+  EXPECT_EQ(hungry.failure(), "ran out of memory (std::bad_alloc): it allocated more than a controller may");
+}
+
 }  // namespace
 
 // The declaration a controller file ends with, here under a name of its own.

@@ -230,6 +230,36 @@ TEST(Task, TheTimelineRecordsEveryTaskWithHowItEnded) {
   EXPECT_NE(ended[1].where.find("task_test.cpp:"), std::string::npos);
 }
 
+TEST(Task, AnObservedTimelineReplaysIntoAnIdenticalOne) {
+  auto seq = []() -> Task<Wheels> {
+    co_await countTo(2);
+    co_await countTo(1);
+  };
+  Robot r = idleRobot();
+  Timeline mirror;
+  std::vector<TaskEnd> seen;
+  r.debugChannel()->timeline().observe([&](const TaskRecord& t) {
+    seen.push_back(t.how);
+    if (t.how == TaskEnd::Running) {
+      EXPECT_EQ(mirror.start(t.parent, t.name, t.where, t.start), t.id);
+    } else {
+      mirror.end(t.id, t.end, t.how, t.detail);
+    }
+  });
+  (void)samples(runTask(r, seq()), 0.1, 5);
+  // The outer task starts, then each inner one starts and returns in turn.
+  EXPECT_EQ(seen, (std::vector<TaskEnd>{TaskEnd::Running, TaskEnd::Running, TaskEnd::Returned, TaskEnd::Running,
+                                        TaskEnd::Returned, TaskEnd::Returned}));
+  const std::deque<TaskRecord>& a = r.debugChannel()->timeline().ended();
+  ASSERT_EQ(mirror.ended().size(), a.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(mirror.ended()[k].name, a[k].name);
+    EXPECT_EQ(mirror.ended()[k].depth, a[k].depth);
+    EXPECT_EQ(mirror.ended()[k].end, a[k].end);
+    EXPECT_EQ(mirror.ended()[k].detail, a[k].detail);
+  }
+}
+
 Task<Wheels> goAhead() {
   return mkTask([](const TaskState& ts) {
     const Robot& r = ts.robot();

@@ -103,7 +103,7 @@ TEST(RunView, PathsPlotsAndTaskMarksGrowWithTheRunEvenWhenTheTimelineIsDrained) 
     run.step();
     view.update(run);
     // The app streams the timeline to a file and drains it each step; the view must not need it.
-    for (const TaskRecord& t : run.robot(0).debugChannel()->timeline().drainEnded()) ended.push_back(t.name);
+    for (const TaskRecord& t : run.timeline(0).drainEnded()) ended.push_back(t.name);
   }
   const RobotView& robot = view.scene().robots[0];
   const auto& steps = run.recorder().steps();

@@ -50,7 +50,7 @@ TEST(Run, ThePapersRunAroundWandersTheEmptyRoomWithoutTouchingAWall) {
   EXPECT_GT(travelled, 5.0);  // it really wandered
   // The task's picture is recorded at the robot's place in the world each step.
   EXPECT_EQ(steps.back().robots[0].picture.shapes().size(), 1u);
-  EXPECT_GT(run.robot(0).debugChannel()->timeline().ended().size(), 4u);
+  EXPECT_GT(run.timeline(0).ended().size(), 4u);
 }
 
 TEST(Run, AFailingControllerStopsItsRobotOnlyAndIsReportedWithTheTime) {

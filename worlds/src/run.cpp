@@ -2,75 +2,76 @@
 
 #include "frob/errors.hpp"
 
-#include <cstdio>
-#include <exception>
-
 namespace frob::worlds {
 
 namespace {
 
-// The message of the exception in flight.
-std::string currentMessage() {
-  try {
-    throw;
-  } catch (const std::exception& e) {
-    return e.what();
-  } catch (...) {
-    return "an exception of unknown type";
+// Controllers sampled here, each robot reading the frame its simulation refreshes in place.
+class InProcessDriver final : public ControllerDriver {
+ public:
+  InProcessDriver(const Simulation& sim, const std::vector<Controller>& controllers) {
+    const std::size_t n = sim.robotCount();
+    FROB_ASSERT(controllers.size() == n || controllers.size() == 1,
+                "Run: give one controller per robot, or one for all robots");
+    for (std::size_t i = 0; i < n; ++i) {
+      // The simulation outlives its robots, so the frame is borrowed, not owned.
+      const Robot robot(sim.spec(i), std::shared_ptr<const SensorFrame>(std::shared_ptr<void>(), &sim.frame(i)));
+      controllers_.emplace_back(controllers.size() == 1 ? controllers.front() : controllers[i], robot);
+    }
   }
-}
+
+  void decide(const Instant& now, std::span<Wheels> wheels, std::span<Picture> pictures,
+              std::vector<std::pair<std::size_t, std::string>>& failed) override {
+    if (!started_) {  // controllers that failed while being built, reported at the first instant
+      started_ = true;
+      for (std::size_t i = 0; i < controllers_.size(); ++i) {
+        if (controllers_[i].failed()) failed.emplace_back(i, controllers_[i].failure());
+      }
+    }
+    for (std::size_t i = 0; i < controllers_.size(); ++i) {
+      RunningController& c = controllers_[i];
+      if (c.failed()) continue;
+      wheels[i] = c.step(now, &pictures[i]);
+      if (c.failed()) failed.emplace_back(i, c.failure());
+    }
+  }
+
+  Timeline& timeline(std::size_t i) override { return controllers_.at(i).robot().debugChannel()->timeline(); }
+
+ private:
+  std::vector<RunningController> controllers_;
+  bool started_ = false;
+};
 
 }  // namespace
 
-Run::Run(const WorldDef& world, const SimOptions& options, const std::vector<Controller>& controllers,
-         RecorderOptions recording)
-    : sim_(std::make_unique<Simulation>(world, options)), clock_(sim_->dt()), recorder_(recording) {
-  std::size_t n = sim_->robotCount();
-  FROB_ASSERT(controllers.size() == n || controllers.size() == 1,
-              "Run: give one controller per robot, or one for all robots");
-  wheels_.resize(n);
-  pictures_.resize(n);
-  // Each robot reads its frame where the simulation refreshes it (the simulation outlives the robots).
-  for (std::size_t i = 0; i < n; ++i) {
-    robots_.emplace_back(sim_->spec(i), std::shared_ptr<const SensorFrame>(std::shared_ptr<void>(), &sim_->frame(i)));
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    const Controller& make = controllers.size() == 1 ? controllers.front() : controllers[i];
-    try {
-      controllers_.emplace_back(make(robots_[i]));
-    } catch (...) {
-      controllers_.emplace_back(std::nullopt);
-      fail(i, 0.0, "building its controller failed: " + currentMessage());
-    }
-  }
+DriverFactory inProcess(std::vector<Controller> controllers) {
+  return [controllers = std::move(controllers)](const Simulation& sim) -> std::unique_ptr<ControllerDriver> {
+    return std::make_unique<InProcessDriver>(sim, controllers);
+  };
 }
 
-void Run::fail(std::size_t i, double time, const std::string& why) {
-  controllers_[i].reset();
-  wheels_[i] = Wheels{};
-  pictures_[i] = Picture{};
-  failures_.push_back({i, time, sim_->robotName(i) + ": " + why});
+Run::Run(const WorldDef& world, const SimOptions& options, const std::vector<Controller>& controllers,
+         RecorderOptions recording)
+    : Run(world, options, inProcess(controllers), recording) {}
+
+Run::Run(const WorldDef& world, const SimOptions& options, const DriverFactory& driver, RecorderOptions recording)
+    : sim_(std::make_unique<Simulation>(world, options)), clock_(sim_->dt()), recorder_(recording) {
+  driver_ = driver(*sim_);
+  wheels_.resize(sim_->robotCount());
+  pictures_.resize(sim_->robotCount());
 }
 
 void Run::step() {
   const Instant& now = started_ ? clock_.advance() : clock_.now();
   started_ = true;
   sim_->sense();
-  for (std::size_t i = 0; i < controllers_.size(); ++i) {
-    if (!controllers_[i]) continue;
-    try {
-      Wheels w = controllers_[i]->at(now);
-      if (!isFinite(w)) {
-        char at[48];
-        std::snprintf(at, sizeof at, " at t = %.3f s", now.time);
-        fail(i, now.time, "the controller commanded non-finite wheels " + toString(w) + at);
-        continue;
-      }
-      wheels_[i] = w;
-      pictures_[i] = robots_[i].debugChannel()->picture(now);
-    } catch (...) {
-      fail(i, now.time, currentMessage());
-    }
+  failed_.clear();
+  driver_->decide(now, wheels_, pictures_, failed_);
+  for (auto& [robot, why] : failed_) {
+    wheels_[robot] = Wheels{};
+    pictures_[robot] = Picture{};
+    failures_.push_back({robot, now.time, sim_->robotName(robot) + ": " + why});
   }
   recorder_.record(*sim_, wheels_, pictures_);
   sim_->step(wheels_);

@@ -12,6 +12,7 @@
 #include "frob/task.hpp"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <type_traits>
 
@@ -63,6 +64,29 @@ template <class F>
     return [f](const Robot& r) { return detail::controllerWheels(r, std::invoke(f)); };
   }
 }
+
+/// One robot's controller as a host samples it, instant by instant. A controller that throws
+/// (building it or sampling it) or commands non-finite wheels fails: it keeps the reason, and its
+/// robot is stopped from then on. The simulator's run and the sandboxed controller host share it.
+class RunningController {
+ public:
+  /// Builds `make`'s controller for `robot`; a throw makes it failed at once.
+  RunningController(const Controller& make, const Robot& robot);
+  /// The wheels at `now`: the controller's command, or a stop once it has failed. With `picture`,
+  /// also the overlay of the pictures its tasks publish now (empty once failed).
+  Wheels step(const Instant& now, Picture* picture = nullptr);
+  /// True once it has failed.
+  [[nodiscard]] bool failed() const { return !behavior_; }
+  /// Why it failed, e.g. "the controller commanded non-finite wheels ... at t = 1.000 s"; "" while it runs.
+  [[nodiscard]] const std::string& failure() const { return failure_; }
+  /// The robot it drives (its debug channel holds the task timeline).
+  [[nodiscard]] const Robot& robot() const { return robot_; }
+
+ private:
+  Robot robot_;
+  std::optional<Behavior<Wheels>> behavior_;  // empty once failed
+  std::string failure_;
+};
 
 }  // namespace frob
 

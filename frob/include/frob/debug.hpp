@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -59,9 +60,13 @@ class Timeline {
   std::vector<TaskRecord> drainEnded();
   /// How many ended records were dropped because nobody drained them.
   [[nodiscard]] std::int64_t dropped() const { return dropped_; }
+  /// Calls `observer` with each record as it starts (how == Running) and as it ends, so that a
+  /// host can mirror the timeline elsewhere by replaying start() and end() in the same order.
+  void observe(std::function<void(const TaskRecord&)> observer) { observer_ = std::move(observer); }
 
  private:
   std::size_t capacity_;
+  std::function<void(const TaskRecord&)> observer_;
   std::int64_t next_ = 0;
   std::int64_t dropped_ = 0;
   std::map<std::int64_t, TaskRecord> running_;

@@ -7,7 +7,9 @@
 #include "frob/worlds/recorder.hpp"
 #include "frob/worlds/simulation.hpp"
 
+#include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -24,6 +26,25 @@ struct ControllerFailure {
   std::string message;    ///< readable reason, naming the robot and (for tasks) the task
 };
 
+/// The controllers of a run as the simulation sees them: at each instant every robot's frame goes
+/// in and its wheels come out. In this process (inProcess), or in a sandboxed controller host.
+class ControllerDriver {
+ public:
+  virtual ~ControllerDriver() = default;
+  /// Sets wheels[i] and pictures[i] for every robot at `now`, from the simulation's frames. A
+  /// controller that fails appends (robot, reason) to `failed` once and commands a stop from then on.
+  virtual void decide(const Instant& now, std::span<Wheels> wheels, std::span<Picture> pictures,
+                      std::vector<std::pair<std::size_t, std::string>>& failed) = 0;
+  /// Robot `i`'s task timeline as its controller reports it.
+  [[nodiscard]] virtual Timeline& timeline(std::size_t i) = 0;
+};
+
+/// Makes the driver of a run once its simulation is built.
+using DriverFactory = std::function<std::unique_ptr<ControllerDriver>(const Simulation&)>;
+
+/// Controllers run in this process: one per robot, or one for all robots.
+[[nodiscard]] DriverFactory inProcess(std::vector<Controller> controllers);
+
 /// A world running its controllers. Logical time only; the same world, seed and controllers give
 /// a bit-identical recording.
 class Run {
@@ -31,6 +52,8 @@ class Run {
   /// Builds the world and one controller per robot from `controllers` (one per robot, or one for all).
   Run(const WorldDef& world, const SimOptions& options, const std::vector<Controller>& controllers,
       RecorderOptions recording = {});
+  /// Builds the world, then its controllers' driver with `driver`.
+  Run(const WorldDef& world, const SimOptions& options, const DriverFactory& driver, RecorderOptions recording = {});
 
   /// Senses, samples every controller at the current instant, records, and steps physics once.
   void step();
@@ -41,21 +64,19 @@ class Run {
   [[nodiscard]] const Simulation& simulation() const { return *sim_; }
   /// Every recorded instant and the trajectory hash.
   [[nodiscard]] const Recorder& recorder() const { return recorder_; }
-  /// Robot `i` as its controller sees it; its debugChannel() holds pictures and the task timeline.
-  [[nodiscard]] const Robot& robot(std::size_t i) const { return robots_.at(i); }
+  /// Robot `i`'s task timeline, as its controller reports it.
+  [[nodiscard]] Timeline& timeline(std::size_t i) const { return driver_->timeline(i); }
   /// The controllers that failed, in the order they did.
   [[nodiscard]] const std::vector<ControllerFailure>& failures() const { return failures_; }
 
  private:
-  void fail(std::size_t i, double time, const std::string& why);
-
   std::unique_ptr<Simulation> sim_;
+  std::unique_ptr<ControllerDriver> driver_;
   Clock clock_;
   bool started_ = false;
-  std::vector<Robot> robots_;
-  std::vector<std::optional<Behavior<Wheels>>> controllers_;  // empty once failed
   std::vector<Wheels> wheels_;
   std::vector<Picture> pictures_;
+  std::vector<std::pair<std::size_t, std::string>> failed_;  // this step's new failures
   Recorder recorder_;
   std::vector<ControllerFailure> failures_;
 };
