@@ -5,6 +5,7 @@ packages=(
   cmake ninja-build pkg-config ccache              # build tools
   clang-16 libclang-rt-16-dev                      # the compiler (see README: GCC 12 breaks coroutines)
   libeigen3-dev libbox2d-dev libassimp-dev         # maths, physics, meshes
+  libseccomp-dev                                   # the controller host's system-call filter
   libosmesa6-dev libpng-dev libfreetype-dev fonts-dejavu-core   # offscreen rendering and text
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev   # video encoding
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev           # world files, command line, JSON

@@ -1,0 +1,70 @@
+#pragma once
+/// Student controllers in a sandboxed process of their own: the controller host. The world, its
+/// seed and every measurement stay here; the host only ever sees each robot's sensor frame and
+/// answers its wheels (and, when a video is made, its picture and task timeline).
+///
+///   Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start({"wander.so"});
+///   worlds::Run run(world, {}, (*host)->driver({0}, /*pictures=*/false));
+///   run.runUntil(60);   // a crash, a hang or a forbidden call fails the robot with a reason
+
+#include "frob/controller.hpp"
+#include "frob/render/result.hpp"
+#include "frob/sandbox/confine.hpp"
+#include "frob/worlds/run.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace frob::course {
+
+using render::Result;
+using render::Status;
+
+/// The limits of a controller host and how it waits for its turn.
+struct IsolationDef {
+  double stepSeconds = 1.0;                 ///< wall-clock time one step of all its robots may take
+  double startSeconds = 10.0;               ///< to load the modules (global constructors run) and answer
+  double runSeconds = 600.0;                ///< wall-clock time of the whole run, and its CPU limit
+  std::uint64_t memoryBytes = 1ULL << 30;   ///< its address space
+  std::uint64_t outputBytes = 1ULL << 20;   ///< of its stdout and stderr passed on; the rest is dropped
+  std::uint64_t fileBytes = 16ULL << 20;    ///< largest file it may write in its scratch folder
+  std::uint64_t spinNanoseconds = 50'000;   ///< each side spins this long before it sleeps; 0 when runs share the cores
+  std::function<void(std::string_view)> output;  ///< where its output goes; empty: this process's stderr
+};
+
+/// A controller host process with the modules it loaded. Killed, and its scratch folder removed,
+/// when the last reference goes.
+class ControllerHost : public std::enable_shared_from_this<ControllerHost> {
+ public:
+  /// Starts a sandboxed host that loads `modules` (compiled controller files, named in messages
+  /// by `sources`). Fails with a reason when one cannot be loaded or its global constructors fail.
+  [[nodiscard]] static Result<std::shared_ptr<ControllerHost>> start(const std::vector<std::filesystem::path>& modules,
+                                                                     const std::vector<std::string>& sources,
+                                                                     IsolationDef def = {});
+  ~ControllerHost();
+  ControllerHost(const ControllerHost&) = delete;
+  ControllerHost& operator=(const ControllerHost&) = delete;
+
+  /// What each module declared with FROB_CONTROLLER (its `make` is empty: it runs in the host).
+  [[nodiscard]] const std::vector<ControllerEntry>& entries() const;
+  /// Every layer of the sandbox, and whether it was applied.
+  [[nodiscard]] const std::vector<sandbox::Layer>& layers() const;
+  /// The driver of a run whose robot i runs module modulePerRobot[i] (one entry: all robots);
+  /// with `pictures`, each reply carries the robot's picture. A host drives one run.
+  [[nodiscard]] worlds::DriverFactory driver(std::vector<std::size_t> modulePerRobot, bool pictures);
+  /// Things worth saying that are not failures, e.g. that output was dropped.
+  [[nodiscard]] std::vector<std::string> notes() const;
+
+  struct Impl;
+
+ private:
+  explicit ControllerHost(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace frob::course

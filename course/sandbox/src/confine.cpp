@@ -1,0 +1,216 @@
+#include "frob/sandbox/confine.hpp"
+
+#include <fcntl.h>
+#include <grp.h>
+#include <linux/landlock.h>
+#include <sched.h>
+#include <seccomp.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
+namespace frob::sandbox {
+
+namespace {
+
+std::string errorText(const char* what) { return std::string(what) + ": " + std::strerror(errno); }
+
+// Landlock's rights, by the ABI that added them (Debian 12's headers know only ABI 1).
+constexpr std::uint64_t kFsAbi1 = (1ULL << 13) - 1;  // EXECUTE .. MAKE_SYM
+constexpr std::uint64_t kFsRefer = 1ULL << 13;       // ABI 2
+constexpr std::uint64_t kFsTruncate = 1ULL << 14;    // ABI 3
+constexpr std::uint64_t kFsIoctlDev = 1ULL << 15;    // ABI 5
+constexpr std::uint64_t kNetBindTcp = 1ULL << 0, kNetConnectTcp = 1ULL << 1;     // ABI 4
+constexpr std::uint64_t kScopeAbstractUnix = 1ULL << 0, kScopeSignal = 1ULL << 1;  // ABI 6
+constexpr std::uint64_t kFileRights = LANDLOCK_ACCESS_FS_EXECUTE | LANDLOCK_ACCESS_FS_WRITE_FILE |
+                                      LANDLOCK_ACCESS_FS_READ_FILE | kFsTruncate | kFsIoctlDev;
+
+// landlock_ruleset_attr as the newest ABI lays it out; older kernels are given a prefix of it.
+struct RulesetAttr {
+  std::uint64_t handledFs = 0, handledNet = 0, scoped = 0;
+};
+
+// Adds a rule granting `rights` (those a file can hold, when `path` is a file) below `path`.
+bool addRule(int ruleset, const std::string& path, std::uint64_t rights, std::string& problem) {
+  const int fd = ::open(path.c_str(), O_PATH | O_CLOEXEC);
+  if (fd < 0) return errno == ENOENT;  // nothing there to grant
+  struct stat st {};
+  if (::fstat(fd, &st) == 0 && !S_ISDIR(st.st_mode)) rights &= kFileRights;
+  landlock_path_beneath_attr rule{.allowed_access = rights, .parent_fd = fd};
+  const long rc = ::syscall(SYS_landlock_add_rule, ruleset, LANDLOCK_RULE_PATH_BENEATH, &rule, 0);
+  ::close(fd);
+  if (rc != 0) problem = errorText(("adding " + path).c_str());
+  return rc == 0;
+}
+
+}  // namespace
+
+Layer limitResources(const Limits& limits) {
+  Layer layer{.name = "resource limits"};
+  const auto set = [&](int resource, std::uint64_t value, const char* what) {
+    if (value == 0 && resource != RLIMIT_CORE) return true;
+    const rlimit r{value, value};
+    if (::setrlimit(resource, &r) == 0) return true;
+    layer.note = errorText(what);
+    return false;
+  };
+  // CPU: SIGXCPU at the limit, SIGKILL one second later.
+  rlimit cpu{limits.cpuSeconds, limits.cpuSeconds + 1};
+  const bool ok = set(RLIMIT_CORE, 0, "no core files") && set(RLIMIT_AS, limits.memoryBytes, "memory") &&
+                  set(RLIMIT_FSIZE, limits.fileBytes, "file size") && set(RLIMIT_NOFILE, limits.openFiles, "open files") &&
+                  (limits.cpuSeconds == 0 || ::setrlimit(RLIMIT_CPU, &cpu) == 0 || (layer.note = errorText("cpu"), false));
+  layer.applied = ok;
+  if (ok) layer.note = "cpu " + std::to_string(limits.cpuSeconds) + " s, memory " + std::to_string(limits.memoryBytes >> 20) +
+                       " MiB, files " + std::to_string(limits.fileBytes >> 20) + " MiB, no core files";
+  return layer;
+}
+
+Layer dropPrivileges(std::uint32_t uid, std::uint32_t gid) {
+  Layer layer{.name = "unprivileged user"};
+  if (::geteuid() != 0) {
+    layer.note = "not needed: not running as root";
+    return layer;
+  }
+  if (::setgroups(0, nullptr) != 0 || ::setresgid(gid, gid, gid) != 0 || ::setresuid(uid, uid, uid) != 0) {
+    layer.note = errorText("setuid");
+    return layer;
+  }
+  layer.applied = true;
+  layer.note = "uid " + std::to_string(uid);
+  return layer;
+}
+
+Layer noNewPrivileges() {
+  Layer layer{.name = "no new privileges"};
+  layer.applied = ::prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) == 0;
+  if (!layer.applied) layer.note = errorText("prctl");
+  return layer;
+}
+
+Layer restrictFiles(const FileAccess& access) {
+  Layer layer{.name = "landlock"};
+  const long abi = ::syscall(SYS_landlock_create_ruleset, nullptr, 0, LANDLOCK_CREATE_RULESET_VERSION);
+  if (abi < 1) {
+    layer.note = errno == EOPNOTSUPP ? "not available: Landlock is disabled in this kernel"
+                                     : "not available: this kernel has no Landlock (" + std::string(std::strerror(errno)) + ")";
+    return layer;
+  }
+  RulesetAttr attr{.handledFs = kFsAbi1};
+  std::size_t size = sizeof(std::uint64_t);
+  if (abi >= 2) attr.handledFs |= kFsRefer;
+  if (abi >= 3) attr.handledFs |= kFsTruncate;
+  if (abi >= 4) attr.handledNet = kNetBindTcp | kNetConnectTcp, size = 2 * sizeof(std::uint64_t);
+  if (abi >= 5) attr.handledFs |= kFsIoctlDev;
+  if (abi >= 6) attr.scoped = kScopeAbstractUnix | kScopeSignal, size = sizeof attr;
+  const int ruleset = static_cast<int>(::syscall(SYS_landlock_create_ruleset, &attr, size, 0));
+  if (ruleset < 0) {
+    layer.note = errorText("landlock_create_ruleset");
+    return layer;
+  }
+  constexpr std::uint64_t kRead = LANDLOCK_ACCESS_FS_READ_FILE | LANDLOCK_ACCESS_FS_READ_DIR;
+  const std::uint64_t all = attr.handledFs & ~(LANDLOCK_ACCESS_FS_MAKE_CHAR | LANDLOCK_ACCESS_FS_MAKE_BLOCK);
+  bool ok = true;
+  for (const std::string& p : access.read) ok = ok && addRule(ruleset, p, kRead, layer.note);
+  for (const std::string& p : access.execute) ok = ok && addRule(ruleset, p, kRead | LANDLOCK_ACCESS_FS_EXECUTE, layer.note);
+  for (const std::string& p : access.write) ok = ok && addRule(ruleset, p, all & ~LANDLOCK_ACCESS_FS_EXECUTE, layer.note);
+  if (ok && ::syscall(SYS_landlock_restrict_self, ruleset, 0) != 0) ok = false, layer.note = errorText("landlock_restrict_self");
+  ::close(ruleset);
+  layer.applied = ok;
+  if (ok) layer.note = "ABI " + std::to_string(abi);
+  return layer;
+}
+
+Layer restrictSyscalls(SyscallPolicy policy) {
+  Layer layer{.name = "seccomp"};
+  const bool controller = policy == SyscallPolicy::Controller;
+  scmp_filter_ctx ctx = ::seccomp_init(SCMP_ACT_ALLOW);
+  if (ctx == nullptr) {
+    layer.note = "not available: seccomp_init failed";
+    return layer;
+  }
+  const std::uint32_t refuse = controller ? SCMP_ACT_TRAP : SCMP_ACT_ERRNO(EPERM);
+  int rc = 0;
+  const auto deny = [&](int call) {
+    if (rc == 0) rc = ::seccomp_rule_add(ctx, refuse, call, 0);
+  };
+  for (int call : {SCMP_SYS(socket), SCMP_SYS(socketpair), SCMP_SYS(connect), SCMP_SYS(bind), SCMP_SYS(listen),
+                   SCMP_SYS(accept), SCMP_SYS(accept4), SCMP_SYS(ptrace), SCMP_SYS(process_vm_readv),
+                   SCMP_SYS(process_vm_writev), SCMP_SYS(io_uring_setup), SCMP_SYS(bpf), SCMP_SYS(perf_event_open),
+                   SCMP_SYS(userfaultfd), SCMP_SYS(mount), SCMP_SYS(umount2), SCMP_SYS(unshare), SCMP_SYS(setns),
+                   SCMP_SYS(chroot), SCMP_SYS(pivot_root), SCMP_SYS(keyctl), SCMP_SYS(add_key), SCMP_SYS(request_key),
+                   SCMP_SYS(init_module), SCMP_SYS(finit_module), SCMP_SYS(kexec_load), SCMP_SYS(personality)}) {
+    deny(call);
+  }
+  if (controller) {
+    for (int call : {SCMP_SYS(execve), SCMP_SYS(execveat), SCMP_SYS(fork), SCMP_SYS(vfork), SCMP_SYS(tkill),
+                     SCMP_SYS(pidfd_open), SCMP_SYS(pidfd_send_signal), SCMP_SYS(pidfd_getfd), SCMP_SYS(setsid),
+                     SCMP_SYS(setpgid)}) {
+      deny(call);
+    }
+    // Threads may start; processes may not. clone3 hides its flags from the filter, so it reports
+    // "not implemented" and the C library falls back to clone.
+    const scmp_arg_cmp noThread{.arg = 0, .op = SCMP_CMP_MASKED_EQ, .datum_a = CLONE_THREAD, .datum_b = 0};
+    if (rc == 0) rc = ::seccomp_rule_add_array(ctx, refuse, SCMP_SYS(clone), 1, &noThread);
+    if (rc == 0) rc = ::seccomp_rule_add(ctx, SCMP_ACT_ERRNO(ENOSYS), SCMP_SYS(clone3), 0);
+    // Signals only to itself: the target (a pid, or a thread group's) must be its own pid.
+    const auto self = static_cast<scmp_datum_t>(::getpid());
+    for (int call : {SCMP_SYS(kill), SCMP_SYS(tgkill), SCMP_SYS(rt_sigqueueinfo), SCMP_SYS(rt_tgsigqueueinfo)}) {
+      for (scmp_compare op : {SCMP_CMP_GT, SCMP_CMP_LT}) {
+        const scmp_arg_cmp other{.arg = 0, .op = op, .datum_a = self, .datum_b = 0};
+        if (rc == 0) rc = ::seccomp_rule_add_array(ctx, refuse, call, 1, &other);
+      }
+    }
+  }
+  if (rc == 0) rc = ::seccomp_load(ctx);
+  ::seccomp_release(ctx);
+  layer.applied = rc == 0;
+  layer.note = rc == 0 ? (controller ? "no sockets, exec, processes, tracing or signals to others" : "no sockets or tracing")
+                       : std::string("not applied: ") + std::strerror(-rc);
+  return layer;
+}
+
+namespace {
+volatile std::int32_t* trappedSyscall = nullptr;
+
+void onSigsys(int, siginfo_t* info, void*) {
+  if (trappedSyscall != nullptr) *trappedSyscall = info->si_syscall;
+  ::signal(SIGSYS, SIG_DFL);  // the signal is blocked in this handler; it kills once the handler returns
+  ::raise(SIGSYS);
+}
+}  // namespace
+
+void installTrapReporter(volatile std::int32_t* syscallOut) {
+  trappedSyscall = syscallOut;
+  *trappedSyscall = -1;
+  struct sigaction sa {};
+  sa.sa_sigaction = onSigsys;
+  sa.sa_flags = SA_SIGINFO;
+  ::sigaction(SIGSYS, &sa, nullptr);
+}
+
+std::string describeSyscall(std::int32_t number) {
+  const auto is = [number](std::initializer_list<int> calls) {
+    for (int c : calls) if (c == number) return true;
+    return false;
+  };
+  if (is({SCMP_SYS(socket), SCMP_SYS(socketpair), SCMP_SYS(connect), SCMP_SYS(bind), SCMP_SYS(listen), SCMP_SYS(accept),
+          SCMP_SYS(accept4)})) return "open a network socket";
+  if (is({SCMP_SYS(execve), SCMP_SYS(execveat)})) return "run another program";
+  if (is({SCMP_SYS(fork), SCMP_SYS(vfork), SCMP_SYS(clone), SCMP_SYS(setsid), SCMP_SYS(setpgid)})) return "start another process";
+  if (is({SCMP_SYS(kill), SCMP_SYS(tgkill), SCMP_SYS(tkill), SCMP_SYS(rt_sigqueueinfo), SCMP_SYS(rt_tgsigqueueinfo),
+          SCMP_SYS(pidfd_open), SCMP_SYS(pidfd_send_signal), SCMP_SYS(pidfd_getfd)})) return "signal another process";
+  if (is({SCMP_SYS(ptrace), SCMP_SYS(process_vm_readv), SCMP_SYS(process_vm_writev)})) return "inspect another process";
+  char* name = ::seccomp_syscall_resolve_num_arch(SCMP_ARCH_NATIVE, number);
+  std::string what = std::string("make the system call ") + (name != nullptr ? name : std::to_string(number).c_str());
+  std::free(name);
+  return what;
+}
+
+}  // namespace frob::sandbox

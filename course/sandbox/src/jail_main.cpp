@@ -1,0 +1,112 @@
+// frob-jail: confines itself, then runs a program in its place. The grader runs the compiler and
+// the controller host through it, so that every layer is in force before their first instruction.
+//
+//   frob-jail --cpu 60 --memory 2147483648 --read /usr --write /tmp/build.x --cwd /tmp/build.x \
+//             --report-fd 5 --keep-fds 3 -- /usr/bin/clang++ ...
+#include "frob/sandbox/confine.hpp"
+
+#include <CLI/CLI.hpp>
+#include <elf.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace {
+
+// The dynamic loader an ELF program names (PT_INTERP), which the kernel runs along with it; "" if none.
+std::string interpreterOf(int fd) {
+  Elf64_Ehdr eh{};
+  std::string interp;
+  if (fd >= 0 && ::pread(fd, &eh, sizeof eh, 0) == sizeof eh && std::memcmp(eh.e_ident, ELFMAG, SELFMAG) == 0 &&
+      eh.e_ident[EI_CLASS] == ELFCLASS64) {
+    for (int i = 0; i < eh.e_phnum; ++i) {
+      Elf64_Phdr ph{};
+      if (::pread(fd, &ph, sizeof ph, static_cast<off_t>(eh.e_phoff + i * sizeof ph)) != sizeof ph) break;
+      if (ph.p_type != PT_INTERP || ph.p_filesz > 4096) continue;
+      interp.resize(ph.p_filesz);
+      if (::pread(fd, interp.data(), ph.p_filesz, static_cast<off_t>(ph.p_offset)) != static_cast<ssize_t>(ph.p_filesz)) interp.clear();
+      interp = interp.c_str();  // without its terminating zero
+    }
+  }
+  return interp;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace frob::sandbox;
+  CLI::App cli{"Runs a program confined: resource limits, an unprivileged user, Landlock, seccomp", "frob-jail"};
+  Limits limits;
+  FileAccess files;
+  std::uint32_t uid = 65534, gid = 65534;
+  std::string cwd = ".", seccomp = "none";
+  int keepFds = 3, reportFd = -1;
+  bool keepUser = false;
+  pid_t parent = 0;
+  std::vector<std::string> env, command;
+  cli.add_option("--cpu", limits.cpuSeconds, "CPU seconds");
+  cli.add_option("--memory", limits.memoryBytes, "address space, bytes");
+  cli.add_option("--file-size", limits.fileBytes, "largest file written, bytes");
+  cli.add_option("--open-files", limits.openFiles, "open file descriptors");
+  cli.add_option("--read", files.read, "a folder or file it may read");
+  cli.add_option("--write", files.write, "a folder it may change");
+  cli.add_option("--execute", files.execute, "a folder or file it may run");
+  cli.add_option("--uid", uid, "user to become when run as root");
+  cli.add_option("--gid", gid, "group to become when run as root");
+  cli.add_flag("--keep-user", keepUser, "stay the caller's user even as root (a compiler reading the caller's files)");
+  cli.add_option("--cwd", cwd, "working folder");
+  cli.add_option("--keep-fds", keepFds, "file descriptors 0 .. N-1 stay open; all others close");
+  cli.add_option("--report-fd", reportFd, "where to write which layers were applied");
+  cli.add_option("--parent", parent, "die with this process");
+  cli.add_option("--env", env, "NAME=VALUE for the program's otherwise empty environment");
+  cli.add_option("--seccomp", seccomp, "system-call filter")->check(CLI::IsMember({"none", "no-network"}));
+  cli.add_option("command", command, "the program and its arguments")->required();
+  CLI11_PARSE(cli, argc, argv);
+
+  // Its own session and process group, killed with the process that started it.
+  ::setsid();
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (parent != 0 && ::getppid() != parent) return 127;
+  // Opened before the user changes: the program may sit in a folder only the caller can enter.
+  const int program = ::open(command[0].c_str(), O_RDONLY | O_CLOEXEC);
+  if (program < 0 || ::chdir(cwd.c_str()) != 0) {
+    std::fprintf(stderr, "frob-jail: cannot run %s in %s: %s\n", command[0].c_str(), cwd.c_str(), std::strerror(errno));
+    return 127;
+  }
+  // Every descriptor closes but 0 .. keepFds-1, the report and the program.
+  if (reportFd >= 0 && reportFd < keepFds) reportFd = -1;
+  int from = keepFds;
+  for (int keep : {std::min(reportFd, program), std::max(reportFd, program)}) {
+    if (keep < from) continue;
+    if (keep > from) ::syscall(SYS_close_range, from, keep - 1, 0);
+    from = keep + 1;
+  }
+  ::syscall(SYS_close_range, from, ~0U, 0);
+  files.execute.push_back(command[0]);
+  if (std::string loader = interpreterOf(program); !loader.empty()) files.execute.push_back(loader);
+  const Layer user = keepUser ? Layer{"unprivileged user", false, "not asked for: it runs as the caller"} : dropPrivileges(uid, gid);
+  std::vector<Layer> layers{limitResources(limits), user, noNewPrivileges(), restrictFiles(files)};
+  if (seccomp == "no-network") layers.push_back(restrictSyscalls(SyscallPolicy::NoNetwork));
+  if (reportFd >= 0) {
+    std::string report;
+    for (const Layer& l : layers) report += l.name + "\t" + (l.applied ? "1" : "0") + "\t" + l.note + "\n";
+    [[maybe_unused]] const ssize_t n = ::write(reportFd, report.data(), report.size());
+    ::close(reportFd);
+  }
+
+  std::vector<char*> args, envp;
+  for (std::string& a : command) args.push_back(a.data());
+  for (std::string& e : env) envp.push_back(e.data());
+  args.push_back(nullptr), envp.push_back(nullptr);
+  ::syscall(SYS_execveat, program, "", args.data(), envp.data(), AT_EMPTY_PATH);
+  std::fprintf(stderr, "frob-jail: cannot run %s: %s\n", command[0].c_str(), std::strerror(errno));
+  return 127;
+}

@@ -1,0 +1,450 @@
+#include "frob/course/isolation.hpp"
+
+#include "controller_setup.inc"
+#include "frob/sandbox/channel.hpp"
+#include "frob/sandbox/wire.hpp"
+#include "jail.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/eventfd.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <optional>
+
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define FROB_HOST_UNDER_ASAN 1
+#endif
+#endif
+
+namespace frob::course {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+using sandbox::Activity;
+
+namespace {
+
+constexpr std::size_t kSetupBytes = 1 << 20;
+constexpr std::size_t kFrameBytes = 64 << 10;  // a frame: its sonars, bumps and keys
+constexpr std::size_t kReplyBytes = 256 << 10;  // a reply: wheels, task records, a picture
+constexpr std::uint32_t kNobody = 65534;
+
+std::string seconds(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g s", s);
+  return buf;
+}
+
+std::string megabytes(std::uint64_t bytes) { return std::to_string(bytes >> 20) + " MB"; }
+
+// Where a crash happened, in words: " at t = 1.23 s", and what the host was doing when not stepping.
+std::string when(double time, Activity activity) {
+  char at[48];
+  std::snprintf(at, sizeof at, " at t = %.2f s", time);
+  switch (activity) {
+    case Activity::Starting:
+    case Activity::Loading: return std::string(at) + " (in a global constructor)";
+    case Activity::Building: return std::string(at) + " (while building its controller)";
+    default: return at;
+  }
+}
+
+double cpuSeconds(pid_t pid) {
+  clockid_t clock{};
+  timespec ts{};
+  if (::clock_getcpuclockid(pid, &clock) != 0 || ::clock_gettime(clock, &ts) != 0) return 0.0;
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+std::uint64_t residentBytes(pid_t pid) {
+  std::ifstream statm("/proc/" + std::to_string(pid) + "/statm");
+  std::uint64_t size = 0, resident = 0;
+  statm >> size >> resident;
+  return resident * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
+}
+
+}  // namespace
+
+struct ControllerHost::Impl {
+  IsolationDef def;
+  fs::path scratch;
+  sandbox::Channel channel;
+  Jailed process;
+  int wake = -1;    // eventfd the host writes when it answers and we sleep
+  int output = -1;  // read end of its stdout and stderr
+  std::uint64_t outputSeen = 0;
+  std::vector<std::string> sources;
+  std::vector<ControllerEntry> entries;
+  std::vector<sandbox::Layer> layers;
+  std::uint32_t sequence = 1;  // the host's last reply
+  Clock::time_point runDeadline;
+  bool memoryLimited = false;  // whether the address-space limit holds (not under AddressSanitizer)
+  bool driving = false;
+
+  ~Impl() {
+    process.kill();
+    process.wait();
+    drainOutput();
+    if (wake >= 0) ::close(wake);
+    if (output >= 0) ::close(output);
+    std::error_code ec;
+    if (!scratch.empty()) fs::remove_all(scratch, ec);
+  }
+
+  sandbox::Header& header() const { return channel.header(); }
+
+  // Passes on what the host printed, up to the limit.
+  void drainOutput() {
+    char buf[1 << 16];
+    for (ssize_t n; output >= 0 && (n = ::read(output, buf, sizeof buf)) > 0;) {
+      const std::uint64_t room = def.outputBytes > outputSeen ? def.outputBytes - outputSeen : 0;
+      const std::string_view text(buf, std::min<std::uint64_t>(room, static_cast<std::uint64_t>(n)));
+      outputSeen += static_cast<std::uint64_t>(n);
+      if (text.empty()) continue;
+      if (def.output) {
+        def.output(text);
+      } else {
+        std::fwrite(text.data(), 1, text.size(), stderr);
+      }
+    }
+  }
+
+  // Why the host ended, from its wait status and what it claimed it was doing.
+  std::string death(int status) const {
+    const sandbox::Header& h = header();
+    if (WIFEXITED(status)) {
+      return "ended its program with exit status " + std::to_string(WEXITSTATUS(status)) +
+             " (a controller must not call exit; its results would not count)";
+    }
+    const int sig = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+    switch (sig) {
+      case SIGSYS: return "tried to " + (h.trappedSyscall >= 0 ? sandbox::describeSyscall(h.trappedSyscall) : std::string("make a forbidden system call")) + " (not allowed)";
+      case SIGSEGV: return h.stackOverflow != 0 ? "crashed with SIGSEGV: its stack overflowed (a recursion that never ends?)"
+                                                : "crashed with SIGSEGV (a bad pointer, or an index out of range?)";
+      case SIGFPE: return "crashed with SIGFPE (an integer division by zero?)";
+      case SIGABRT: return "crashed with SIGABRT (abort(), a failed assert, or an exception nothing caught)";
+      case SIGXCPU: return "used more than " + seconds(def.runSeconds) + " of CPU in the run";
+      case SIGXFSZ: return "wrote a file larger than " + megabytes(def.fileBytes) + " (not allowed)";
+      case SIGKILL: return "was killed (SIGKILL): out of memory?";
+      default: return "crashed with signal " + std::to_string(sig) + " (" + ::strsignal(sig) + ")";
+    }
+  }
+
+  // Waits up to `limit` seconds for the host's reply `seq`; "" or why not (the host is then killed).
+  std::string await(std::uint32_t seq, double limit, bool starting) {
+    sandbox::Doorbell& bell = header().reply;
+    if (sandbox::spinUntil(bell, seq, def.spinNanoseconds)) return {};
+    const Clock::time_point start = Clock::now();
+    const Clock::time_point deadline = std::min(runDeadline, start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit)));
+    bell.sleeping.store(1, std::memory_order_seq_cst);
+    std::optional<std::pair<Clock::time_point, double>> cpuFrom;  // when the step had run a while, and its CPU then
+    std::string why;
+    for (;;) {
+      if (bell.sequence.load(std::memory_order_seq_cst) == seq) break;
+      const Clock::time_point now = Clock::now();
+      if (now >= deadline) {
+        const bool busy = cpuFrom && cpuSeconds(process.pid()) - cpuFrom->second >
+                                         0.5 * std::chrono::duration<double>(now - cpuFrom->first).count();
+        if (deadline == runDeadline) {
+          why = "the run took longer than " + seconds(def.runSeconds) + " of wall-clock time";
+        } else if (starting) {
+          why = "did not finish starting within " + seconds(limit) + (busy ? " (an endless loop?)" : " (it waited or slept)");
+        } else {
+          why = busy ? "used more than " + seconds(limit) + " of CPU in one step (an endless loop?)"
+                     : "did not answer within " + seconds(limit) + " in one step (it waited or slept)";
+        }
+        break;
+      }
+      pollfd fds[3] = {{wake, POLLIN, 0}, {output, POLLIN, 0}, {process.pidfd(), POLLIN, 0}};
+      const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count() + 1;
+      const int ready = ::poll(fds, 3, static_cast<int>(std::min<long long>(ms, 20)));
+      if (fds[0].revents != 0) {
+        std::uint64_t count = 0;
+        [[maybe_unused]] const ssize_t n = ::read(wake, &count, sizeof count);
+      }
+      if (fds[1].revents != 0) drainOutput();
+      if (fds[2].revents != 0) {
+        drainOutput();
+        why = death(process.wait());
+        break;
+      }
+      if (ready == 0) {
+        if (!cpuFrom) cpuFrom.emplace(Clock::now(), cpuSeconds(process.pid()));
+        if (!memoryLimited && residentBytes(process.pid()) > def.memoryBytes) {
+          why = "used more than " + megabytes(def.memoryBytes) + " of memory";
+          break;
+        }
+      }
+    }
+    bell.sleeping.store(0, std::memory_order_relaxed);
+    if (!why.empty()) process.kill();
+    return why;
+  }
+
+  // The file the host's guard says a controller was refused, as a reason; "" when none was.
+  std::string refusal() const {
+    const sandbox::Header& h = header();
+    if (h.deniedPath[0] == 0) return {};
+    std::string path;
+    for (std::size_t i = 0; i < sizeof h.deniedPath && h.deniedPath[i] != 0; ++i) {
+      const char c = h.deniedPath[i];
+      path += (c >= 32 && c < 127) ? c : '?';
+    }
+    return std::string("tried to ") + (h.deniedWrite != 0 ? "write " : "read ") + path + " (not allowed)";
+  }
+};
+
+Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<fs::path>& modules,
+                                                             const std::vector<std::string>& sources, IsolationDef def) {
+  auto impl = std::make_unique<Impl>();
+  impl->def = std::move(def);
+  impl->sources = sources;
+  const auto failure = [](const std::string& what) { return Status::failure("cannot start the controller host: " + what); };
+
+  // A scratch folder of its own, holding a copy of each module: the only files it can write or read
+  // besides the system's libraries.
+  std::error_code ec;
+  std::string scratch = (fs::temp_directory_path(ec) / "frob-host-XXXXXX").string();
+  if (::mkdtemp(scratch.data()) == nullptr) return failure("cannot make a scratch folder in " + fs::temp_directory_path(ec).string());
+  impl->scratch = scratch;
+  const bool root = ::geteuid() == 0;
+  std::vector<std::string> command{FROB_HOST_PATH};
+  for (std::size_t m = 0; m < modules.size(); ++m) {
+    const fs::path copy = impl->scratch / ("m" + std::to_string(m) + ".so");
+    if (!fs::copy_file(modules[m], copy, ec)) return failure("cannot copy " + modules[m].string() + ": " + ec.message());
+    if (root && ::chown(copy.c_str(), kNobody, kNobody) != 0) return failure("cannot hand " + copy.string() + " to nobody");
+    command.push_back("./" + copy.filename().string());
+  }
+  if (root && ::chown(scratch.c_str(), kNobody, kNobody) != 0) return failure("cannot hand " + scratch + " to nobody");
+
+  if (std::string e = impl->channel.create(kSetupBytes); !e.empty()) return failure(e);
+  impl->header().spinNanoseconds = impl->def.spinNanoseconds;
+  impl->wake = ::eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK);
+  int out[2];
+  if (impl->wake < 0 || ::pipe2(out, O_CLOEXEC) != 0) return failure(std::strerror(errno));
+  impl->output = out[0];
+  ::fcntl(out[0], F_SETFL, O_NONBLOCK);
+
+  const IsolationDef& d = impl->def;
+  JailDef jail{.command = command,
+               .limits = {.cpuSeconds = static_cast<std::uint64_t>(std::ceil(d.runSeconds)), .fileBytes = d.fileBytes, .openFiles = 64},
+               .files = {.read = {"/usr", "/lib", "/lib64", "/etc/ld.so.cache"}, .write = {scratch}},
+               .cwd = scratch,
+               .fds = {-1, out[1], out[1], impl->channel.fd(), impl->wake}};
+#ifdef FROB_HOST_UNDER_ASAN
+  // AddressSanitizer reserves terabytes of address space, so memory is watched by its size instead;
+  // crashes are left to the kernel so that they read as the signals they are.
+  jail.env = {"ASAN_OPTIONS=detect_leaks=0:handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_abort=0:symbolize=0"};
+  jail.files.read.push_back("/proc");
+#else
+  jail.limits.memoryBytes = d.memoryBytes;
+  impl->memoryLimited = true;
+#endif
+  Result<Jailed> process = Jailed::start(jail);
+  ::close(out[1]);
+  if (!process) return failure(process.error());
+  impl->process = std::move(process.value());
+  impl->layers = impl->process.layers();
+  impl->runDeadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(d.runSeconds));
+
+  // It loads the modules at once and answers what they declared.
+  const auto named = [&](const std::string& why) {
+    const std::uint32_t m = impl->header().robot;
+    return Status::failure((m < sources.size() ? sources[m] + ": " : "") + why);
+  };
+  if (std::string why = impl->await(1, d.startSeconds, true); !why.empty()) return named(why + when(0.0, impl->header().activity));
+  if (std::string why = impl->refusal(); !why.empty()) return named(why + when(0.0, Activity::Loading));
+  std::vector<std::byte> setup(impl->channel.setup().begin(), impl->channel.setup().end());
+  sandbox::Reader r(setup);
+  std::uint32_t layerCount = 0, moduleCount = 0;
+  r.count(layerCount, 8);
+  for (std::uint32_t i = 0; i < layerCount && r.ok(); ++i) {
+    sandbox::Layer l;
+    std::uint8_t applied = 0;
+    if (r.get(l.name) && r.get(applied) && r.get(l.note)) impl->layers.push_back({l.name, applied != 0, l.note});
+  }
+  if (!r.count(moduleCount) || moduleCount != modules.size()) return failure("its answer was not understood");
+  for (std::uint32_t m = 0; m < moduleCount; ++m) {
+    std::uint8_t ok = 0;
+    ControllerEntry e;
+    std::string error;
+    if (!r.get(ok)) break;
+    if (ok == 0) {
+      if (r.get(error)) return Status::failure("cannot load the controller '" + sources.at(m) + "': " + error);
+      break;
+    }
+    if (!(r.get(e.name) && r.get(e.options.world) && r.get(e.options.seconds) && r.get(e.options.summary))) break;
+    impl->entries.push_back(std::move(e));
+  }
+  if (!r.ok()) return failure("its answer was not understood");
+  return std::shared_ptr<ControllerHost>(new ControllerHost(std::move(impl)));
+}
+
+ControllerHost::ControllerHost(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+ControllerHost::~ControllerHost() = default;
+const std::vector<ControllerEntry>& ControllerHost::entries() const { return impl_->entries; }
+const std::vector<sandbox::Layer>& ControllerHost::layers() const { return impl_->layers; }
+
+std::vector<std::string> ControllerHost::notes() const {
+  impl_->drainOutput();
+  if (impl_->outputSeen <= impl_->def.outputBytes) return {};
+  return {"the controller wrote " + megabytes(impl_->outputSeen) + " to stdout and stderr; only the first " +
+          megabytes(impl_->def.outputBytes) + " were shown"};
+}
+
+namespace {
+
+// Controllers sampled in the host: each step the frames go out and the replies come back.
+class IsolatedDriver final : public worlds::ControllerDriver {
+ public:
+  IsolatedDriver(std::shared_ptr<ControllerHost> owner, ControllerHost::Impl& host, const worlds::Simulation& sim,
+                 const std::vector<std::size_t>& modules, bool pictures)
+      : owner_(std::move(owner)), host_(host), sim_(sim), pictures_(pictures), timelines_(sim.robotCount()),
+        started_(sim.robotCount(), 0), stopped_(sim.robotCount(), false) {
+    const auto n = static_cast<std::uint32_t>(sim.robotCount());
+    FROB_ASSERT(!host.driving, "a controller host drives one run");
+    FROB_ASSERT(modules.size() == 1 || modules.size() == n, "give one module per robot, or one for all");
+    host.driving = true;
+    if (std::string e = host.channel.resize(n, kFrameBytes, kReplyBytes); !e.empty()) {
+      lost_ = e;
+      return;
+    }
+    sandbox::Writer w(host.channel.setup());
+    w.put(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const std::size_t m = modules.size() == 1 ? modules.front() : modules[i];
+      FROB_ASSERT(m < host.entries.size(), "no such module in this host");
+      w.put(static_cast<std::uint32_t>(m));
+      sandbox::write(w, sim.spec(i));
+    }
+    sandbox::Header& h = host.header();
+    h.dt = sim.dt();
+    h.pictures = pictures ? 1 : 0;
+    h.command = sandbox::Command::Build;
+    sandbox::ring(h.request, host.sequence, -1);
+    lost_ = host.await(++host.sequence, host.def.startSeconds, true);
+    if (lost_.empty()) lost_ = host.refusal();
+    if (!lost_.empty()) lost_ += when(0.0, host.header().activity);
+  }
+
+  void decide(const Instant& now, std::span<Wheels> wheels, std::span<Picture> pictures,
+              std::vector<std::pair<std::size_t, std::string>>& failed) override {
+    if (!lost_.empty()) return fail(failed, lost_);
+    if (dead_) return;
+    sandbox::Header& h = host_.header();
+    for (std::uint32_t i = 0; i < wheels.size(); ++i) {
+      sandbox::Writer w(host_.channel.frameArea(i));
+      sandbox::write(w, sim_.frame(i));
+      FROB_ASSERT(w.ok(), "a sensor frame larger than its area of the channel");
+    }
+    h.command = sandbox::Command::Step;
+    h.step = now.step;
+    sandbox::ring(h.request, host_.sequence, -1);
+    if (std::string why = host_.await(++host_.sequence, host_.def.stepSeconds, false); !why.empty()) {
+      char at[48];
+      std::snprintf(at, sizeof at, " at t = %.2f s", now.time);
+      return fail(failed, why + at);
+    }
+    if (std::string why = host_.refusal(); !why.empty()) {
+      char at[48];
+      std::snprintf(at, sizeof at, " at t = %.2f s", now.time);
+      return fail(failed, why + at);
+    }
+    for (std::uint32_t i = 0; i < wheels.size(); ++i) {
+      if (stopped_[i]) continue;
+      if (!readReply(i, wheels[i], pictures[i], failed)) {
+        stopped_[i] = true;
+        wheels[i] = Wheels{};
+        failed.emplace_back(i, "its controller host sent a reply that cannot be read");
+      }
+    }
+    if (++steps_ % 64 == 0) host_.drainOutput();  // a student's prints appear as the run goes
+  }
+
+  Timeline& timeline(std::size_t i) override { return timelines_.at(i); }
+
+ private:
+  // The host is gone or lost: the robot it claims it was driving fails, the others stop.
+  void fail(std::vector<std::pair<std::size_t, std::string>>& failed, const std::string& why) {
+    const std::uint32_t robot = host_.header().robot;
+    failed.emplace_back(robot < stopped_.size() ? robot : 0, why);
+    stopped_.assign(stopped_.size(), true);
+    lost_.clear();
+    dead_ = true;
+    host_.process.kill();
+  }
+
+  // Reads robot i's reply from a copy of its area, so the host cannot change it while it is read.
+  bool readReply(std::uint32_t i, Wheels& wheels, Picture& picture, std::vector<std::pair<std::size_t, std::string>>& failed) {
+    const std::span<const std::byte> area = host_.channel.replyArea(i);
+    std::uint32_t length = 0;
+    std::memcpy(&length, area.data(), sizeof length);
+    if (length > area.size() - sizeof length) return false;
+    copy_.assign(area.begin() + sizeof length, area.begin() + sizeof length + length);
+    sandbox::Reader r(copy_);
+    std::uint8_t state = 0, hasPicture = 0;
+    std::uint32_t records = 0;
+    if (!r.get(state) || state > 2 || !r.get(wheels.forward) || !r.get(wheels.turn)) return false;
+    if (state == 1) {
+      std::string why;
+      if (!r.get(why)) return false;
+      stopped_[i] = true;
+      failed.emplace_back(i, why);
+    }
+    if (!r.count(records)) return false;
+    for (std::uint32_t k = 0; k < records; ++k) {
+      if (!sandbox::read(r, record_) || !mirror(i, record_)) return false;
+    }
+    if (!r.get(hasPicture)) return false;
+    if (hasPicture != 0 && pictures_ && !sandbox::read(r, picture)) return false;
+    if (state != 0 || !isFinite(wheels)) wheels = Wheels{};  // only the controller's own word stops it
+    return r.ok();
+  }
+
+  // Replays a task's start or end on robot i's timeline, which numbers tasks as the host's does.
+  bool mirror(std::uint32_t i, const TaskRecord& t) {
+    Timeline& timeline = timelines_[i];
+    if (t.how != TaskEnd::Running) {
+      timeline.end(t.id, t.end, t.how, t.detail);
+      return true;
+    }
+    if (t.id != started_[i]) return false;
+    ++started_[i];
+    timeline.start(t.parent, t.name, t.where, t.start);
+    return true;
+  }
+
+  std::shared_ptr<ControllerHost> owner_;
+  ControllerHost::Impl& host_;
+  const worlds::Simulation& sim_;
+  bool pictures_;
+  std::vector<Timeline> timelines_;
+  std::vector<std::int64_t> started_;  // tasks started so far, per robot: the next one's id
+  std::vector<bool> stopped_;
+  std::string lost_;  // why the host could not build the controllers, reported at the first step
+  bool dead_ = false;
+  std::int64_t steps_ = 0;
+  std::vector<std::byte> copy_;
+  TaskRecord record_;
+};
+
+}  // namespace
+
+worlds::DriverFactory ControllerHost::driver(std::vector<std::size_t> modulePerRobot, bool pictures) {
+  return [self = shared_from_this(), modulePerRobot = std::move(modulePerRobot),
+          pictures](const worlds::Simulation& sim) -> std::unique_ptr<worlds::ControllerDriver> {
+    return std::make_unique<IsolatedDriver>(self, *self->impl_, sim, modulePerRobot, pictures);
+  };
+}
+
+}  // namespace frob::course

@@ -1,0 +1,129 @@
+#include "jail.hpp"
+
+#include "controller_setup.inc"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <sstream>
+
+namespace frob::course {
+
+Result<Jailed> Jailed::start(const JailDef& def) {
+  int report[2];
+  if (::pipe2(report, O_CLOEXEC) != 0) return Status::failure(std::string("cannot start the sandbox: ") + std::strerror(errno));
+  const int keep = static_cast<int>(def.fds.size());
+  std::vector<std::string> args{FROB_JAIL_PATH, "--keep-fds", std::to_string(keep), "--report-fd", std::to_string(keep),
+                                "--parent", std::to_string(::getpid()), "--cwd", def.cwd};
+  const auto add = [&](const char* flag, auto value) {
+    if (value != 0) args.insert(args.end(), {flag, std::to_string(value)});
+  };
+  add("--cpu", def.limits.cpuSeconds);
+  add("--memory", def.limits.memoryBytes);
+  add("--file-size", def.limits.fileBytes);
+  add("--open-files", def.limits.openFiles);
+  for (const auto& [flag, paths] : {std::pair{"--read", &def.files.read}, {"--write", &def.files.write}, {"--execute", &def.files.execute}}) {
+    for (const std::string& p : *paths) args.insert(args.end(), {flag, p});
+  }
+  for (const std::string& e : def.env) args.insert(args.end(), {"--env", e});
+  if (!def.dropUser) args.push_back("--keep-user");
+  if (def.noNetwork) args.insert(args.end(), {"--seccomp", "no-network"});
+  args.push_back("--");
+  args.insert(args.end(), def.command.begin(), def.command.end());
+
+  // Each descriptor goes to a high number first, so that no target overwrites a later source.
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  constexpr int kHigh = 200;
+  for (int k = 0; k < keep; ++k) {
+    if (def.fds[k] < 0) {
+      posix_spawn_file_actions_addopen(&actions, kHigh + k, "/dev/null", O_RDWR, 0);
+    } else {
+      posix_spawn_file_actions_adddup2(&actions, def.fds[k], kHigh + k);
+    }
+  }
+  for (int k = 0; k < keep; ++k) posix_spawn_file_actions_adddup2(&actions, kHigh + k, k);
+  posix_spawn_file_actions_adddup2(&actions, report[1], keep);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  char* noEnv[] = {nullptr};
+  Jailed j;
+  const int err = ::posix_spawn(&j.pid_, argv[0], &actions, nullptr, argv.data(), noEnv);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(report[1]);
+  if (err != 0) {
+    ::close(report[0]);
+    j.pid_ = 0;
+    return Status::failure(std::string("cannot start the sandbox " FROB_JAIL_PATH ": ") + std::strerror(err));
+  }
+  j.pidfd_ = static_cast<int>(::syscall(SYS_pidfd_open, j.pid_, 0));
+  // The report ends when frob-jail closes it, just before it runs the program (or dies).
+  std::string text;
+  char buf[4096];
+  for (ssize_t n; (n = ::read(report[0], buf, sizeof buf)) != 0;) {
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) break;
+    text.append(buf, static_cast<std::size_t>(n));
+  }
+  ::close(report[0]);
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    const std::size_t a = line.find('\t'), b = line.find('\t', a + 1);
+    if (b == std::string::npos) continue;
+    j.layers_.push_back({line.substr(0, a), line.substr(a + 1, b - a - 1) == "1", line.substr(b + 1)});
+  }
+  if (j.layers_.empty()) return Status::failure("the sandbox " FROB_JAIL_PATH " did not start: status " + std::to_string(j.wait()));
+  return j;
+}
+
+Jailed::~Jailed() {
+  if (pid_ > 0) {
+    kill();
+    wait();
+  }
+  if (pidfd_ >= 0) ::close(pidfd_);
+}
+
+Jailed::Jailed(Jailed&& o) noexcept { *this = std::move(o); }
+
+Jailed& Jailed::operator=(Jailed&& o) noexcept {
+  std::swap(pid_, o.pid_);
+  std::swap(pidfd_, o.pidfd_);
+  std::swap(status_, o.status_);
+  std::swap(layers_, o.layers_);
+  return *this;
+}
+
+void Jailed::kill() {
+  if (pid_ <= 0 || status_ != -1) return;
+  ::kill(-pid_, SIGKILL);  // its process group: any thread or child it has
+  ::kill(pid_, SIGKILL);   // in case it had not made its own group yet
+}
+
+int Jailed::wait() {
+  if (pid_ > 0 && status_ == -1) {
+    int status = 0;
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
+    status_ = status;
+  }
+  return status_;
+}
+
+std::string describe(const std::vector<sandbox::Layer>& layers) {
+  std::string out;
+  for (const sandbox::Layer& l : layers) {
+    out += l.name + ": " + (l.applied ? "applied" : "NOT applied") + (l.note.empty() ? "" : " (" + l.note + ")") + "\n";
+  }
+  return out;
+}
+
+}  // namespace frob::course

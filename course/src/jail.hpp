@@ -1,0 +1,60 @@
+#pragma once
+// Starting a program under frob-jail, which confines itself and then runs it; shared by the
+// sandboxed compile and the controller host.
+
+#include "frob/render/result.hpp"
+#include "frob/sandbox/confine.hpp"
+
+#include <sys/types.h>
+
+#include <string>
+#include <vector>
+
+namespace frob::course {
+
+using render::Result;
+using render::Status;
+
+/// A program to run confined.
+struct JailDef {
+  std::vector<std::string> command;  ///< the program (absolute path) and its arguments
+  sandbox::Limits limits;
+  sandbox::FileAccess files;
+  std::string cwd;                   ///< its working folder
+  std::vector<std::string> env;      ///< its whole environment, NAME=VALUE
+  bool dropUser = true;              ///< as root, run as nobody
+  bool noNetwork = false;            ///< seccomp: no sockets (the controller host filters itself)
+  std::vector<int> fds;              ///< fds[k] becomes descriptor k of the program; -1: /dev/null
+};
+
+/// A confined program, running. Kills its process group when destroyed, unless reaped.
+class Jailed {
+ public:
+  /// Starts `def` under frob-jail and reads which layers it applied.
+  [[nodiscard]] static Result<Jailed> start(const JailDef& def);
+  Jailed() = default;
+  ~Jailed();
+  Jailed(Jailed&& o) noexcept;
+  Jailed& operator=(Jailed&& o) noexcept;
+
+  [[nodiscard]] pid_t pid() const { return pid_; }
+  /// A pidfd, readable once the program has ended.
+  [[nodiscard]] int pidfd() const { return pidfd_; }
+  /// The layers frob-jail applied.
+  [[nodiscard]] const std::vector<sandbox::Layer>& layers() const { return layers_; }
+  /// Kills the program's whole process group.
+  void kill();
+  /// Its wait status once it has ended (blocks until then); the first call reaps it.
+  int wait();
+
+ private:
+  pid_t pid_ = 0;
+  int pidfd_ = -1;
+  int status_ = -1;
+  std::vector<sandbox::Layer> layers_;
+};
+
+/// The layers as one line each, "landlock: applied (ABI 7)" or "landlock: NOT applied (...)".
+[[nodiscard]] std::string describe(const std::vector<sandbox::Layer>& layers);
+
+}  // namespace frob::course

@@ -1,0 +1,210 @@
+// The controller host: student controllers in a sandboxed process of their own. A well-behaved
+// controller drives exactly as it does in this process; a hostile one fails its robot with a reason
+// a student can act on, and never the process that holds the world.
+#include "frob/course/isolation.hpp"
+#include "frob/frob.hpp"
+#include "frob/worlds/registry.hpp"
+#include "frob/worlds/world_file.hpp"
+#include "hostile.hpp"
+
+#include <dlfcn.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace frob::course {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Loads a module into this process, as `frob run` without isolation does.
+Controller inProcess(const fs::path& module) {
+  void* handle = ::dlopen(module.c_str(), RTLD_NOW | RTLD_LOCAL);
+  EXPECT_NE(handle, nullptr) << ::dlerror();
+  using Entry = const ControllerEntry* (*)();
+  return reinterpret_cast<Entry>(::dlsym(handle, "frob_controller_v1"))()->make;
+}
+
+std::shared_ptr<ControllerHost> startHost(const std::vector<fs::path>& modules, IsolationDef def = {}) {
+  std::vector<std::string> sources;
+  for (const fs::path& m : modules) sources.push_back(m.stem().string());
+  Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start(modules, sources, std::move(def));
+  EXPECT_TRUE(host.ok()) << host.error();
+  return host.ok() ? host.value() : nullptr;
+}
+
+TEST(Isolation, AWellBehavedControllerDrivesBitIdenticallyInAndOutOfIsolation) {
+  const worlds::WorldDef world = *worlds::loadReferenceWorld("obstacles");
+  const fs::path bug = testing::exampleModule("06_bug");
+  worlds::Run here(world, {}, {inProcess(bug)}, {.keepSteps = false});
+  here.runUntil(20.0);
+  std::shared_ptr<ControllerHost> host = startHost({bug});
+  ASSERT_NE(host, nullptr);
+  ASSERT_EQ(host->entries().size(), 1u);
+  EXPECT_EQ(host->entries()[0].name, "bugToGoal");
+  EXPECT_EQ(host->entries()[0].options.world, "obstacles");
+  worlds::Run there(world, {}, host->driver({0}, false), {.keepSteps = false});
+  there.runUntil(20.0);
+  EXPECT_TRUE(here.failures().empty());
+  EXPECT_TRUE(there.failures().empty()) << there.failures()[0].message;
+  EXPECT_EQ(there.recorder().count(), 2000);
+  EXPECT_EQ(there.recorder().trajectoryHash(), here.recorder().trajectoryHash());
+  // The task timeline comes back too: the same tasks, ended the same way at the same times.
+  const std::deque<TaskRecord>& a = here.timeline(0).ended();
+  const std::deque<TaskRecord>& b = there.timeline(0).ended();
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_GT(a.size(), 2u);
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(b[k].name, a[k].name);
+    EXPECT_EQ(b[k].end, a[k].end);
+    EXPECT_EQ(b[k].how, a[k].how);
+  }
+  EXPECT_EQ(there.timeline(0).current(), here.timeline(0).current());
+}
+
+// A 4 x 3 m room with one robot, or two.
+worlds::WorldDef room(int robots = 1) {
+  std::string text = "size = [4.0, 3.0]\nseed = 7\n[[robot]]\nname = \"ada\"\nstart = [1.0, 1.0]\n";
+  if (robots == 2) text += "[[robot]]\nname = \"bob\"\nstart = [3.0, 2.0]\nheading_deg = 180\n";
+  return *worlds::parseWorld(text, "room.toml");
+}
+
+// What became of a hostile submission run for at most two simulated seconds.
+struct Outcome {
+  std::string startError;                          // why the host could not start, if it could not
+  std::vector<worlds::ControllerFailure> failures;  // as the run reports them
+  std::string output;                              // what it printed, as passed on
+  std::vector<std::string> notes;
+  Wheels lastWheels;
+  std::vector<sandbox::Layer> layers;
+};
+
+Outcome runHostile(const std::vector<std::string>& names, IsolationDef def = {}) {
+  Outcome o;
+  def.output = [&o](std::string_view text) { o.output.append(text); };
+  std::vector<fs::path> modules;
+  for (const std::string& n : names) modules.push_back(testing::hostileModule(n));
+  Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start(modules, names, std::move(def));
+  if (!host) {
+    o.startError = host.error();
+    return o;
+  }
+  std::vector<std::size_t> modulePerRobot;
+  for (std::size_t m = 0; m < names.size(); ++m) modulePerRobot.push_back(m);
+  {
+    worlds::Run run(room(static_cast<int>(names.size())), {}, host.value()->driver(modulePerRobot, true));
+    while (run.failures().empty() && run.simulation().time() < 2.0) run.step();
+    o.failures = run.failures();
+    o.lastWheels = run.recorder().steps().back().robots[0].wheels;
+  }
+  o.notes = host.value()->notes();
+  o.layers = host.value()->layers();
+  return o;
+}
+
+struct Case {
+  std::string module;
+  std::string reason;  // the failure's whole message
+};
+
+class Hostile : public ::testing::TestWithParam<Case> {};
+
+TEST_P(Hostile, FailsItsRobotWithAReasonAndNothingElse) {
+  const Outcome o = runHostile({GetParam().module});
+  ASSERT_EQ(o.startError, "");
+  ASSERT_EQ(o.failures.size(), 1u);
+  EXPECT_EQ(o.failures[0].robot, 0u);
+  EXPECT_EQ(o.failures[0].message, GetParam().reason);
+  EXPECT_DOUBLE_EQ(o.failures[0].time, 0.5);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Isolation, Hostile,
+    ::testing::Values(
+        Case{"segfault", "ada: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.50 s"},
+        Case{"abort", "ada: crashed with SIGABRT (abort(), a failed assert, or an exception nothing caught) at t = 0.50 s"},
+        Case{"stack_overflow", "ada: crashed with SIGSEGV: its stack overflowed (a recursion that never ends?) at t = 0.50 s"},
+        Case{"endless_loop", "ada: used more than 1 s of CPU in one step (an endless loop?) at t = 0.50 s"},
+        Case{"sleeps", "ada: did not answer within 1 s in one step (it waited or slept) at t = 0.50 s"},
+        Case{"forks", "ada: tried to start another process (not allowed) at t = 0.50 s"},
+        Case{"runs_shell", "ada: tried to start another process (not allowed) at t = 0.50 s"},
+        Case{"opens_socket", "ada: tried to open a network socket (not allowed) at t = 0.50 s"},
+        Case{"signals_parent", "ada: tried to signal another process (not allowed) at t = 0.50 s"},
+        Case{"reads_outside", "ada: tried to read /etc/passwd (not allowed) at t = 0.50 s"},
+        Case{"writes_outside", "ada: tried to write /tmp/frob-hostile-was-here (not allowed) at t = 0.50 s"},
+        Case{"forged_exit", "ada: ended its program with exit status 0 (a controller must not call exit; its results would "
+                            "not count) at t = 0.50 s"},
+        Case{"throws_int", "ada: an exception of unknown type"},
+        Case{"commands_nan", "ada: the controller commanded non-finite wheels {forward nan m/s, turn 0.000 rad/s} at t = 0.500 s"}),
+    [](const ::testing::TestParamInfo<Case>& info) { return info.param.module; });
+
+TEST(Isolation, NothingOutsideItsScratchFolderIsReadOrWritten) {
+  fs::remove("/tmp/frob-hostile-was-here");
+  EXPECT_EQ(runHostile({"writes_outside"}).failures.size(), 1u);
+  EXPECT_FALSE(fs::exists("/tmp/frob-hostile-was-here"));
+  const Outcome read = runHostile({"reads_outside"});
+  EXPECT_EQ(read.output.find("root:"), std::string::npos) << read.output;
+}
+
+TEST(Isolation, ItsOwnScratchFolderCanBeWrittenAndReadBack) {
+  const Outcome o = runHostile({"writes_scratch"});
+  EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
+  EXPECT_EQ(o.lastWheels, (Wheels{0.25, 0.0}));
+}
+
+TEST(Isolation, ThreadsAreAllowed) {
+  const Outcome o = runHostile({"starts_thread"});
+  EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
+  EXPECT_EQ(o.lastWheels, (Wheels{0.2, 0.0}));
+}
+
+TEST(Isolation, AForgedResultIsOnlyOutputAndTheRunStillFails) {
+  const Outcome o = runHostile({"forged_exit"});
+  EXPECT_NE(o.output.find("goal_reached"), std::string::npos);
+  ASSERT_EQ(o.failures.size(), 1u);
+}
+
+TEST(Isolation, AFloodOfOutputIsCutAtItsLimitAndTheRunGoesOn) {
+  const Outcome o = runHostile({"floods_output"}, {.outputBytes = 1 << 20});
+  EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
+  EXPECT_EQ(o.output.size(), 1u << 20);
+  ASSERT_EQ(o.notes.size(), 1u);
+  EXPECT_EQ(o.notes[0], "the controller wrote 80 MB to stdout and stderr; only the first 1 MB were shown");
+}
+
+TEST(Isolation, AMemoryBombFailsOnItsLimit) {
+  const Outcome o = runHostile({"memory_bomb"}, {.memoryBytes = 256 << 20});
+  ASSERT_EQ(o.failures.size(), 1u);
+  EXPECT_NE(o.failures[0].message.find("memory"), std::string::npos) << o.failures[0].message;
+}
+
+TEST(Isolation, AGlobalConstructorThatNeverEndsIsStopped) {
+  const Outcome o = runHostile({"endless_constructor"}, {.startSeconds = 0.5});
+  EXPECT_EQ(o.startError, "endless_constructor: did not finish starting within 0.5 s (an endless loop?) at t = 0.00 s (in a global constructor)");
+}
+
+TEST(Isolation, AGlobalConstructorThatCrashesIsNamed) {
+  const Outcome o = runHostile({"crash_in_constructor"});
+  EXPECT_EQ(o.startError, "crash_in_constructor: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.00 s "
+                          "(in a global constructor)");
+}
+
+TEST(Isolation, AMultiRobotRunNamesTheRobotWhoseControllerFailed) {
+  const Outcome o = runHostile({"starts_thread", "segfault"});
+  ASSERT_EQ(o.failures.size(), 1u);
+  EXPECT_EQ(o.failures[0].robot, 1u);
+  EXPECT_EQ(o.failures[0].message, "bob: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.50 s");
+}
+
+TEST(Isolation, EveryLayerSaysWhetherItWasApplied) {
+  const Outcome o = runHostile({"starts_thread"});
+  std::vector<std::string> names;
+  for (const sandbox::Layer& l : o.layers) {
+    names.push_back(l.name);
+    EXPECT_TRUE(l.applied || !l.note.empty()) << l.name;
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"resource limits", "unprivileged user", "no new privileges", "landlock", "seccomp"}));
+}
+
+}  // namespace
+}  // namespace frob::course
