@@ -1,5 +1,6 @@
 // The frob command line: thin, it parses arguments and calls the libraries.
 #include "frob/course/examples.hpp"
+#include "frob/course/isolation.hpp"
 #include "frob/course/session.hpp"
 #include "frob/course/summary.hpp"
 #include "frob/render/output_file.hpp"
@@ -54,18 +55,27 @@ Result<worlds::WorldDef> loadWorldNamed(const std::string& name) {
   return *w;
 }
 
-// A controller by file (.cpp compiled, .so loaded) or by example name.
-Result<course::LoadedController> loadController(const std::string& name, bool quiet) {
+// A controller by file (.cpp compiled, .so as it is) or by example name, as a module.
+Result<course::CompiledController> compileController(const std::string& name, bool quiet) {
   const fs::path path(name);
-  if (path.extension() == ".so") return course::loadControllerModule(path, name);
+  if (path.extension() == ".so") return course::CompiledController{.module = path, .source = name};
   if (path.extension() == ".cpp" || fs::exists(path)) {
     const auto start = std::chrono::steady_clock::now();
-    Result<course::LoadedController> c = course::loadControllerFile(path);
+    Result<course::CompiledController> c = course::compileControllerFile(path);
     if (c && c.value().compiled && !quiet) std::fprintf(stderr, "frob: compiled %s in %.1f s\n", name.c_str(), secondsSince(start));
     return c;
   }
-  if (std::optional<course::Example> e = course::findExample(name)) return course::loadExample(*e);
+  if (std::optional<course::Example> e = course::findExample(name)) return course::compileExample(*e);
   return Status::failure("unknown controller '" + name + "': not a file and not an example (see frob list)");
+}
+
+// The controller `name`, described by a sandboxed host (isolated) or loaded into this process.
+Result<course::LoadedController> loadController(const std::string& name, const std::optional<course::IsolationDef>& isolation,
+                                                bool quiet) {
+  Result<course::CompiledController> c = compileController(name, quiet);
+  if (!c) return c.status();
+  if (!isolation) return course::loadInProcess(c.value());
+  return course::describeInHost(c.value(), *isolation);
 }
 
 // "960x540" into a RenderDef's size.
@@ -87,7 +97,7 @@ struct RunArgs {
   int fps = 30;
   std::optional<double> speed;
   course::RunOutputs outputs;
-  bool json = false, quiet = false;
+  bool json = false, quiet = false, noIsolate = false;
 };
 
 int runCommand(RunArgs a) {
@@ -100,8 +110,9 @@ int runCommand(RunArgs a) {
   // The demo's video plays 4 times faster than the robot drives: two minutes of BUG in half a minute.
   course::RunDef def{.options = {.dt = a.dt, .seed = a.seed}, .outputs = a.outputs, .fps = a.fps,
                      .speed = a.speed.value_or(demo ? 4.0 : 1.0)};
+  if (!a.noIsolate) def.isolation.emplace();
   for (const std::string& name : a.controllers) {
-    Result<course::LoadedController> c = loadController(name, a.quiet);
+    Result<course::LoadedController> c = loadController(name, def.isolation, a.quiet);
     if (!c) return fail(c.error());
     def.controllers.push_back(std::move(c.value()));
   }
@@ -128,6 +139,10 @@ int runCommand(RunArgs a) {
   if (!summary) return fail(summary.error());
   if (a.json) std::cout << course::summaryJson(summary.value(), wall);
   const course::Summary& sum = summary.value();
+  // A layer of the sandbox that this machine could not apply is said, never skipped silently.
+  if (const std::string missing = course::missingLayers(sum.sandbox); !missing.empty() && !a.quiet) {
+    std::cerr << "frob: the controller ran with parts of its sandbox missing:\n" << missing;
+  }
   for (const course::RobotSummary& r : sum.robots) {
     if (r.failure.empty()) continue;
     // The run up to just before the failure can be written whole: say how.
@@ -162,7 +177,8 @@ int listCommand() {
   for (const worlds::WorldEntry& w : worlds::referenceWorlds()) std::printf("  %-10s %s\n", std::string(w.name).c_str(), std::string(w.description).c_str());
   std::cout << "\nExamples (frob run NAME, or frob run course/examples/NAME.cpp):\n";
   for (const course::Example& e : course::examples()) {
-    Result<course::LoadedController> c = course::loadExample(e);
+    Result<course::CompiledController> compiled = course::compileExample(e);
+    Result<course::LoadedController> c = compiled ? course::loadInProcess(compiled.value()) : Result<course::LoadedController>(compiled.status());
     const std::string about = c ? c.value().entry.options.summary + " [" + c.value().entry.options.world + "]" : c.error();
     std::printf("  %-16s %s\n", e.name.c_str(), about.c_str());
   }
@@ -197,6 +213,8 @@ int main(int argc, char** argv) {
   runCmd->add_option("--size", run.size, "Frame size, WIDTHxHEIGHT")->capture_default_str();
   runCmd->add_option("--view", run.view, "top (from above) or chase (behind the first robot)")->capture_default_str()->check(CLI::IsMember({"top", "chase"}));
   runCmd->add_flag("--json", run.json, "Print the summary as JSON");
+  runCmd->add_flag("--no-isolate", run.noIsolate,
+                   "Run the controllers inside frob itself instead of a sandboxed process (a crash then takes frob down)");
   runCmd->add_flag("-q,--quiet", run.quiet, "No progress bar or notes on stderr");
 
   std::string renderWorld, renderOut, renderSize = "960x720";

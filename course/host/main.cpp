@@ -78,7 +78,7 @@ std::vector<const ControllerEntry*> load(const Channel& channel, int argc, char*
     entries.push_back(e);
     w.put(static_cast<std::uint8_t>(e != nullptr));
     if (e == nullptr) {
-      w.put(handle == nullptr ? std::string(::dlerror()) : "names no controller: end it with a line FROB_CONTROLLER(yourFunction)");
+      w.put(handle == nullptr ? std::string(::dlerror()) : std::string());  // empty: no FROB_CONTROLLER line
       continue;
     }
     w.put(e->name), w.put(e->options.world), w.put(e->options.seconds), w.put(e->options.summary);

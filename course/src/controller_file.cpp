@@ -1,10 +1,12 @@
 #include "frob/course/controller_file.hpp"
 
 #include "controller_setup.inc"
+#include "jail.hpp"
+#include "load_error.hpp"
 
 #include <cxxabi.h>
 #include <dlfcn.h>
-#include <spawn.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -17,8 +19,6 @@
 #include <fstream>
 #include <memory>
 #include <sstream>
-
-extern char** environ;
 
 namespace frob::course {
 
@@ -56,20 +56,26 @@ std::string demangled(std::string message) {
   return message + " (declared but never defined?)";
 }
 
-// Runs `args` (args[0] on PATH) with this process's stdout and stderr; returns its exit status or an error.
-Result<int> runProgram(const std::vector<std::string>& args) {
-  std::vector<char*> argv;
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  if (int err = ::posix_spawnp(&pid, argv[0], nullptr, nullptr, argv.data(), environ); err != 0) {
-    return Status::failure("cannot run the compiler '" + args[0] + "': " + std::strerror(err));
+// The folders a compile may read: the system's, the include folders its flags name, and the
+// precompiled header.
+std::vector<std::string> compilerReads(const CompilerSetup& setup, bool pch) {
+  std::vector<std::string> read{"/usr", "/lib", "/lib64", "/etc/ld.so.cache", "/etc/os-release", "/etc/debian_version",
+                                "/etc/lsb-release", "/dev/null"};
+  for (const std::string& f : setup.flags) {
+    if (f.rfind("-I", 0) == 0 && f.size() > 2) read.push_back(f.substr(2));
   }
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) return Status::failure(std::string("waiting for the compiler failed: ") + std::strerror(errno));
+  if (pch) read.push_back(setup.precompiledHeader);
+  return read;
+}
+
+// The compiler on PATH, as an absolute path for frob-jail.
+std::string onPath(const std::string& program) {
+  if (program.find('/') != std::string::npos) return program;
+  for (const char* dir : {"/usr/local/bin", "/usr/bin", "/bin"}) {
+    const fs::path p = fs::path(dir) / program;
+    if (::access(p.c_str(), X_OK) == 0) return p.string();
   }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return program;
 }
 
 }  // namespace
@@ -92,18 +98,22 @@ CompilerSetup compilerSetup() {
   return s;
 }
 
-Result<LoadedController> loadControllerModule(const fs::path& module, const std::string& source) {
-  void* handle = ::dlopen(module.c_str(), RTLD_NOW | RTLD_LOCAL);  // never closed: its code runs the controller
-  if (handle == nullptr) return Status::failure("cannot load the controller '" + source + "': " + demangled(::dlerror()));
-  using Entry = const ControllerEntry* (*)();
-  auto entry = reinterpret_cast<Entry>(::dlsym(handle, kEntrySymbol));
-  if (entry == nullptr) {
-    return Status::failure("'" + source + "' names no controller: end it with a line FROB_CONTROLLER(yourFunction)");
-  }
-  return LoadedController{.entry = *entry(), .source = source};
+std::string loadError(const std::string& source, const std::string& loaderMessage) {
+  if (loaderMessage.empty()) return "'" + source + "' names no controller: end it with a line FROB_CONTROLLER(yourFunction)";
+  return "cannot load the controller '" + source + "': " + demangled(loaderMessage);
 }
 
-Result<LoadedController> loadControllerFile(const fs::path& source, const CompilerSetup& setup) {
+Result<LoadedController> loadInProcess(const CompiledController& compiled) {
+  const std::string& source = compiled.source;
+  void* handle = ::dlopen(compiled.module.c_str(), RTLD_NOW | RTLD_LOCAL);  // never closed: its code runs the controller
+  if (handle == nullptr) return Status::failure(loadError(source, ::dlerror()));
+  using Entry = const ControllerEntry* (*)();
+  auto entry = reinterpret_cast<Entry>(::dlsym(handle, kEntrySymbol));
+  if (entry == nullptr) return Status::failure(loadError(source, ""));
+  return LoadedController{.entry = *entry(), .source = source, .module = compiled.module, .compiled = compiled.compiled};
+}
+
+Result<CompiledController> compileControllerFile(const fs::path& source, const CompilerSetup& setup, std::string* messages) {
   std::ifstream in(source, std::ios::binary);
   if (!in || fs::is_directory(source)) return Status::failure("controller file '" + source.string() + "' cannot be read: " + (fs::exists(source) ? "not a readable file" : "it does not exist"));
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -118,30 +128,53 @@ Result<LoadedController> loadControllerFile(const fs::path& source, const Compil
   char name[32];
   std::snprintf(name, sizeof name, "%016llx", static_cast<unsigned long long>(key));
   const fs::path module = setup.cacheDir / (source.stem().string() + "-" + name + ".so");
-  if (fs::exists(module)) return loadControllerModule(module, source.string());
+  const CompiledController compiled{.module = module, .source = source.string(), .compiled = true};
+  if (fs::exists(module)) return CompiledController{.module = module, .source = source.string()};
 
+  // A build folder of its own: the only place the compiler may write.
   std::error_code ec;
   fs::create_directories(setup.cacheDir, ec);
   if (ec) return Status::failure("cannot create the controller cache '" + setup.cacheDir.string() + "': " + ec.message());
-  const fs::path partial = module.string() + "." + std::to_string(::getpid()) + ".partial";
-  std::vector<std::string> args{setup.compiler};
-  args.insert(args.end(), setup.flags.begin(), setup.flags.end());
-  if (pch) args.insert(args.end(), {"-include-pch", setup.precompiledHeader});
-  args.insert(args.end(), {"-shared", "-o", partial.string(), source.string()});
-  Result<int> status = runProgram(args);
-  if (!status) return status.status();
-  if (status.value() != 0) {
-    fs::remove(partial, ec);
-    return Status::failure("could not compile '" + source.string() + "' (the compiler's messages are above)");
+  std::string build = (fs::absolute(setup.cacheDir) / "build-XXXXXX").string();
+  if (::mkdtemp(build.data()) == nullptr) return Status::failure("cannot make a build folder in '" + setup.cacheDir.string() + "'");
+  const fs::path absolute = fs::absolute(source);
+  const fs::path partial = fs::path(build) / "module.so";
+  JailDef jail{.command = {onPath(setup.compiler)},
+               .limits = {.cpuSeconds = static_cast<std::uint64_t>(setup.seconds), .memoryBytes = setup.memoryBytes,
+                          .fileBytes = 512ULL << 20, .openFiles = 256},
+               .files = {.read = compilerReads(setup, pch), .write = {build}, .execute = {"/usr", "/bin"}},
+               .cwd = fs::current_path().string(),  // so that its messages name the file as it was given
+               .env = {"PATH=/usr/bin:/bin", "TMPDIR=" + build},
+               .dropUser = false,
+               .noNetwork = true};
+  jail.files.read.push_back(absolute.parent_path().string());
+  jail.command.insert(jail.command.end(), setup.flags.begin(), setup.flags.end());
+  if (pch) jail.command.insert(jail.command.end(), {"-include-pch", setup.precompiledHeader});
+  jail.command.insert(jail.command.end(), {"-shared", "-o", partial.string(), source.string()});
+  Result<JailedRun> run = runJailed(std::move(jail), setup.seconds, 1 << 20);
+  const auto cleanUp = [&] { fs::remove_all(build, ec); };
+  if (!run) return cleanUp(), run.status();
+  if (messages != nullptr) {
+    *messages = run.value().output;
+  } else {
+    std::fwrite(run.value().output.data(), 1, run.value().output.size(), stderr);
+  }
+  if (run.value().timedOut) {
+    cleanUp();
+    return Status::failure("compiling '" + source.string() + "' took longer than " + std::to_string(static_cast<int>(setup.seconds)) +
+                           " s, so it was stopped (an #include or a macro that never ends?)");
+  }
+  const int status = run.value().status;
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    cleanUp();
+    const bool limited = WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL);
+    return Status::failure("could not compile '" + source.string() + "' " +
+                           (limited ? "within the compiler's limits of time and memory" : "(the compiler's messages are above)"));
   }
   fs::rename(partial, module, ec);  // atomic: a concurrent run sees the whole module or none
-  if (ec) {
-    fs::remove(partial, ec);
-    return Status::failure("cannot store the compiled controller in '" + module.string() + "': " + ec.message());
-  }
-  Result<LoadedController> loaded = loadControllerModule(module, source.string());
-  if (loaded) loaded.value().compiled = true;
-  return loaded;
+  cleanUp();
+  if (ec) return Status::failure("cannot store the compiled controller in '" + module.string() + "': " + ec.message());
+  return compiled;
 }
 
 }  // namespace frob::course

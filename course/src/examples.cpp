@@ -29,7 +29,7 @@ std::optional<Example> findExample(std::string_view name) {
   return std::nullopt;
 }
 
-Result<LoadedController> loadExample(const Example& example) {
+Result<CompiledController> compileExample(const Example& example) {
   // Named as people would type it from where they are (course/examples/06_bug.cpp from the
   // repository's root), or in full from elsewhere.
   std::error_code ec;
@@ -37,9 +37,9 @@ Result<LoadedController> loadExample(const Example& example) {
   if (ec || source.empty() || *source.begin() == "..") source = example.source;
   // A module older than its source (edited since the build) is compiled afresh, like a student's file.
   if (fs::exists(example.module) && fs::last_write_time(example.module, ec) >= fs::last_write_time(example.source, ec)) {
-    return loadControllerModule(example.module, source.string());
+    return CompiledController{.module = example.module, .source = source.string()};
   }
-  return loadControllerFile(source);
+  return compileControllerFile(source);
 }
 
 }  // namespace frob::course

@@ -4,6 +4,7 @@
 #include "frob/sandbox/channel.hpp"
 #include "frob/sandbox/wire.hpp"
 #include "jail.hpp"
+#include "load_error.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -260,7 +261,7 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
   // It loads the modules at once and answers what they declared.
   const auto named = [&](const std::string& why) {
     const std::uint32_t m = impl->header().robot;
-    return Status::failure((m < sources.size() ? sources[m] + ": " : "") + why);
+    return Status::failure("the controller " + (m < sources.size() ? "'" + sources[m] + "' " : "") + "failed: " + why);
   };
   if (std::string why = impl->await(1, d.startSeconds, true); !why.empty()) return named(why + when(0.0, impl->header().activity));
   if (std::string why = impl->refusal(); !why.empty()) return named(why + when(0.0, Activity::Loading));
@@ -271,7 +272,7 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
   for (std::uint32_t i = 0; i < layerCount && r.ok(); ++i) {
     sandbox::Layer l;
     std::uint8_t applied = 0;
-    if (r.get(l.name) && r.get(applied) && r.get(l.note)) impl->layers.push_back({l.name, applied != 0, l.note});
+    if (r.get(l.name) && r.get(applied) && r.get(l.note)) impl->layers.push_back({l.name, applied != 0, true, l.note});
   }
   if (!r.count(moduleCount) || moduleCount != modules.size()) return failure("its answer was not understood");
   for (std::uint32_t m = 0; m < moduleCount; ++m) {
@@ -280,7 +281,7 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
     std::string error;
     if (!r.get(ok)) break;
     if (ok == 0) {
-      if (r.get(error)) return Status::failure("cannot load the controller '" + sources.at(m) + "': " + error);
+      if (r.get(error)) return Status::failure(loadError(sources.at(m), error));
       break;
     }
     if (!(r.get(e.name) && r.get(e.options.world) && r.get(e.options.seconds) && r.get(e.options.summary))) break;
@@ -439,6 +440,21 @@ class IsolatedDriver final : public worlds::ControllerDriver {
 };
 
 }  // namespace
+
+std::string missingLayers(const std::vector<sandbox::Layer>& layers) {
+  std::string out;
+  for (const sandbox::Layer& l : layers) {
+    if (!l.applied && l.required) out += l.name + ": NOT applied" + (l.note.empty() ? "" : " (" + l.note + ")") + "\n";
+  }
+  return out;
+}
+
+Result<LoadedController> describeInHost(const CompiledController& compiled, const IsolationDef& def) {
+  Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start({compiled.module}, {compiled.source}, def);
+  if (!host) return host.status();
+  return LoadedController{.entry = host.value()->entries().at(0), .source = compiled.source, .module = compiled.module,
+                          .compiled = compiled.compiled};
+}
 
 worlds::DriverFactory ControllerHost::driver(std::vector<std::size_t> modulePerRobot, bool pictures) {
   return [self = shared_from_this(), modulePerRobot = std::move(modulePerRobot),

@@ -10,7 +10,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <sstream>
 
@@ -78,7 +80,8 @@ Result<Jailed> Jailed::start(const JailDef& def) {
   for (std::string line; std::getline(lines, line);) {
     const std::size_t a = line.find('\t'), b = line.find('\t', a + 1);
     if (b == std::string::npos) continue;
-    j.layers_.push_back({line.substr(0, a), line.substr(a + 1, b - a - 1) == "1", line.substr(b + 1)});
+    const std::string flags = line.substr(a + 1, b - a - 1);  // applied, then required
+    j.layers_.push_back({line.substr(0, a), flags.starts_with("1"), flags.ends_with("1"), line.substr(b + 1)});
   }
   if (j.layers_.empty()) return Status::failure("the sandbox " FROB_JAIL_PATH " did not start: status " + std::to_string(j.wait()));
   return j;
@@ -118,12 +121,39 @@ int Jailed::wait() {
   return status_;
 }
 
-std::string describe(const std::vector<sandbox::Layer>& layers) {
-  std::string out;
-  for (const sandbox::Layer& l : layers) {
-    out += l.name + ": " + (l.applied ? "applied" : "NOT applied") + (l.note.empty() ? "" : " (" + l.note + ")") + "\n";
+Result<JailedRun> runJailed(JailDef def, double seconds, std::size_t outputBytes) {
+  int out[2];
+  if (::pipe2(out, O_CLOEXEC) != 0) return Status::failure(std::string("cannot start the sandbox: ") + std::strerror(errno));
+  def.fds.resize(std::max<std::size_t>(def.fds.size(), 3), -1);
+  def.fds[1] = def.fds[2] = out[1];
+  Result<Jailed> started = Jailed::start(def);
+  ::close(out[1]);
+  if (!started) {
+    ::close(out[0]);
+    return started.status();
   }
-  return out;
+  Jailed& j = started.value();
+  JailedRun run{.layers = j.layers()};
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  char buf[1 << 16];
+  // Read until the pipe closes (the program and anything it started are gone) or time is up.
+  for (bool open = true; open;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
+    if (left <= 0) {
+      run.timedOut = true;
+      j.kill();
+      break;
+    }
+    pollfd p{out[0], POLLIN, 0};
+    if (::poll(&p, 1, static_cast<int>(std::min<long long>(left, 1000))) <= 0) continue;
+    const ssize_t n = ::read(out[0], buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    open = n > 0;
+    if (n > 0) run.output.append(buf, std::min(static_cast<std::size_t>(n), outputBytes - std::min(outputBytes, run.output.size())));
+  }
+  ::close(out[0]);
+  run.status = j.wait();
+  return run;
 }
 
 }  // namespace frob::course

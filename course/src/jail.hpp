@@ -54,7 +54,18 @@ class Jailed {
   std::vector<sandbox::Layer> layers_;
 };
 
-/// The layers as one line each, "landlock: applied (ABI 7)" or "landlock: NOT applied (...)".
-[[nodiscard]] std::string describe(const std::vector<sandbox::Layer>& layers);
+/// How a confined program that ran to its end (or its deadline) did.
+struct JailedRun {
+  int status = -1;         ///< its wait status
+  bool timedOut = false;   ///< killed at the deadline
+  std::string output;      ///< its stdout and stderr together, cut at the limit
+  std::vector<sandbox::Layer> layers;
+};
+
+/// Runs `def` to its end with its stdout and stderr captured (def.fds[1], [2] are set here), killed
+/// after `seconds` of wall-clock time; keeps the first `outputBytes` of what it printed.
+[[nodiscard]] Result<JailedRun> runJailed(JailDef def, double seconds, std::size_t outputBytes);
+
+
 
 }  // namespace frob::course

@@ -5,6 +5,7 @@
 #include "frob/render/video.hpp"
 #include "session_outputs.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <filesystem>
@@ -14,6 +15,46 @@ namespace frob::course {
 namespace {
 
 constexpr std::size_t kLastTasks = 5;  // ended tasks kept for the summary, per robot
+
+// A host that could not start: its robot fails at the first step with the reason.
+class Unstarted final : public worlds::ControllerDriver {
+ public:
+  Unstarted(std::size_t robots, std::string why) : timelines_(robots), why_(std::move(why)) {}
+  void decide(const Instant&, std::span<Wheels>, std::span<Picture>, std::vector<std::pair<std::size_t, std::string>>& failed) override {
+    if (!why_.empty()) failed.emplace_back(0, std::move(why_));
+    why_.clear();
+  }
+  Timeline& timeline(std::size_t i) override { return timelines_.at(i); }
+
+ private:
+  std::vector<Timeline> timelines_;
+  std::string why_;
+};
+
+// The driver of `def`'s controllers: in this process, or in a sandboxed host.
+worlds::DriverFactory driverFor(const RunDef& def, std::shared_ptr<ControllerHost>& host, bool pictures) {
+  if (!def.isolation) {
+    std::vector<Controller> controllers;
+    for (const LoadedController& c : def.controllers) controllers.push_back(c.entry.make);
+    return worlds::inProcess(std::move(controllers));
+  }
+  std::vector<std::filesystem::path> modules;
+  std::vector<std::string> sources;
+  std::vector<std::size_t> modulePerRobot;
+  for (const LoadedController& c : def.controllers) {
+    const auto known = std::find(modules.begin(), modules.end(), c.module);
+    modulePerRobot.push_back(static_cast<std::size_t>(known - modules.begin()));
+    if (known == modules.end()) modules.push_back(c.module), sources.push_back(c.source);
+  }
+  Result<std::shared_ptr<ControllerHost>> started = ControllerHost::start(modules, sources, *def.isolation);
+  if (!started) {
+    return [why = started.error()](const worlds::Simulation& sim) -> std::unique_ptr<worlds::ControllerDriver> {
+      return std::make_unique<Unstarted>(sim.robotCount(), why);
+    };
+  }
+  host = started.value();
+  return host->driver(modulePerRobot, pictures);
+}
 
 const worlds::NamedPoint* findGoal(const worlds::WorldDef& world) {
   for (const worlds::NamedPoint& p : world.points) {
@@ -71,20 +112,24 @@ Status validate(const RunDef& def) {
     if (path.empty()) continue;
     if (Status s = render::checkWritable(path, what); !s) return s;
   }
+  for (const LoadedController& c : def.controllers) {
+    if (def.isolation ? c.module.empty() : !c.entry.make) {
+      return Status::failure("the controller '" + c.source + "' " + (def.isolation ? "has no module to run in a sandbox" : "cannot run in this process"));
+    }
+  }
   return {};
 }
 
 Result<Summary> runSession(const RunDef& def) {
   if (Status s = validate(def); !s) return s;
   const RunOutputs& out = def.outputs;
-  std::vector<Controller> controllers;
-  for (const LoadedController& c : def.controllers) controllers.push_back(c.entry.make);
-  worlds::Run run(def.world, def.options, controllers);
+  const bool drawFrames = !out.video.empty() || !out.frames.empty();
+  std::shared_ptr<ControllerHost> host;
+  worlds::Run run(def.world, def.options, driverFor(def, host, drawFrames));
   const worlds::Simulation& sim = run.simulation();
   const std::size_t n = sim.robotCount();
 
   // Outputs, opened before the first step so that a bad path fails at once.
-  const bool drawFrames = !out.video.empty() || !out.frames.empty();
   std::optional<render::RunView> view;
   if (drawFrames || !out.plot.empty()) view.emplace(run, render::RunViewDef{.plotSeconds = def.seconds});
   std::optional<render::Renderer> renderer;
@@ -172,6 +217,7 @@ Result<Summary> runSession(const RunDef& def) {
 
   Summary summary{.world = def.worldName, .seed = sim.seed(), .dt = sim.dt(), .simulatedSeconds = sim.time(),
                   .steps = sim.stepCount(), .trajectoryHash = run.recorder().trajectoryHash()};
+  if (host) summary.notes = host->notes(), summary.sandbox = host->layers();
   for (std::size_t i = 0; i < n; ++i) {
     RobotWatch& w = watch[i];
     w.summary.lastTasks.assign(w.lastEnded.begin(), w.lastEnded.end());

@@ -42,6 +42,7 @@ std::string formatSummary(const Summary& s, double wallSeconds) {
     if (!r.failure.empty()) text += "    FAILED: " + r.failure + "\n";
   }
   for (const std::string& w : s.written) text += "  wrote " + w + "\n";
+  for (const std::string& n : s.notes) text += "  note: " + n + "\n";
   return text;
 }
 
@@ -60,12 +61,15 @@ std::string summaryJson(const Summary& s, double wallSeconds) {
                       {"finished_at", optional(r.finishedAt)}, {"last_tasks", tasks},
                       {"failure", r.failure.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.failure)}});
   }
+  nlohmann::ordered_json sandbox = nlohmann::ordered_json::array();
+  for (const sandbox::Layer& l : s.sandbox) sandbox.push_back({{"layer", l.name}, {"applied", l.applied}, {"note", l.note}});
   char hash[24];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(s.trajectoryHash));
   nlohmann::ordered_json doc = {{"world", s.world}, {"seed", s.seed}, {"dt", s.dt},
                         {"simulated_seconds", s.simulatedSeconds}, {"steps", s.steps},
                         {"wall_seconds", wallSeconds}, {"real_time_factor", wallSeconds > 0 ? s.simulatedSeconds / wallSeconds : 0.0},
-                        {"trajectory_hash", hash}, {"failed", s.failed()}, {"robots", robots}, {"written", s.written}};
+                        {"trajectory_hash", hash}, {"failed", s.failed()}, {"robots", robots}, {"written", s.written},
+                        {"notes", s.notes}, {"sandbox", sandbox}};
   return doc.dump(1) + "\n";
 }
 

@@ -3,6 +3,7 @@
 #include "run_frob.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 namespace frob::testing {
 namespace {
@@ -109,7 +110,7 @@ TEST(FrobRun, CompileErrorShowsTheCompilerThenOneLine) {
   write(dir, "broken.cpp", controller("frontSonar(r) < \"x\""));
   const FrobResult r = runFrob(dir, with({"run", "broken.cpp"}, kAllOutputs));
   EXPECT_NE(r.status, 0);
-  EXPECT_NE(r.err.find("broken.cpp:3:"), std::string::npos) << r.err;  // the compiler's own message, with the line
+  EXPECT_EQ(r.err.rfind("broken.cpp:3:", 0), 0u) << r.err;  // the compiler's own message, naming the file as typed
   EXPECT_EQ(lines(r.err).back(), "frob: could not compile 'broken.cpp' (the compiler's messages are above)");
   EXPECT_EQ(filesIn(dir), std::vector<std::string>{"broken.cpp"});
 }
@@ -141,6 +142,35 @@ TEST(FrobRun, ControllerThatGivesNaN) {
                      "non-finite wheels");
   EXPECT_NE(err.find("at t = 1.010 s; no output files were written (--seconds 1.00 keeps the run up to the failure)"),
             std::string::npos) << err;
+}
+
+TEST(FrobRun, AControllerThatCrashesIsOneLineAndFrobLivesOn) {
+  const std::string err = expectCleanFailure(
+      "crash", controller("lift([](double t) { if (t > 0.5) *static_cast<volatile int*>(nullptr) = 1; return 0.1; }, time())"),
+      "frob: the controller failed: nomad: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.51 s;");
+  EXPECT_EQ(err.rfind("frob: ", 0), 0u);
+}
+
+TEST(FrobRun, AControllerThatLoopsForeverIsStopped) {
+  expectCleanFailure("loops", controller("lift([](double t) { volatile bool stuck = t > 0.5; while (stuck) {} return 0.1; }, time())"),
+                     "nomad: used more than 1 s of CPU in one step (an endless loop?) at t = 0.51 s;");
+}
+
+TEST(FrobRun, IsolatedAndInProcessRunsDriveTheSameTrajectory) {
+  const fs::path dir = freshFolder("isolated_same");
+  write(dir, "slow.cpp", controller("0.2"));
+  const FrobResult isolated = runFrob(dir, {"run", "slow.cpp", "--seconds", "3", "--json", "--quiet"});
+  const FrobResult here = runFrob(dir, {"run", "slow.cpp", "--seconds", "3", "--json", "--quiet", "--no-isolate"});
+  ASSERT_EQ(isolated.status, 0) << isolated.err;
+  ASSERT_EQ(here.status, 0) << here.err;
+  const nlohmann::json a = nlohmann::json::parse(isolated.out), b = nlohmann::json::parse(here.out);
+  EXPECT_EQ(a["trajectory_hash"], b["trajectory_hash"]);
+  EXPECT_EQ(a["steps"], 300);
+  // The sandbox's layers are in the summary; none is there when the controller ran in frob itself.
+  std::vector<std::string> layers;
+  for (const auto& l : a["sandbox"]) layers.push_back(l["layer"]);
+  EXPECT_EQ(layers, (std::vector<std::string>{"resource limits", "unprivileged user", "no new privileges", "landlock", "seccomp"}));
+  EXPECT_TRUE(b["sandbox"].empty());
 }
 
 TEST(FrobRun, FileWithoutControllerLine) {

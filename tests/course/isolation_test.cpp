@@ -107,6 +107,8 @@ struct Case {
   std::string reason;  // the failure's whole message
 };
 
+void PrintTo(const Case& c, std::ostream* os) { *os << c.module; }
+
 class Hostile : public ::testing::TestWithParam<Case> {};
 
 TEST_P(Hostile, FailsItsRobotWithAReasonAndNothingElse) {
@@ -180,12 +182,12 @@ TEST(Isolation, AMemoryBombFailsOnItsLimit) {
 
 TEST(Isolation, AGlobalConstructorThatNeverEndsIsStopped) {
   const Outcome o = runHostile({"endless_constructor"}, {.startSeconds = 0.5});
-  EXPECT_EQ(o.startError, "endless_constructor: did not finish starting within 0.5 s (an endless loop?) at t = 0.00 s (in a global constructor)");
+  EXPECT_EQ(o.startError, "the controller 'endless_constructor' failed: did not finish starting within 0.5 s (an endless loop?) at t = 0.00 s (in a global constructor)");
 }
 
 TEST(Isolation, AGlobalConstructorThatCrashesIsNamed) {
   const Outcome o = runHostile({"crash_in_constructor"});
-  EXPECT_EQ(o.startError, "crash_in_constructor: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.00 s "
+  EXPECT_EQ(o.startError, "the controller 'crash_in_constructor' failed: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.00 s "
                           "(in a global constructor)");
 }
 

@@ -92,12 +92,12 @@ int main(int argc, char** argv) {
   ::syscall(SYS_close_range, from, ~0U, 0);
   files.execute.push_back(command[0]);
   if (std::string loader = interpreterOf(program); !loader.empty()) files.execute.push_back(loader);
-  const Layer user = keepUser ? Layer{"unprivileged user", false, "not asked for: it runs as the caller"} : dropPrivileges(uid, gid);
+  const Layer user = keepUser ? Layer{"unprivileged user", false, false, "not asked for: it runs as the caller"} : dropPrivileges(uid, gid);
   std::vector<Layer> layers{limitResources(limits), user, noNewPrivileges(), restrictFiles(files)};
   if (seccomp == "no-network") layers.push_back(restrictSyscalls(SyscallPolicy::NoNetwork));
   if (reportFd >= 0) {
     std::string report;
-    for (const Layer& l : layers) report += l.name + "\t" + (l.applied ? "1" : "0") + "\t" + l.note + "\n";
+    for (const Layer& l : layers) report += l.name + "\t" + (l.applied ? "1" : "0") + (l.required ? "1" : "0") + "\t" + l.note + "\n";
     [[maybe_unused]] const ssize_t n = ::write(reportFd, report.data(), report.size());
     ::close(reportFd);
   }

@@ -1,10 +1,12 @@
 #pragma once
-/// Student controller files: one C++ file ending with FROB_CONTROLLER(...), compiled against the
-/// project's headers into a shared object, cached by content, and loaded into this process.
+/// Student controller files: one C++ file ending with FROB_CONTROLLER(...), compiled in a sandbox
+/// against the project's headers into a shared object, cached by content, then run in a sandboxed
+/// controller host (isolation.hpp) or, for trusted code, loaded into this process.
 
 #include "frob/controller.hpp"
 #include "frob/render/result.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -20,25 +22,37 @@ struct CompilerSetup {
   std::vector<std::string> flags;    ///< language, optimisation, sanitizer and include flags (the project's ABI)
   std::string precompiledHeader;     ///< frob.hpp precompiled with `flags`; empty or missing: compile without
   std::filesystem::path cacheDir;    ///< where compiled controllers are kept, named by a hash of what made them
+  double seconds = 120.0;            ///< wall-clock and CPU time a compile may take
+  std::uint64_t memoryBytes = 4ULL << 30;  ///< address space of the compiler
 };
 
 /// The build's compiler, flags and precompiled header; the cache is $FROB_CACHE_DIR, else
 /// $XDG_CACHE_HOME/frob, else ~/.cache/frob.
 [[nodiscard]] CompilerSetup compilerSetup();
 
-/// A controller loaded from a file. Its module stays loaded for the life of the process.
-struct LoadedController {
-  ControllerEntry entry;  ///< what the file's FROB_CONTROLLER declared
-  std::string source;     ///< the file it came from, as given
-  bool compiled = false;  ///< true when it was compiled now, false when the cache (or the build) had it
+/// A controller file compiled into a module, not loaded anywhere yet.
+struct CompiledController {
+  std::filesystem::path module;  ///< the shared object
+  std::string source;            ///< the file it came from, as given
+  bool compiled = false;         ///< true when it was compiled now, false when the cache (or the build) had it
 };
 
-/// Compiles `source` unless the cache already holds it, then loads it. On a compile error the
-/// compiler's own messages have gone to stderr and the error names the file.
-[[nodiscard]] Result<LoadedController> loadControllerFile(const std::filesystem::path& source,
-                                                          const CompilerSetup& setup = compilerSetup());
-/// Loads an already compiled controller module (a .so built from `source`).
-[[nodiscard]] Result<LoadedController> loadControllerModule(const std::filesystem::path& module,
-                                                            const std::string& source);
+/// A controller ready to run: what its FROB_CONTROLLER declared, and where it came from.
+struct LoadedController {
+  ControllerEntry entry;         ///< its `make` is empty when the controller runs only in a controller host
+  std::string source;            ///< the file it came from, as given
+  std::filesystem::path module;  ///< its module; empty for a controller built in this process
+  bool compiled = false;         ///< true when it was compiled now, false when the cache (or the build) had it
+};
+
+/// Compiles `source` unless the cache already holds it. The compiler runs confined: it reads only
+/// the system's headers, frob's, and the source's own folder, within time and memory limits. On a
+/// compile error the error names the file; the compiler's messages go to `messages`, or to stderr.
+[[nodiscard]] Result<CompiledController> compileControllerFile(const std::filesystem::path& source,
+                                                               const CompilerSetup& setup = compilerSetup(),
+                                                               std::string* messages = nullptr);
+/// Loads `compiled` into this process, where its code runs unconfined (trusted code only). Its
+/// module stays loaded for the life of the process.
+[[nodiscard]] Result<LoadedController> loadInProcess(const CompiledController& compiled);
 
 }  // namespace frob::course

@@ -23,7 +23,7 @@ struct Example {
 [[nodiscard]] std::vector<Example> examples();
 /// The example called `name`, with or without its number ("06_bug" or "bug").
 [[nodiscard]] std::optional<Example> findExample(std::string_view name);
-/// Loads `example`: its prebuilt module, or its source compiled when the module is missing.
-[[nodiscard]] Result<LoadedController> loadExample(const Example& example);
+/// `example` as a module: the one the build made, or its source compiled when that is missing or older.
+[[nodiscard]] Result<CompiledController> compileExample(const Example& example);
 
 }  // namespace frob::course

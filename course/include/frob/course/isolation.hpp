@@ -8,6 +8,7 @@
 ///   run.runUntil(60);   // a crash, a hang or a forbidden call fails the robot with a reason
 
 #include "frob/controller.hpp"
+#include "frob/course/controller_file.hpp"
 #include "frob/render/result.hpp"
 #include "frob/sandbox/confine.hpp"
 #include "frob/worlds/run.hpp"
@@ -66,5 +67,11 @@ class ControllerHost : public std::enable_shared_from_this<ControllerHost> {
   explicit ControllerHost(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };
+
+/// The layers that were needed and not applied, one line each ("landlock: NOT applied (...)"); "" when none.
+[[nodiscard]] std::string missingLayers(const std::vector<sandbox::Layer>& layers);
+
+/// What `compiled` declares, as a sandboxed host reports it: its code never runs in this process.
+[[nodiscard]] Result<LoadedController> describeInHost(const CompiledController& compiled, const IsolationDef& def = {});
 
 }  // namespace frob::course

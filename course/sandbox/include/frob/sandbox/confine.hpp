@@ -14,6 +14,7 @@ namespace frob::sandbox {
 struct Layer {
   std::string name;      ///< e.g. "landlock"
   bool applied = false;  ///< false when the kernel lacks it or it was not asked for
+  bool required = true;  ///< false when this process has no need of it (no uid to drop when not root)
   std::string note;      ///< e.g. "ABI 7" or "not available: the kernel was built without Landlock"
 };
 

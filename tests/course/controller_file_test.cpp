@@ -1,0 +1,91 @@
+// Compiling a controller file: in a sandbox that lets the compiler read the system's headers,
+// frob's and the submission's own folder, and nothing else, within limits of time and memory.
+#include "frob/course/controller_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace frob::course {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh folder under the test's temp folder.
+fs::path freshFolder(const std::string& name) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "controller_file_test" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void writeFile(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+CompilerSetup setupIn(const fs::path& dir) {
+  CompilerSetup s = compilerSetup();
+  s.cacheDir = dir / "cache";
+  return s;
+}
+
+constexpr const char* kController = R"(#include <frob/frob.hpp>
+#include "speed.hpp"
+frob::Behavior<frob::Wheels> go(const frob::Robot&) { return frob::Wheels{kSpeed, 0.0}; }
+FROB_CONTROLLER(go)
+)";
+
+TEST(ControllerFile, CompilesWithHeadersFromItsOwnFolderAndCachesTheModule) {
+  const fs::path dir = freshFolder("own_folder");
+  writeFile(dir / "go.cpp", kController);
+  writeFile(dir / "speed.hpp", "constexpr double kSpeed = 0.3;\n");
+  std::string messages;
+  Result<CompiledController> c = compileControllerFile(dir / "go.cpp", setupIn(dir), &messages);
+  ASSERT_TRUE(c.ok()) << c.error() << messages;
+  EXPECT_TRUE(c.value().compiled);
+  EXPECT_TRUE(fs::exists(c.value().module));
+  Result<CompiledController> again = compileControllerFile(dir / "go.cpp", setupIn(dir));
+  ASSERT_TRUE(again.ok());
+  EXPECT_FALSE(again.value().compiled);
+  EXPECT_EQ(again.value().module, c.value().module);
+  // Nothing but the module is left in the cache: the build folder is gone.
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir / "cache"), fs::directory_iterator()), 1);
+}
+
+TEST(ControllerFile, AnIncludeOutsideItsFolderCannotBeReadAndNoLineOfItIsShown) {
+  const fs::path dir = freshFolder("secret");
+  fs::create_directories(dir / "submission");
+  writeFile(dir / "instructor_key.txt", "int answer = 42; // THE-SECRET-SOLUTION\n");
+  writeFile(dir / "submission" / "steal.cpp", "#include \"" + (dir / "instructor_key.txt").string() + "\"\n");
+  std::string messages;
+  Result<CompiledController> c = compileControllerFile(dir / "submission" / "steal.cpp", setupIn(dir), &messages);
+  ASSERT_FALSE(c.ok());
+  EXPECT_EQ(c.error(), "could not compile '" + (dir / "submission" / "steal.cpp").string() + "' (the compiler's messages are above)");
+  EXPECT_NE(messages.find("cannot open file '" + (dir / "instructor_key.txt").string() + "': Permission denied"), std::string::npos)
+      << messages;
+  EXPECT_EQ(messages.find("THE-SECRET-SOLUTION"), std::string::npos) << messages;
+  EXPECT_EQ(messages.find("answer"), std::string::npos) << messages;
+}
+
+TEST(ControllerFile, AFileOfTheSystemOutsideTheHeadersCannotBeIncluded) {
+  const fs::path dir = freshFolder("passwd");
+  writeFile(dir / "passwd.cpp", "#include \"/etc/passwd\"\n");
+  std::string messages;
+  ASSERT_FALSE(compileControllerFile(dir / "passwd.cpp", setupIn(dir), &messages).ok());
+  EXPECT_NE(messages.find("cannot open file '/etc/passwd': Permission denied"), std::string::npos) << messages;
+  EXPECT_EQ(messages.find("root:"), std::string::npos) << messages;
+}
+
+TEST(ControllerFile, ACompileThatNeverEndsIsStoppedAtItsTimeLimit) {
+  const fs::path dir = freshFolder("bomb");
+  // Ten to the sixteenth tokens: it would run until it ran out of memory, minutes later.
+  writeFile(dir / "bomb.cpp", "#define A(x) x x x x x x x x x x\n#define B(x) A(A(A(A(A(A(A(A(x))))))))\nint v[] = { B(B(1)) };\n");
+  CompilerSetup setup = setupIn(dir);
+  setup.seconds = 2;
+  Result<CompiledController> c = compileControllerFile(dir / "bomb.cpp", setup);
+  ASSERT_FALSE(c.ok());
+  EXPECT_EQ(c.error(), "compiling '" + (dir / "bomb.cpp").string() +
+                           "' took longer than 2 s, so it was stopped (an #include or a macro that never ends?)");
+}
+
+}  // namespace
+}  // namespace frob::course
