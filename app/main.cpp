@@ -97,7 +97,7 @@ struct RunArgs {
   int fps = 30;
   std::optional<double> speed;
   course::RunOutputs outputs;
-  bool json = false, quiet = false, noIsolate = false;
+  bool json = false, quiet = false, isolate = true;
 };
 
 int runCommand(RunArgs a) {
@@ -110,7 +110,7 @@ int runCommand(RunArgs a) {
   // The demo's video plays 4 times faster than the robot drives: two minutes of BUG in half a minute.
   course::RunDef def{.options = {.dt = a.dt, .seed = a.seed}, .outputs = a.outputs, .fps = a.fps,
                      .speed = a.speed.value_or(demo ? 4.0 : 1.0)};
-  if (!a.noIsolate) def.isolation.emplace();
+  if (a.isolate) def.isolation.emplace();
   for (const std::string& name : a.controllers) {
     Result<course::LoadedController> c = loadController(name, def.isolation, a.quiet);
     if (!c) return fail(c.error());
@@ -213,8 +213,9 @@ int main(int argc, char** argv) {
   runCmd->add_option("--size", run.size, "Frame size, WIDTHxHEIGHT")->capture_default_str();
   runCmd->add_option("--view", run.view, "top (from above) or chase (behind the first robot)")->capture_default_str()->check(CLI::IsMember({"top", "chase"}));
   runCmd->add_flag("--json", run.json, "Print the summary as JSON");
-  runCmd->add_flag("--no-isolate", run.noIsolate,
-                   "Run the controllers inside frob itself instead of a sandboxed process (a crash then takes frob down)");
+  runCmd->add_flag("--isolate,!--no-isolate", run.isolate,
+                   "Run the controllers in a sandboxed process of their own (the default); --no-isolate runs them "
+                   "inside frob itself, where a crash takes frob down");
   runCmd->add_flag("-q,--quiet", run.quiet, "No progress bar or notes on stderr");
 
   std::string renderWorld, renderOut, renderSize = "960x720";

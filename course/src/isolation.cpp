@@ -296,6 +296,8 @@ ControllerHost::~ControllerHost() = default;
 const std::vector<ControllerEntry>& ControllerHost::entries() const { return impl_->entries; }
 const std::vector<sandbox::Layer>& ControllerHost::layers() const { return impl_->layers; }
 
+int ControllerHost::processId() const { return impl_->process.pid(); }
+
 std::vector<std::string> ControllerHost::notes() const {
   impl_->drainOutput();
   if (impl_->outputSeen <= impl_->def.outputBytes) return {};

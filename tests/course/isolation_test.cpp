@@ -9,8 +9,13 @@
 
 #include <dlfcn.h>
 #include <gtest/gtest.h>
+#include <poll.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 
 namespace frob::course {
 namespace {
@@ -196,6 +201,40 @@ TEST(Isolation, AMultiRobotRunNamesTheRobotWhoseControllerFailed) {
   ASSERT_EQ(o.failures.size(), 1u);
   EXPECT_EQ(o.failures[0].robot, 1u);
   EXPECT_EQ(o.failures[0].message, "bob: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.50 s");
+}
+
+TEST(Isolation, TheHostDiesWithTheProcessThatStartedIt) {
+  int pipeFds[2];
+  ASSERT_EQ(::pipe(pipeFds), 0);
+  const pid_t starter = ::fork();
+  if (starter == 0) {  // starts a host, says its pid, and ends without stopping it
+    Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start({testing::hostileModule("starts_thread")}, {"t"});
+    const int pid = host ? host.value()->processId() : -1;
+    [[maybe_unused]] const ssize_t n = ::write(pipeFds[1], &pid, sizeof pid);
+    ::_exit(0);
+  }
+  int hostPid = 0;
+  ASSERT_EQ(::read(pipeFds[0], &hostPid, sizeof hostPid), static_cast<ssize_t>(sizeof hostPid));
+  ASSERT_GT(hostPid, 0);
+  const int pidfd = static_cast<int>(::syscall(SYS_pidfd_open, hostPid, 0));
+  ::waitpid(starter, nullptr, 0);
+  // Either already gone, or readable (ended) within the time the kernel takes to deliver the signal.
+  if (pidfd >= 0) {
+    pollfd p{pidfd, POLLIN, 0};
+    EXPECT_EQ(::poll(&p, 1, 10'000), 1);
+    ::close(pidfd);
+  }
+  ::close(pipeFds[0]), ::close(pipeFds[1]);
+}
+
+TEST(Isolation, TheHostHoldsNoCodeOfTheWorldTheRendererOrTheGrader) {
+  std::ifstream in(FROB_HOST_PATH, std::ios::binary);
+  const std::string binary{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  ASSERT_GT(binary.size(), 100'000u);
+  EXPECT_NE(binary.find("_ZN4frob"), std::string::npos);  // frob is there, exported to the modules
+  for (const char* absent : {"_ZN4frob6worlds", "_ZN4frob6render", "_ZN4frob6course", "b2World", "OSMesa", "avcodec", "libbox2d"}) {
+    EXPECT_EQ(binary.find(absent), std::string::npos) << absent;
+  }
 }
 
 TEST(Isolation, EveryLayerSaysWhetherItWasApplied) {

@@ -71,10 +71,7 @@ int main(int argc, char** argv) {
   cli.add_option("command", command, "the program and its arguments")->required();
   CLI11_PARSE(cli, argc, argv);
 
-  // Its own session and process group, killed with the process that started it.
-  ::setsid();
-  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-  if (parent != 0 && ::getppid() != parent) return 127;
+  ::setsid();  // its own session and process group
   // Opened before the user changes: the program may sit in a folder only the caller can enter.
   const int program = ::open(command[0].c_str(), O_RDONLY | O_CLOEXEC);
   if (program < 0 || ::chdir(cwd.c_str()) != 0) {
@@ -95,6 +92,9 @@ int main(int argc, char** argv) {
   const Layer user = keepUser ? Layer{"unprivileged user", false, false, "not asked for: it runs as the caller"} : dropPrivileges(uid, gid);
   std::vector<Layer> layers{limitResources(limits), user, noNewPrivileges(), restrictFiles(files)};
   if (seccomp == "no-network") layers.push_back(restrictSyscalls(SyscallPolicy::NoNetwork));
+  // Killed with the process that started it; set after the user changed, which clears it.
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (parent != 0 && ::getppid() != parent) return 127;
   if (reportFd >= 0) {
     std::string report;
     for (const Layer& l : layers) report += l.name + "\t" + (l.applied ? "1" : "0") + (l.required ? "1" : "0") + "\t" + l.note + "\n";

@@ -58,6 +58,8 @@ class ControllerHost : public std::enable_shared_from_this<ControllerHost> {
   /// The driver of a run whose robot i runs module modulePerRobot[i] (one entry: all robots);
   /// with `pictures`, each reply carries the robot's picture. A host drives one run.
   [[nodiscard]] worlds::DriverFactory driver(std::vector<std::size_t> modulePerRobot, bool pictures);
+  /// The host's process id, for monitoring.
+  [[nodiscard]] int processId() const;
   /// Things worth saying that are not failures, e.g. that output was dropped.
   [[nodiscard]] std::vector<std::string> notes() const;
 
