@@ -42,6 +42,26 @@ std::optional<Point2> findPoint(const WorldDef& w, const std::string& name) {
 
 std::string checkWorld(const WorldDef& w) { return detail::checkWorld(w, detail::SourceLines{}); }
 
+double distanceToWall(const Point2& p, const WallDef& wall) {
+  const auto& v = wall.points;
+  switch (wall.shape) {
+    case WallShape::Segment: return detail::distanceToSegment(p, v[0], v[1]);
+    case WallShape::Rectangle: {
+      const double dx = std::max({v[0].x() - p.x(), 0.0, p.x() - v[1].x()});
+      const double dy = std::max({v[0].y() - p.y(), 0.0, p.y() - v[1].y()});
+      return std::hypot(dx, dy);
+    }
+    case WallShape::Circle: return std::max(0.0, (p - v[0]).norm() - wall.radius);
+    case WallShape::Polyline: {
+      double d = INFINITY;
+      for (std::size_t i = 0; i + 1 < v.size(); ++i) d = std::min(d, detail::distanceToSegment(p, v[i], v[i + 1]));
+      if (wall.closed) d = std::min(d, detail::distanceToSegment(p, v.back(), v.front()));
+      return d;
+    }
+  }
+  return INFINITY;
+}
+
 namespace detail {
 
 std::string where(const SourceLines& at, int line) {
@@ -70,27 +90,6 @@ std::string fmt(double v) {
 }
 
 bool finite(const Point2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
-
-// Distance from `p` to the nearest point of wall `wall` (0 inside a solid wall).
-double distanceToWall(const Point2& p, const WallDef& wall) {
-  const auto& v = wall.points;
-  switch (wall.shape) {
-    case WallShape::Segment: return distanceToSegment(p, v[0], v[1]);
-    case WallShape::Rectangle: {
-      const double dx = std::max({v[0].x() - p.x(), 0.0, p.x() - v[1].x()});
-      const double dy = std::max({v[0].y() - p.y(), 0.0, p.y() - v[1].y()});
-      return std::hypot(dx, dy);
-    }
-    case WallShape::Circle: return std::max(0.0, (p - v[0]).norm() - wall.radius);
-    case WallShape::Polyline: {
-      double d = INFINITY;
-      for (std::size_t i = 0; i + 1 < v.size(); ++i) d = std::min(d, distanceToSegment(p, v[i], v[i + 1]));
-      if (wall.closed) d = std::min(d, distanceToSegment(p, v.back(), v.front()));
-      return d;
-    }
-  }
-  return INFINITY;
-}
 
 // Empty if `wall` is well formed and inside the world, else what is wrong with which field.
 std::string checkWall(const WallDef& wall, const Vec2& size) {

@@ -2,6 +2,7 @@
 
 #include "check.hpp"
 #include "frob/worlds/maps.hpp"
+#include "frob/worlds/toml_reader.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,18 +18,14 @@ constexpr double kDeg = pi / 180.0;
 
 // Reads one world file into a WorldDef, stopping at the first error. Every reader returns false
 // after recording "file:line: field: message" in `error`.
-class Parser {
+class Parser : TomlReader {
  public:
-  Parser(std::string file, std::filesystem::path base) : base_(std::move(base)) { lines_.file = std::move(file); }
+  Parser(std::string file, std::filesystem::path base) : TomlReader(file), base_(std::move(base)) { lines_.file = std::move(file); }
 
   Loaded<WorldDef> parse(std::string_view text) {
     toml::table root;
-    try {
-      root = toml::parse(text, lines_.file);
-    } catch (const toml::parse_error& e) {
-      return failed(where(line(e.source())) + "syntax error: " + std::string(e.description()));
-    }
-    if (!readWorld(root)) return failed(error_);
+    if (!TomlReader::parse(text, root)) return failed(error());
+    if (!readWorld(root)) return failed(error());
     if (auto e = detail::checkWorld(world_, lines_); !e.empty()) return failed(e);
     return {.value = std::move(world_)};
   }
@@ -36,81 +33,7 @@ class Parser {
  private:
   static Loaded<WorldDef> failed(std::string e) { return {.error = std::move(e)}; }
   static int line(const toml::source_region& r) { return static_cast<int>(r.begin.line); }
-  std::string where(int l) const { return detail::where(lines_, l); }
-  bool fail(int l, const std::string& field, const std::string& message) {
-    error_ = where(l) + field + ": " + message;
-    return false;
-  }
-  bool fail(const toml::node& n, const std::string& field, const std::string& message) {
-    return fail(line(n.source()), field, message);
-  }
-
-  // Unknown keys are errors: a typo must not be silently ignored.
-  bool onlyKeys(const toml::table& t, const std::string& prefix, std::initializer_list<std::string_view> allowed) {
-    for (auto&& [k, v] : t) {
-      if (std::find(allowed.begin(), allowed.end(), k.str()) != allowed.end()) continue;
-      std::string list;
-      for (auto a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-      return fail(line(k.source()), prefix + std::string(k.str()), "unknown key (expected one of " + list + ")");
-    }
-    return true;
-  }
-
-  bool number(const toml::node& n, const std::string& field, double& out) {
-    if (auto f = n.as_floating_point()) out = f->get();
-    else if (auto i = n.as_integer()) out = static_cast<double>(i->get());
-    else return fail(n, field, "expected a number");
-    if (!std::isfinite(out)) return fail(n, field, "expected a finite number");
-    return true;
-  }
-  bool integer(const toml::node& n, const std::string& field, long long lo, long long hi, int& out) {
-    auto i = n.as_integer();
-    if (!i) return fail(n, field, "expected an integer");
-    if (i->get() < lo || i->get() > hi)
-      return fail(n, field, "must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-    out = static_cast<int>(i->get());
-    return true;
-  }
-  bool point(const toml::node& n, const std::string& field, Point2& out) {
-    auto a = n.as_array();
-    if (!a || a->size() != 2 || !(*a)[0].is_number() || !(*a)[1].is_number())
-      return fail(n, field, "expected [x, y]");
-    return number((*a)[0], field, out.x()) && number((*a)[1], field, out.y());
-  }
-  bool string(const toml::node& n, const std::string& field, std::string& out) {
-    auto s = n.as_string();
-    if (!s) return fail(n, field, "expected a string");
-    out = s->get();
-    return true;
-  }
-  bool boolean(const toml::node& n, const std::string& field, bool& out) {
-    auto b = n.as_boolean();
-    if (!b) return fail(n, field, "expected true or false");
-    out = b->get();
-    return true;
-  }
-  const toml::table* table(const toml::node& n, const std::string& field) {
-    auto t = n.as_table();
-    if (!t) fail(n, field, "expected a table");
-    return t;
-  }
-  // Optional keys: absent leaves `out` as it was.
-  bool optNumber(const toml::table& t, std::string_view key, const std::string& field, double& out, double unit = 1) {
-    const toml::node* n = t.get(key);
-    if (!n) return true;
-    if (!number(*n, field, out)) return false;
-    out *= unit;
-    return true;
-  }
-  bool optInteger(const toml::table& t, std::string_view key, const std::string& field, long long lo, long long hi,
-                  int& out) {
-    const toml::node* n = t.get(key);
-    return !n || integer(*n, field, lo, hi, out);
-  }
-  bool optPoint(const toml::table& t, std::string_view key, const std::string& field, Point2& out) {
-    const toml::node* n = t.get(key);
-    return !n || point(*n, field, out);
-  }
+  using TomlReader::line;
 
   bool readWorld(const toml::table& root) {
     if (!onlyKeys(root, "", {"description", "size", "enclosed", "seed", "wall", "points", "robot", "key", "bitmap",
@@ -364,7 +287,6 @@ class Parser {
   detail::SourceLines lines_;
   WorldDef world_;
   RobotDef defaults_;
-  std::string error_;
 };
 
 }  // namespace

@@ -109,6 +109,8 @@ struct WorldDef {
 [[nodiscard]] RobotSpec robotSpec(const RobotDef& r);
 /// Sonar directions of `s` relative to heading, radians (explicit `angles`, or `count` evenly spaced).
 [[nodiscard]] std::vector<double> sonarAngles(const SonarDef& s);
+/// Distance from `p` to the nearest point of `wall`, metres (0 inside a solid wall).
+[[nodiscard]] double distanceToWall(const Point2& p, const WallDef& wall);
 /// The named point `name`, if the world has one.
 [[nodiscard]] std::optional<Point2> findPoint(const WorldDef& w, const std::string& name);
 /// Checks a world built in code for contradictions (robot inside a wall, outside the world, bad
