@@ -1,6 +1,7 @@
 #include "frob/course/controller_file.hpp"
 
 #include "controller_setup.inc"
+#include "frob/worlds/fnv.hpp"
 #include "jail.hpp"
 #include "load_error.hpp"
 
@@ -29,12 +30,6 @@ namespace {
 #define FROB_STRINGIFY2(x) #x
 #define FROB_STRINGIFY(x) FROB_STRINGIFY2(x)
 constexpr const char* kEntrySymbol = FROB_STRINGIFY(FROB_CONTROLLER_SYMBOL);
-
-// FNV-1a 64 over `text`, continuing from `hash`.
-std::uint64_t fnv(std::uint64_t hash, std::string_view text) {
-  for (unsigned char c : text) hash = (hash ^ c) * 0x100000001b3ULL;
-  return hash;
-}
 
 // Size and modification time of a file, as text: a rebuilt file changes it.
 std::string fileStamp(const std::string& path) {
@@ -120,13 +115,13 @@ Result<CompiledController> compileControllerFile(const fs::path& source, const C
 
   // The cache key: the source, how it is compiled, and the headers and program it is compiled for.
   const bool pch = !setup.precompiledHeader.empty() && fs::exists(setup.precompiledHeader);
-  std::uint64_t key = fnv(0xcbf29ce484222325ULL, text);
-  key = fnv(key, setup.compiler);
-  for (const std::string& f : setup.flags) key = fnv(fnv(key, "\n"), f);
-  key = fnv(key, pch ? fileStamp(setup.precompiledHeader) : "no pch");
-  key = fnv(key, fileStamp("/proc/self/exe"));
+  worlds::Fnv1a key;
+  key.add(std::string_view(text)).add(std::string_view(setup.compiler));
+  for (const std::string& f : setup.flags) key.add(std::string_view("\n")).add(std::string_view(f));
+  key.add(std::string_view(pch ? fileStamp(setup.precompiledHeader) : "no pch"));
+  key.add(std::string_view(fileStamp("/proc/self/exe")));
   char name[32];
-  std::snprintf(name, sizeof name, "%016llx", static_cast<unsigned long long>(key));
+  std::snprintf(name, sizeof name, "%016llx", static_cast<unsigned long long>(key.value()));
   const fs::path module = setup.cacheDir / (source.stem().string() + "-" + name + ".so");
   const CompiledController compiled{.module = module, .source = source.string(), .compiled = true};
   if (fs::exists(module)) return CompiledController{.module = module, .source = source.string()};

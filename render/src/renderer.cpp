@@ -1,5 +1,7 @@
 #include "frob/render/renderer.hpp"
 
+#include "frob/worlds/fnv.hpp"
+
 #include "chase_view.hpp"
 #include "draw.hpp"
 #include "font_atlas.hpp"
@@ -162,15 +164,13 @@ class StaticKey {
  public:
   template <class T>
   void add(const T& v) {
-    static_assert(std::is_trivially_copyable_v<T>);
-    const auto* p = reinterpret_cast<const unsigned char*>(&v);
-    for (std::size_t i = 0; i < sizeof(T); ++i) h_ = (h_ ^ p[i]) * 0x100000001b3ULL;
+    h_.add(v);
   }
-  void add(const Point2& p) { add(p.x()), add(p.y()); }
-  [[nodiscard]] std::uint64_t value() const { return h_; }
+  void add(const Point2& p) { h_.add(p.x()).add(p.y()); }
+  [[nodiscard]] std::uint64_t value() const { return h_.value(); }
 
  private:
-  std::uint64_t h_ = 0xcbf29ce484222325ULL;
+  worlds::Fnv1a h_;
 };
 
 std::uint64_t staticKeyOf(const FrameScene& s) {

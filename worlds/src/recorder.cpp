@@ -1,5 +1,6 @@
 #include "frob/worlds/recorder.hpp"
 
+#include "frob/worlds/fnv.hpp"
 #include "frob/worlds/simulation.hpp"
 
 #include <cstring>
@@ -7,14 +8,7 @@
 namespace frob::worlds {
 
 std::uint64_t hashPose(std::uint64_t hash, const Pose2& pose) {
-  const double values[3] = {pose.position.x(), pose.position.y(), pose.heading};
-  unsigned char bytes[sizeof values];
-  std::memcpy(bytes, values, sizeof values);
-  for (unsigned char b : bytes) {
-    hash ^= b;
-    hash *= 0x100000001b3ULL;
-  }
-  return hash;
+  return Fnv1a(hash).add(pose.position.x()).add(pose.position.y()).add(pose.heading).value();
 }
 
 void Recorder::record(const Simulation& sim, std::span<const Wheels> wheels, std::span<const Picture> pictures) {

@@ -3,6 +3,7 @@
 /// trajectory for golden tests.
 
 #include "frob/picture.hpp"
+#include "frob/worlds/fnv.hpp"
 #include "frob/robot_values.hpp"
 
 #include <cstdint>
@@ -36,8 +37,6 @@ struct RecorderOptions {
   bool keepSteps = true;  ///< keep every StepRecord; false keeps only the hash (long runs, benchmarks)
 };
 
-/// Start value of the FNV-1a 64-bit hash.
-inline constexpr std::uint64_t kFnvOffset = 0xcbf29ce484222325ULL;
 /// FNV-1a over the exact bytes of a pose's x, y and heading (doubles), continuing from `hash`.
 [[nodiscard]] std::uint64_t hashPose(std::uint64_t hash, const Pose2& pose);
 
