@@ -6,6 +6,7 @@
 #include "frob/render/output_file.hpp"
 #include "frob/render/run_view.hpp"
 #include "frob/worlds/registry.hpp"
+#include "grade.hpp"
 #include "progress.hpp"
 
 #include <CLI/CLI.hpp>
@@ -224,11 +225,40 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--out", renderOut, "PNG file to write")->required();
   renderCmd->add_option("--size", renderSize, "Image size, WIDTHxHEIGHT")->capture_default_str();
 
+  frob::app::GradeArgs grade;
+  CLI::App* gradeCmd = cli.add_subcommand("grade", "Grade a submission, or a folder of them, against an assignment's rubric");
+  gradeCmd->footer(R"(Examples:
+  frob grade go_to_goal my.cpp --visible-only --report r.html   check your work as students may
+  frob grade go_to_goal sub.cpp --results results.json --junit r.xml --logs logs/
+  frob grade go_to_goal class/ --jobs 2 --shard 1/4 --gradebook shard1.csv
+  frob grade --merge shard1.csv shard2.csv shard3.csv shard4.csv --gradebook grades.csv
+  frob grade --replay logs/reaches_the_goal__maze__3.log        a disputed run, judged again
+  frob grade go_to_goal --gradescope-zip autograder.zip --secret secret.txt
+Hidden seeds come from --secret FILE or $FROB_GRADE_SECRET. Exit status 0 whenever it graded.
+The rubric format and the instructors' guide: course/grading.md)");
+  gradeCmd->add_option("assignment", grade.assignment, "An assignment's name (assignments/NAME), folder or rubric.toml");
+  gradeCmd->add_option("submission", grade.submission, "A controller file, or a folder of them (a class)");
+  gradeCmd->add_option("--results", grade.results, "Write Gradescope's results.json");
+  gradeCmd->add_option("--prairielearn", grade.prairielearn, "Write PrairieLearn's results.json");
+  gradeCmd->add_option("--junit", grade.junit, "Write JUnit XML, a test case per check and world");
+  gradeCmd->add_option("--report", grade.report, "Write one self-contained HTML page, with the first failing run's video");
+  gradeCmd->add_option("--videos", grade.videos, "Keep the first failing run's video and plot in this folder");
+  gradeCmd->add_option("--logs", grade.logs, "Keep each run's wheel log in this folder (for --replay)");
+  gradeCmd->add_flag("--visible-only", grade.visibleOnly, "Grade only the checks students see");
+  gradeCmd->add_option("--secret", grade.secret, "The instructor's secret for hidden seeds (default: $FROB_GRADE_SECRET)");
+  gradeCmd->add_option("--jobs", grade.jobs, "Submissions graded at once (a class)")->capture_default_str()->check(CLI::Range(1, 256));
+  gradeCmd->add_option("--shard", grade.shard, "Grade only shard I of N of the class, e.g. 2/8 (the same split on every machine)");
+  gradeCmd->add_option("--gradebook", grade.gradebook, "Write the class's gradebook (CSV)");
+  gradeCmd->add_option("--merge", grade.merge, "Merge these shard gradebooks into --gradebook");
+  gradeCmd->add_option("--replay", grade.replay, "Replay a run's wheel log in the simulator and judge it again");
+  gradeCmd->add_option("--gradescope-zip", grade.gradescopeZip, "Write the assignment's autograder zip for Gradescope");
+
   CLI::App* listCmd = cli.add_subcommand("list", "List the reference worlds and the course examples");
 
   CLI11_PARSE(cli, argc, argv);
   if (runCmd->parsed()) return frob::app::runCommand(run);
   if (renderCmd->parsed()) return frob::app::renderCommand(renderWorld, renderOut, renderSize);
+  if (gradeCmd->parsed()) return frob::app::gradeCommand(grade);
   if (listCmd->parsed()) return frob::app::listCommand();
   std::cout << cli.help();
   return 0;

@@ -11,6 +11,7 @@ find_package(Freetype REQUIRED)
 find_package(Threads REQUIRED)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
 pkg_check_modules(LIBAV REQUIRED IMPORTED_TARGET libavcodec libavformat libavutil libswscale)
+pkg_check_modules(LIBZIP REQUIRED IMPORTED_TARGET libzip)  # the Gradescope autograder zip
 
 # The font the renderer draws text with (Debian: fonts-dejavu-core).
 find_file(FROB_FONT_FILE DejaVuSans.ttf PATHS /usr/share/fonts/truetype/dejavu REQUIRED)

@@ -6,10 +6,12 @@ packages=(
   clang-16 libclang-rt-16-dev                      # the compiler (see README: GCC 12 breaks coroutines)
   libeigen3-dev libbox2d-dev libassimp-dev         # maths, physics, meshes
   libseccomp-dev                                   # the controller host's system-call filter
+  libzip-dev                                       # the Gradescope autograder zip
   libosmesa6-dev libpng-dev libfreetype-dev fonts-dejavu-core   # offscreen rendering and text
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev   # video encoding
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev           # world files, command line, JSON
   libgtest-dev libgmock-dev libbenchmark-dev libenki-dev        # tests and benchmarks
+  libxml2-dev chromium                                          # grade report tests: XML read back, HTML rendered headless
 )
 missing=()
 for p in "${packages[@]}"; do

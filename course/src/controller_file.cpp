@@ -18,7 +18,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <sstream>
 
 namespace frob::course {
@@ -61,6 +63,18 @@ std::vector<std::string> compilerReads(const CompilerSetup& setup, bool pch) {
   }
   if (pch) read.push_back(setup.precompiledHeader);
   return read;
+}
+
+// A lock for compiling `module`, held by one thread at a time.
+std::unique_lock<std::mutex> lockModule(const fs::path& module) {
+  static std::mutex guard;
+  static std::map<fs::path, std::unique_ptr<std::mutex>> locks;
+  std::unique_lock<std::mutex> g(guard);
+  std::unique_ptr<std::mutex>& lock = locks[module];
+  if (!lock) lock = std::make_unique<std::mutex>();
+  std::mutex& m = *lock;
+  g.unlock();
+  return std::unique_lock<std::mutex>(m);
 }
 
 // The compiler on PATH, as an absolute path for frob-jail.
@@ -124,6 +138,8 @@ Result<CompiledController> compileControllerFile(const fs::path& source, const C
   std::snprintf(name, sizeof name, "%016llx", static_cast<unsigned long long>(key.value()));
   const fs::path module = setup.cacheDir / (source.stem().string() + "-" + name + ".so");
   const CompiledController compiled{.module = module, .source = source.string(), .compiled = true};
+  // One compile of a module at a time in this process: a class of identical files compiles once.
+  const std::unique_lock<std::mutex> once = lockModule(module);
   if (fs::exists(module)) return CompiledController{.module = module, .source = source.string()};
 
   // A build folder of its own: the only place the compiler may write.

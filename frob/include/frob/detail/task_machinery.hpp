@@ -47,7 +47,7 @@ std::string printable(const R& v) {
     return "";
   } else if constexpr (requires(std::ostream& os) { os << v; }) {
     std::ostringstream os;
-    os << v;
+    os << std::boolalpha << v;  // a bool reads as true or false, as it is written
     return os.str();
   } else if constexpr (requires { toString(v); }) {
     return toString(v);

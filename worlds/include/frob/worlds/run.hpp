@@ -66,6 +66,8 @@ class Run {
   [[nodiscard]] const Recorder& recorder() const { return recorder_; }
   /// Robot `i`'s task timeline, as its controller reports it.
   [[nodiscard]] Timeline& timeline(std::size_t i) const { return driver_->timeline(i); }
+  /// The wheels applied at the last step, one per robot (a failed controller's robot stands still).
+  [[nodiscard]] const std::vector<Wheels>& commands() const { return wheels_; }
   /// The controllers that failed, in the order they did.
   [[nodiscard]] const std::vector<ControllerFailure>& failures() const { return failures_; }
 

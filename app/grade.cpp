@@ -1,0 +1,172 @@
+// frob grade: one submission or a class against an assignment's rubric, with the files that
+// Gradescope, PrairieLearn, CI systems and people read; and replays of a run's wheel log.
+#include "grade.hpp"
+
+#include "frob/course/grade.hpp"
+#include "frob/course/grade_report.hpp"
+#include "frob/course/gradescope.hpp"
+#include "progress.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+
+namespace frob::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+using course::Result;
+using course::Status;
+
+int fail(const std::string& message, int status = 1) {
+  std::cerr << "frob: " << message << "\n";
+  return status;
+}
+
+// The instructor's secret: the file's first line, else $FROB_GRADE_SECRET.
+Result<std::string> readSecret(const std::string& file) {
+  if (file.empty()) {
+    const char* env = std::getenv("FROB_GRADE_SECRET");
+    return std::string(env != nullptr ? env : "");
+  }
+  std::ifstream in(file);
+  std::string secret;
+  if (!in || !std::getline(in, secret) || secret.empty()) return Status::failure("--secret " + file + ": cannot read a secret from it");
+  return secret;
+}
+
+// The first failed run of a visible check, as (check, run): what a report may show a student.
+const course::RunGrade* firstFailure(const course::Grade& g, std::string& check) {
+  for (const course::CheckGrade& c : g.checks) {
+    if (c.visibility != course::Visibility::Visible) continue;
+    for (const course::RunGrade& r : c.runs) {
+      if (!r.passed) return check = c.name, &r;
+    }
+  }
+  return nullptr;
+}
+
+// Writes each file asked for; the first that cannot be written is the error.
+Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const course::Grade& g) {
+  if (!a.results.empty()) {
+    if (Status s = course::writeGradescope(g, a.results); !s) return s;
+  }
+  if (!a.prairielearn.empty()) {
+    if (Status s = course::writePrairieLearn(g, a.prairielearn); !s) return s;
+  }
+  if (!a.junit.empty()) {
+    if (Status s = course::writeJUnit(g, a.junit); !s) return s;
+  }
+  if (a.report.empty() && a.videos.empty()) return {};
+  course::HtmlMedia media;
+  std::string check;
+  if (const course::RunGrade* run = firstFailure(g, check); run != nullptr && g.compileError.empty()) {
+    const fs::path dir = a.videos.empty() ? fs::temp_directory_path() / ("frob-report-" + std::to_string(::getpid())) : fs::path(a.videos);
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    const std::string stem = (dir / fs::path(run->log.empty() ? "first_failure" : run->log.stem().string())).string();
+    course::RunOutputs out{.video = stem + ".mp4", .plot = stem + ".png"};
+    media.caption = "The first failing run: " + check + ", in " + run->world + " with seed " + std::to_string(run->seed) + ": " + run->reason;
+    if (Status s = course::filmRun(def, a.submission, check, *run, out); s) {
+      media.video = out.video, media.plot = out.plot;
+    } else {
+      media.caption += " (" + s.error() + ")";
+    }
+    if (!a.report.empty()) {
+      Status s = course::writeHtmlReport(g, media, a.report);
+      if (a.videos.empty()) fs::remove_all(dir, ec);
+      return s;
+    }
+    return {};
+  }
+  return a.report.empty() ? Status() : course::writeHtmlReport(g, media, a.report);
+}
+
+int replayCommand(const std::string& log) {
+  Result<course::Replay> r = course::replay(log);
+  if (!r) return fail(r.error());
+  const course::RunGrade& run = r.value().run;
+  std::printf("check %s, world %s, seed %llu: %s%s\ntrajectory %016llx\n", r.value().check.c_str(), run.world.c_str(),
+              static_cast<unsigned long long>(run.seed), run.passed ? "passed" : "FAILED: ", run.reason.c_str(),
+              static_cast<unsigned long long>(run.trajectoryHash));
+  return 0;
+}
+
+int mergeCommand(const GradeArgs& a) {
+  if (a.gradebook.empty()) return fail("--merge needs --gradebook OUT.csv to write the merged gradebook to", 2);
+  std::vector<fs::path> shards(a.merge.begin(), a.merge.end());
+  Result<std::vector<std::string>> merged = course::mergeGradebooks(shards, a.gradebook);
+  if (!merged) return fail(merged.error());
+  std::printf("merged %zu submissions into %s\n", merged.value().size(), a.gradebook.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int gradeCommand(const GradeArgs& a) {
+  if (!a.replay.empty()) return replayCommand(a.replay);
+  if (!a.merge.empty()) return mergeCommand(a);
+  if (a.assignment.empty()) return fail("which assignment? frob grade ASSIGNMENT SUBMISSION (see frob grade --help)", 2);
+  Result<fs::path> rubricFile = course::findRubric(a.assignment);
+  if (!rubricFile) return fail(rubricFile.error(), 2);
+  Result<course::Rubric> rubric = course::loadRubric(rubricFile.value());
+  if (!rubric) return fail(rubric.error(), 2);
+  Result<std::string> secret = readSecret(a.secret);
+  if (!secret) return fail(secret.error(), 2);
+  if (rubric.value().needsSecret() && secret.value().empty() && !a.visibleOnly) {
+    return fail("this rubric draws hidden seeds from the instructor's secret: give --secret FILE or set FROB_GRADE_SECRET "
+                "(or grade only the visible checks with --visible-only)", 2);
+  }
+  if (!a.gradescopeZip.empty()) {
+    if (Status s = course::writeGradescopeZip({.rubric = rubricFile.value(), .assignment = fs::path(rubricFile.value()).parent_path().filename().string(),
+                                                .secret = secret.value()}, a.gradescopeZip); !s) {
+      return fail(s.error());
+    }
+    std::printf("wrote %s: upload it as the assignment's autograder on Gradescope\n", a.gradescopeZip.c_str());
+    return 0;
+  }
+  if (a.submission.empty()) return fail("which submission? frob grade ASSIGNMENT SUBMISSION.cpp (or a folder of them)", 2);
+  course::GradeDef def{.rubric = std::move(rubric.value()), .assignment = fs::path(a.assignment).filename().string(),
+                       .secret = secret.value(), .visibleOnly = a.visibleOnly, .logs = a.logs};
+  if (def.assignment == "rubric.toml") def.assignment = fs::path(a.assignment).parent_path().filename().string();
+
+  if (!fs::is_directory(a.submission)) {
+    if (!fs::exists(a.submission)) return fail("no submission '" + a.submission + "'", 2);
+    const course::Grade g = course::grade(def, a.submission);
+    std::cout << course::scoreTable(g);
+    if (Status s = writeOutputs(a, def, g); !s) return fail(s.error());
+    return 0;
+  }
+
+  // A class: every submission of the folder, or this machine's shard of them.
+  if (!a.results.empty() || !a.prairielearn.empty() || !a.junit.empty() || !a.report.empty()) {
+    return fail("--results, --prairielearn, --junit and --report are for one submission; a class gets --gradebook", 2);
+  }
+  std::vector<fs::path> all = course::submissionsIn(a.submission);
+  if (all.empty()) return fail("no submissions in '" + a.submission + "' (a .cpp file each, or a folder each holding one)", 2);
+  int shard = 1, shards = 1;
+  if (!a.shard.empty() && (std::sscanf(a.shard.c_str(), "%d/%d", &shard, &shards) != 2 || shards < 1 || shard < 1 || shard > shards)) {
+    return fail("--shard must look like 2/8 (the second of eight), not '" + a.shard + "'", 2);
+  }
+  const std::vector<fs::path> mine = course::shardOf(all, shard, shards);
+  ProgressBar bar(stderr, ::isatty(STDERR_FILENO) == 1, "frob: grading " + def.assignment);
+  char detail[48];
+  const std::vector<course::Grade> grades = course::gradeAll(def, mine, a.jobs, [&](std::size_t done, std::size_t total) {
+    std::snprintf(detail, sizeof detail, "%zu / %zu submissions", done, total);
+    bar.show(static_cast<double>(done) / static_cast<double>(total), detail);
+  });
+  bar.finish();
+  for (const course::Grade& g : grades) {
+    std::printf("%-40s %6.2f / %.2f%s\n", g.submission.c_str(), g.score(), g.maxScore(), g.compileError.empty() ? "" : "  (did not compile)");
+  }
+  if (!a.gradebook.empty()) {
+    if (Status s = course::writeGradebook(grades, a.gradebook); !s) return fail(s.error());
+  }
+  return 0;
+}
+
+}  // namespace frob::app

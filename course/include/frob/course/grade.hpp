@@ -1,0 +1,98 @@
+#pragma once
+/// Grading a submission against an assignment's rubric. Every score comes from the trusted
+/// simulation of the true trajectory: the controller runs in a sandboxed host and only its wheel
+/// commands come back. Each run's commands can be logged and replayed to the same metrics.
+///
+///   Result<Rubric> rubric = loadRubric("assignments/go_to_goal/rubric.toml");
+///   Grade g = grade({.rubric = *rubric, .assignment = "go_to_goal"}, "student.cpp");
+///   g.score() / g.maxScore()
+
+#include "frob/course/isolation.hpp"
+#include "frob/course/rubric.hpp"
+#include "frob/course/session.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace frob::course {
+
+/// How to grade.
+struct GradeDef {
+  Rubric rubric;
+  std::string assignment;               ///< its name, for reports
+  std::string secret;                   ///< the instructor's secret for hidden seeds; "" when none is given
+  bool visibleOnly = false;             ///< grade only the visible checks (a student checking locally)
+  IsolationDef isolation;               ///< the controller host's limits
+  std::filesystem::path logs;           ///< a folder for each run's wheel log (for --replay); empty: none
+  CompilerSetup compiler = compilerSetup();
+};
+
+/// One run of a check: a world with a seed.
+struct RunGrade {
+  std::string world;                    ///< as the rubric names it
+  std::uint64_t seed = 0;
+  bool passed = false;
+  std::string reason;                   ///< why it failed, in words a student can act on; "" when it passed
+  std::uint64_t trajectoryHash = 0;     ///< of every true pose (replays must match it)
+  std::filesystem::path log;            ///< its wheel log, when logs are kept
+};
+
+/// One check's outcome: the fraction of its runs that passed, times its points.
+struct CheckGrade {
+  std::string name;
+  double points = 0.0;                  ///< at most
+  double score = 0.0;                   ///< points × passed runs / runs
+  Visibility visibility = Visibility::Visible;
+  std::vector<RunGrade> runs;
+  /// The reasons of the failed runs, one line each ("in maze, seed 3: touched a wall at 41.2 s at (3.1, 4.5)").
+  [[nodiscard]] std::string output() const;
+};
+
+/// A submission's grade.
+struct Grade {
+  std::string assignment;
+  std::string submission;               ///< the file, as given
+  std::string compileError;             ///< the compiler's complaint when it did not compile (then every check scores 0)
+  std::vector<CheckGrade> checks;
+  std::vector<std::string> notes;       ///< e.g. output that was cut, sandbox layers missing
+  double wallSeconds = 0.0;             ///< how long grading took (the only field that differs between two gradings)
+  [[nodiscard]] double score() const;
+  [[nodiscard]] double maxScore() const;
+};
+
+/// Compiles and grades `submission`. Never fails on the submission's account: a compile error, a
+/// crash or a hang scores 0 in the checks it touched, with the reason.
+[[nodiscard]] Grade grade(const GradeDef& def, const std::filesystem::path& submission);
+
+/// Grades each of `submissions` (a class), `jobs` at a time, in their order; `progress(done, total)`
+/// is told after each. With more runs than cores, the controller hosts sleep rather than spin.
+[[nodiscard]] std::vector<Grade> gradeAll(GradeDef def, const std::vector<std::filesystem::path>& submissions, int jobs,
+                                          const std::function<void(std::size_t done, std::size_t total)>& progress = {});
+
+/// The submissions in `dir`, sorted: each .cpp file in it, and each subfolder's one .cpp file.
+[[nodiscard]] std::vector<std::filesystem::path> submissionsIn(const std::filesystem::path& dir);
+/// Shard `i` of `n` (1-based) of `all`: every n-th from the i-th, the same on every machine.
+[[nodiscard]] std::vector<std::filesystem::path> shardOf(const std::vector<std::filesystem::path>& all, int i, int n);
+
+/// An assignment's rubric: `name` under the course's assignments/ folder, a folder holding a
+/// rubric.toml, or a rubric file.
+[[nodiscard]] Result<std::filesystem::path> findRubric(const std::string& name);
+
+/// Runs `run` of check `check` again with a video and plots of it (`outputs`), for a report.
+[[nodiscard]] Status filmRun(const GradeDef& def, const std::filesystem::path& submission, const std::string& check,
+                             const RunGrade& run, const RunOutputs& outputs);
+
+/// What replaying a wheel log gives: the run's verdict and trajectory, recomputed.
+struct Replay {
+  std::string check;
+  RunGrade run;
+};
+
+/// Replays `log` (written by a grading with GradeDef::logs) in the trusted simulator and judges it
+/// again; the verdict, reason and trajectory hash are those of the original run, bit for bit.
+[[nodiscard]] Result<Replay> replay(const std::filesystem::path& log);
+
+}  // namespace frob::course

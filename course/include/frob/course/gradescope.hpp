@@ -1,0 +1,22 @@
+#pragma once
+/// Gradescope's autograder zip for an assignment: setup.sh builds frob on Gradescope's image,
+/// run_autograder grades /autograder/submission into /autograder/results/results.json.
+
+#include "frob/render/result.hpp"
+
+#include <filesystem>
+#include <string>
+
+namespace frob::course {
+
+/// What goes into the zip.
+struct GradescopeZipDef {
+  std::filesystem::path rubric;   ///< the assignment's rubric.toml; its whole folder goes in
+  std::string assignment;         ///< the assignment's name (its folder under assignments/ in the zip)
+  std::string secret;             ///< the instructor's secret for hidden seeds, kept in the zip (which only staff see); "" for none
+};
+
+/// Writes the zip: frob's sources (without tests), the assignment, setup.sh and run_autograder.
+[[nodiscard]] render::Status writeGradescopeZip(const GradescopeZipDef& def, const std::filesystem::path& out);
+
+}  // namespace frob::course

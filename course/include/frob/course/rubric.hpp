@@ -1,0 +1,96 @@
+#pragma once
+/// An assignment's rubric (assignments/<name>/rubric.toml): named checks with points and
+/// visibility, each run in some worlds with some seeds, each judged by criteria from a fixed
+/// vocabulary that the grader computes from the true trajectory. The format is described in
+/// course/grading.md.
+
+#include "frob/render/result.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace frob::course {
+
+using render::Result;
+using render::Status;
+
+/// Who sees a check's result on Gradescope.
+enum class Visibility { Visible, Hidden, AfterDueDate };
+
+/// One criterion of a check. Every robot of the world must meet it; point names may contain
+/// "{robot}", replaced by each robot's name ("goal_{robot}").
+struct Criterion {
+  enum class Kind {
+    Goal,          ///< within `distance` of point `point` by `seconds`
+    Waypoints,     ///< within `distance` of each of `points`, in order, by `seconds`
+    Stopped,       ///< moving slower than `speed` at the end
+    Collisions,    ///< at most `count` bumper contacts with walls
+    Clearance,     ///< the body never nearer a wall than `distance`
+    WallDistance,  ///< the body `distance` ± `tolerance` from the nearest wall for `fraction` of the run after `after` s
+    Coverage,      ///< the robot's centre visited `fraction` of the free cells of size `cell`
+    RobotsApart,   ///< robots' bodies never nearer each other than `distance`
+    PathRatio,     ///< path until within `distance` of `point` at most `ratio` times the shortest collision-free path
+    Bug1Bound,     ///< path until within `distance` of `point` at most the direct distance + 1.5 × the perimeters of obstacles met
+    Returns,       ///< the top task returned `value` (reported by the controller)
+  };
+  Kind kind = Kind::Goal;
+  std::string point = "goal";
+  std::vector<std::string> points;
+  double distance = 0.0;
+  double seconds = 0.0;      ///< 0: by the end of the run
+  double speed = 0.02;
+  int count = 0;
+  double tolerance = 0.0;
+  double fraction = 0.0;
+  double after = 0.0;
+  double cell = 0.5;
+  double ratio = 1.0;
+  std::string value;
+  int line = 0;              ///< where the rubric gives it
+};
+
+/// A world a check runs in: a reference world's name, or a file relative to the rubric's folder.
+struct WorldRef {
+  std::string name;             ///< as the rubric gives it
+  std::filesystem::path file;   ///< the file, when it is not a reference world
+};
+
+/// One check: points for meeting every criterion, in every world with every seed.
+struct Check {
+  std::string name;
+  double points = 1.0;
+  Visibility visibility = Visibility::Visible;
+  std::vector<WorldRef> worlds;
+  std::vector<std::uint64_t> seeds;   ///< simulation seeds; empty: each world's own
+  int secretSeeds = 0;                ///< more seeds, drawn from the instructor's secret
+  double seconds = 60.0;              ///< simulated seconds of each run
+  std::vector<Criterion> criteria;
+  int line = 0;
+};
+
+/// An assignment's rubric.
+struct Rubric {
+  std::string title;
+  std::filesystem::path file;        ///< the rubric file
+  double dt = 0.01;                  ///< the simulation step of every run
+  std::vector<Check> checks;
+  /// Total points.
+  [[nodiscard]] double points() const;
+  /// True when some check draws seeds from the instructor's secret.
+  [[nodiscard]] bool needsSecret() const;
+};
+
+/// Reads `file`; every mistake (a typo, an unknown criterion, a missing world) is one message
+/// naming the file, the line and the field, before anything runs.
+[[nodiscard]] Result<Rubric> loadRubric(const std::filesystem::path& file);
+
+/// The seeds a check runs with: its own, then `secretSeeds` derived from `secret` and the check's name.
+[[nodiscard]] std::vector<std::uint64_t> seedsOf(const Check& check, const std::string& secret);
+
+/// Readable name of a visibility, as Gradescope spells it ("visible", "hidden", "after_due_date").
+[[nodiscard]] const char* toString(Visibility v);
+
+}  // namespace frob::course

@@ -1,0 +1,267 @@
+#include "frob/course/grade.hpp"
+
+#include "frob/course/judge.hpp"
+#include "frob/worlds/registry.hpp"
+#include "frob/worlds/world_file.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cinttypes>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace frob::course {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A world as the rubric names it: a reference world, or a file beside the rubric.
+Result<worlds::WorldDef> loadWorldRef(const WorldRef& w) {
+  worlds::Loaded<worlds::WorldDef> loaded = w.file.empty() ? worlds::loadReferenceWorld(w.name) : worlds::loadWorld(w.file);
+  if (!loaded) return Status::failure(loaded.error);
+  return *loaded;
+}
+
+// What a run made: the grader's record of it, and the wheels applied at every step.
+struct Ran {
+  RunRecord record;
+  std::vector<std::vector<Wheels>> wheels;
+  std::uint64_t trajectoryHash = 0;
+};
+
+// Steps `run` for `steps` steps, or until a controller fails, keeping every robot's true path,
+// contacts and reported result.
+Ran drive(worlds::Run& run, const worlds::WorldDef& world, std::int64_t steps) {
+  const worlds::Simulation& sim = run.simulation();
+  Ran ran{.record = {.size = world.size, .walls = sim.walls(), .enclosureWalls = world.enclosed ? 4u : 0u,
+                     .points = world.points, .dt = sim.dt()}};
+  for (std::size_t i = 0; i < sim.robotCount(); ++i) {
+    ran.record.robots.push_back({.name = sim.robotName(i), .radius = sim.robot(i).radius, .path = {sim.truePose(i).position}});
+  }
+  for (std::int64_t k = 0; k < steps && run.failures().empty(); ++k) {
+    run.step();
+    ran.wheels.push_back(run.commands());
+    const double sensedAt = sim.time() - sim.dt();
+    for (std::size_t i = 0; i < sim.robotCount(); ++i) {
+      Track& t = ran.record.robots[i];
+      for (std::size_t b = 0; b < sim.frame(i).bumps.size(); ++b) t.contacts.emplace_back(sensedAt, t.path.back());
+      t.path.push_back(sim.truePose(i).position);
+      for (const TaskRecord& ended : run.timeline(i).drainEnded()) {
+        if (ended.parent < 0 && ended.how == TaskEnd::Returned) t.returned = ended.detail;
+      }
+    }
+  }
+  for (const worlds::ControllerFailure& f : run.failures()) ran.record.robots.at(f.robot).failure = f.message;
+  ran.trajectoryHash = run.recorder().trajectoryHash();
+  return ran;
+}
+
+std::int64_t stepsFor(double seconds, double dt) { return static_cast<std::int64_t>(std::floor(seconds / dt + 0.5)); }
+
+// A run passes when no controller failed and every criterion holds; else the first reason.
+void judgeRun(const Check& check, const RunRecord& record, RunGrade& out) {
+  for (const Track& t : record.robots) {
+    if (!t.failure.empty()) {
+      out.reason = "the controller failed: " + t.failure;
+      return;
+    }
+  }
+  for (const Criterion& c : check.criteria) {
+    Verdict v = judge(c, record);
+    if (!v.passed) {
+      out.reason = std::move(v.reason);
+      return;
+    }
+  }
+  out.passed = true;
+}
+
+// Wheels logged by a grading, played back in order; after the last, a stop.
+class ReplayDriver final : public worlds::ControllerDriver {
+ public:
+  ReplayDriver(std::size_t robots, const std::vector<std::vector<Wheels>>& wheels) : wheels_(wheels), timelines_(robots) {}
+  void decide(const Instant& now, std::span<Wheels> out, std::span<Picture>, std::vector<std::pair<std::size_t, std::string>>&) override {
+    const auto k = static_cast<std::size_t>(now.step);
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = k < wheels_.size() && i < wheels_[k].size() ? wheels_[k][i] : Wheels{};
+  }
+  Timeline& timeline(std::size_t i) override { return timelines_.at(i); }
+
+ private:
+  const std::vector<std::vector<Wheels>>& wheels_;
+  std::vector<Timeline> timelines_;
+};
+
+// A log's file name: the check, world and seed, in letters a file system takes.
+std::string logName(const std::string& check, const std::string& world, std::uint64_t seed) {
+  std::string name = check + "__" + fs::path(world).stem().string() + "__" + std::to_string(seed);
+  for (char& ch : name) {
+    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '-' && ch != '_') ch = '_';
+  }
+  return name + ".log";
+}
+
+// The log of a run: what to rebuild it from, what the controller said, and the wheels, as hex
+// floating point so that they read back bit for bit.
+void writeLog(const fs::path& path, const Rubric& rubric, const Check& check, const WorldRef& world, std::uint64_t seed, const Ran& ran) {
+  const fs::path partial = path.string() + ".partial";
+  std::FILE* f = std::fopen(partial.c_str(), "w");
+  if (f == nullptr) return;
+  std::fprintf(f, "frob-replay 1\nrubric %s\ncheck %s\nworld %s\nseed %" PRIu64 "\nsteps %zu\nrobots %zu\n",
+               fs::absolute(rubric.file).c_str(), check.name.c_str(), world.name.c_str(), seed, ran.wheels.size(),
+               ran.record.robots.size());
+  for (std::size_t i = 0; i < ran.record.robots.size(); ++i) {
+    const Track& t = ran.record.robots[i];
+    if (!t.failure.empty()) std::fprintf(f, "failure %zu %s\n", i, t.failure.c_str());
+    if (t.returned) std::fprintf(f, "returned %zu %s\n", i, t.returned->c_str());
+  }
+  std::fprintf(f, "wheels\n");
+  for (const std::vector<Wheels>& step : ran.wheels) {
+    for (std::size_t i = 0; i < step.size(); ++i) std::fprintf(f, "%s%a %a", i == 0 ? "" : " ", step[i].forward, step[i].turn);
+    std::fputc('\n', f);
+  }
+  const bool ok = std::fclose(f) == 0;
+  std::error_code ec;
+  if (ok) fs::rename(partial, path, ec);
+}
+
+}  // namespace
+
+std::string CheckGrade::output() const {
+  std::string out;
+  for (const RunGrade& r : runs) {
+    if (!r.passed) out += "in " + r.world + ", seed " + std::to_string(r.seed) + ": " + r.reason + "\n";
+  }
+  return out;
+}
+
+double Grade::score() const {
+  double s = 0;
+  for (const CheckGrade& c : checks) s += c.score;
+  return s;
+}
+
+double Grade::maxScore() const {
+  double s = 0;
+  for (const CheckGrade& c : checks) s += c.points;
+  return s;
+}
+
+Grade grade(const GradeDef& def, const fs::path& submission) {
+  const auto start = std::chrono::steady_clock::now();
+  Grade g{.assignment = def.assignment, .submission = submission.string()};
+  std::string messages;
+  Result<CompiledController> compiled = compileControllerFile(submission, def.compiler, &messages);
+  if (!compiled) g.compileError = compiled.error() + (messages.empty() ? "" : "\n" + messages);
+  std::map<std::string, Result<worlds::WorldDef>> worldsByName;
+  for (const Check& check : def.rubric.checks) {
+    if (def.visibleOnly && check.visibility != Visibility::Visible) continue;
+    CheckGrade cg{.name = check.name, .points = check.points, .visibility = check.visibility};
+    const std::vector<std::uint64_t> seeds = seedsOf(check, def.secret);
+    for (const WorldRef& w : check.worlds) {
+      auto [known, added] = worldsByName.try_emplace(w.name, Status());
+      if (added) known->second = loadWorldRef(w);
+      const Result<worlds::WorldDef>& world = known->second;
+      for (std::size_t s = 0; s < std::max<std::size_t>(seeds.size(), 1); ++s) {
+        RunGrade& r = cg.runs.emplace_back(RunGrade{.world = w.name});
+        r.seed = !seeds.empty() ? seeds[s] : world ? world.value().seed : 0;
+        if (!compiled) {
+          r.reason = "the submission did not compile";
+          continue;
+        }
+        if (!world) {
+          r.reason = "the world could not be loaded: " + world.error();
+          continue;
+        }
+        Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start({compiled.value().module}, {compiled.value().source}, def.isolation);
+        if (!host) {
+          r.reason = host.error();
+          continue;
+        }
+        worlds::Run run(world.value(), {.dt = def.rubric.dt, .seed = r.seed}, host.value()->driver({0}, false), {.keepSteps = false});
+        const Ran ran = drive(run, world.value(), stepsFor(check.seconds, def.rubric.dt));
+        judgeRun(check, ran.record, r);
+        r.trajectoryHash = ran.trajectoryHash;
+        for (std::string& n : host.value()->notes()) {
+          if (std::find(g.notes.begin(), g.notes.end(), n) == g.notes.end()) g.notes.push_back(std::move(n));
+        }
+        if (!def.logs.empty()) {
+          std::error_code ec;
+          fs::create_directories(def.logs, ec);
+          r.log = def.logs / logName(check.name, w.name, r.seed);
+          writeLog(r.log, def.rubric, check, w, r.seed, ran);
+        }
+      }
+    }
+    const auto passed = std::count_if(cg.runs.begin(), cg.runs.end(), [](const RunGrade& r) { return r.passed; });
+    cg.score = cg.runs.empty() ? 0.0 : check.points * static_cast<double>(passed) / static_cast<double>(cg.runs.size());
+    g.checks.push_back(std::move(cg));
+  }
+  g.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return g;
+}
+
+Result<Replay> replay(const fs::path& log) {
+  std::ifstream in(log);
+  if (!in) return Status::failure(log.string() + ": cannot open the log");
+  const auto bad = [&](const std::string& what) { return Status::failure(log.string() + ": not a wheel log of frob grade (" + what + ")"); };
+  std::string line, rubricFile, checkName, worldName;
+  std::uint64_t seed = 0;
+  std::size_t steps = 0, robots = 0;
+  std::vector<std::pair<std::size_t, std::string>> failures, returned;
+  if (!std::getline(in, line) || line != "frob-replay 1") return bad("its first line");
+  while (std::getline(in, line) && line != "wheels") {
+    const std::size_t space = line.find(' ');
+    const std::string key = line.substr(0, space), value = space == std::string::npos ? "" : line.substr(space + 1);
+    if (key == "rubric") rubricFile = value;
+    else if (key == "check") checkName = value;
+    else if (key == "world") worldName = value;
+    else if (key == "seed") seed = std::stoull(value);
+    else if (key == "steps") steps = std::stoull(value);
+    else if (key == "robots") robots = std::stoull(value);
+    else if (key == "failure" || key == "returned") {
+      const std::size_t gap = value.find(' ');
+      (key == "failure" ? failures : returned).emplace_back(std::stoull(value.substr(0, gap)), value.substr(gap + 1));
+    } else {
+      return bad("line '" + line + "'");
+    }
+  }
+  std::vector<std::vector<Wheels>> wheels;
+  while (std::getline(in, line) && wheels.size() < steps) {
+    std::vector<Wheels>& step = wheels.emplace_back(robots);
+    const char* p = line.c_str();
+    for (Wheels& w : step) {
+      char* end = nullptr;
+      w.forward = std::strtod(p, &end);
+      w.turn = std::strtod(end, &end);
+      if (end == p) return bad("a line of wheels");
+      p = end;
+    }
+  }
+  if (wheels.size() != steps) return bad("it ends early");
+
+  Result<Rubric> rubric = loadRubric(rubricFile);
+  if (!rubric) return rubric.status();
+  const auto check = std::find_if(rubric.value().checks.begin(), rubric.value().checks.end(), [&](const Check& c) { return c.name == checkName; });
+  if (check == rubric.value().checks.end()) return Status::failure(rubricFile + ": has no check '" + checkName + "' any more");
+  const auto ref = std::find_if(check->worlds.begin(), check->worlds.end(), [&](const WorldRef& w) { return w.name == worldName; });
+  if (ref == check->worlds.end()) return Status::failure(rubricFile + ": check '" + checkName + "' has no world '" + worldName + "' any more");
+  Result<worlds::WorldDef> world = loadWorldRef(*ref);
+  if (!world) return world.status();
+  if (world.value().robots.size() != robots) return bad("the world now has another number of robots");
+
+  const auto factory = [&](const worlds::Simulation& sim) -> std::unique_ptr<worlds::ControllerDriver> {
+    return std::make_unique<ReplayDriver>(sim.robotCount(), wheels);
+  };
+  worlds::Run run(world.value(), {.dt = rubric.value().dt, .seed = seed}, factory, {.keepSteps = false});
+  Ran ran = drive(run, world.value(), static_cast<std::int64_t>(steps));
+  for (const auto& [i, why] : failures) ran.record.robots.at(i).failure = why;
+  for (const auto& [i, value] : returned) ran.record.robots.at(i).returned = value;
+  Replay r{.check = checkName, .run = {.world = worldName, .seed = seed, .trajectoryHash = ran.trajectoryHash, .log = log}};
+  judgeRun(*check, ran.record, r.run);
+  return r;
+}
+
+}  // namespace frob::course

@@ -1,0 +1,90 @@
+// Grading a class: its submissions found and sharded, graded a few at a time; and the pieces a
+// report needs around one grade (its assignment's rubric, a film of a run).
+#include "frob/course/grade.hpp"
+
+#include "controller_setup.inc"
+#include "frob/worlds/registry.hpp"
+#include "frob/worlds/world_file.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <mutex>
+#include <thread>
+
+namespace frob::course {
+
+namespace fs = std::filesystem;
+
+std::vector<Grade> gradeAll(GradeDef def, const std::vector<fs::path>& submissions, int jobs,
+                            const std::function<void(std::size_t, std::size_t)>& progress) {
+  jobs = std::clamp(jobs, 1, std::max<int>(1, static_cast<int>(submissions.size())));
+  // Each run is two processes that take turns; spinning pays only while each has a core of its own.
+  if (2 * jobs > static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))) def.isolation.spinNanoseconds = 0;
+  std::vector<Grade> grades(submissions.size());
+  std::atomic<std::size_t> next{0};
+  std::size_t done = 0;
+  std::mutex told;
+  const auto work = [&] {
+    for (std::size_t k; (k = next++) < submissions.size();) {
+      grades[k] = grade(def, submissions[k]);
+      const std::lock_guard<std::mutex> lock(told);
+      if (progress) progress(++done, submissions.size());
+    }
+  };
+  std::vector<std::thread> workers;
+  for (int j = 1; j < jobs; ++j) workers.emplace_back(work);
+  work();
+  for (std::thread& t : workers) t.join();
+  return grades;
+}
+
+std::vector<fs::path> submissionsIn(const fs::path& dir) {
+  std::vector<fs::path> found;
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+    if (e.is_regular_file() && e.path().extension() == ".cpp") found.push_back(e.path());
+    if (!e.is_directory()) continue;
+    std::vector<fs::path> inside;
+    for (const fs::directory_entry& f : fs::directory_iterator(e.path(), ec)) {
+      if (f.is_regular_file() && f.path().extension() == ".cpp") inside.push_back(f.path());
+    }
+    if (inside.size() == 1) found.push_back(inside.front());
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+std::vector<fs::path> shardOf(const std::vector<fs::path>& all, int i, int n) {
+  std::vector<fs::path> mine;
+  for (std::size_t k = static_cast<std::size_t>(i - 1); k < all.size(); k += static_cast<std::size_t>(n)) mine.push_back(all[k]);
+  return mine;
+}
+
+Result<fs::path> findRubric(const std::string& name) {
+  for (const fs::path& candidate : {fs::path(name), fs::path(name) / "rubric.toml", fs::path(FROB_ASSIGNMENTS_DIR) / name / "rubric.toml"}) {
+    if (fs::is_regular_file(candidate)) return candidate;
+  }
+  return Status::failure("unknown assignment '" + name + "': not a folder of assignments/ (see frob list), and no rubric.toml there");
+}
+
+Status filmRun(const GradeDef& def, const fs::path& submission, const std::string& checkName, const RunGrade& run,
+               const RunOutputs& outputs) {
+  const auto check = std::find_if(def.rubric.checks.begin(), def.rubric.checks.end(), [&](const Check& c) { return c.name == checkName; });
+  if (check == def.rubric.checks.end()) return Status::failure("no check '" + checkName + "'");
+  const auto ref = std::find_if(check->worlds.begin(), check->worlds.end(), [&](const WorldRef& w) { return w.name == run.world; });
+  if (ref == check->worlds.end()) return Status::failure("no world '" + run.world + "' in check '" + checkName + "'");
+  worlds::Loaded<worlds::WorldDef> world = ref->file.empty() ? worlds::loadReferenceWorld(ref->name) : worlds::loadWorld(ref->file);
+  if (!world) return Status::failure(world.error);
+  Result<CompiledController> compiled = compileControllerFile(submission, def.compiler);
+  if (!compiled) return compiled.status();
+  Result<LoadedController> controller = describeInHost(compiled.value(), def.isolation);
+  if (!controller) return controller.status();
+  Result<Summary> s = runSession({.world = *world, .worldName = run.world, .options = {.dt = def.rubric.dt, .seed = run.seed},
+                                  .controllers = {controller.value()}, .isolation = def.isolation, .seconds = check->seconds,
+                                  .outputs = outputs});
+  if (!s) return s.status();
+  if (s.value().failed()) return Status::failure("the run failed, so it has no video: " + s.value().robots.front().failure);
+  return {};
+}
+
+}  // namespace frob::course

@@ -1,0 +1,725 @@
+// The grade's writers. Formats followed (checked against the published specifications):
+// - Gradescope: https://gradescope-autograders.readthedocs.io/en/latest/specs/ (gradescope/autograder_samples,
+//   docs/specs.md): "status" is "passed" or "failed", "visibility" one of "hidden", "after_due_date",
+//   "after_published", "visible"; the top-level output defaults to "simple_format" (HTML), so we say "text".
+// - PrairieLearn: https://prairielearn.readthedocs.io/en/latest/externalGrading/#grading-results: "score" in
+//   [0, 1]; "gradable": false for a submission that could not be compiled (no attempt is used up) with
+//   "format_errors"; the file must stay under 1 MB.
+// - JUnit XML: the Jenkins/Surefire schema junit-10.xsd (<testsuite> needs name, tests, failures, errors;
+//   time with at most three decimals); XML 1.0 forbids most control characters, even escaped.
+// - CSV: RFC 4180 (fields with a comma, quote, CR or LF quoted, quotes doubled, records ended by CRLF).
+
+#include "frob/course/grade_report.hpp"
+
+#include "frob/render/output_file.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <set>
+#include <string_view>
+
+namespace frob::course {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+// ---- Checks' outcomes and numbers ----------------------------------------------------------------
+
+enum class Outcome { Pass, Fail, Partial };
+
+std::size_t passedRuns(const CheckGrade& c) {
+  return static_cast<std::size_t>(std::count_if(c.runs.begin(), c.runs.end(), [](const RunGrade& r) { return r.passed; }));
+}
+
+// PASS when every run passed, FAIL when none did, PARTIAL between. A check without runs (none was
+// made) passes only if it has its points anyway.
+Outcome outcomeOf(const CheckGrade& c) {
+  if (c.runs.empty()) return c.score >= c.points ? Outcome::Pass : Outcome::Fail;
+  const std::size_t passed = passedRuns(c);
+  if (passed == c.runs.size()) return Outcome::Pass;
+  return passed == 0 ? Outcome::Fail : Outcome::Partial;
+}
+
+const char* toString(Outcome o) {
+  switch (o) {
+    case Outcome::Pass: return "PASS";
+    case Outcome::Fail: return "FAIL";
+    case Outcome::Partial: return "PARTIAL";
+  }
+  return "FAIL";
+}
+
+// Points are reported to 1e-4 of a point: 2/3 of a point is 0.6667, and sums do not show 0.30000000000000004.
+double rounded(double points) {
+  const double r = std::round(points * 1e4) / 1e4;
+  return r == 0.0 ? 0.0 : r;  // no "-0"
+}
+
+// `points` rounded, in the shortest text that reads back as the same double ("2", "0.5", "0.6667").
+std::string number(double points) {
+  char buf[32];
+  return {buf, std::to_chars(buf, buf + sizeof buf, rounded(points)).ptr};
+}
+
+// The lines of `text`, without their "\n" or "\r\n"; "" gives none.
+std::vector<std::string> linesOf(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(start, end - start);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(std::move(line));
+    start = end + 1;
+  }
+  return lines;
+}
+
+// The summary both results.json files show students: the visible checks only (Gradescope hides the
+// total while some tests are hidden; a total that counts hidden checks would give them away).
+std::string summaryOf(const Grade& g) {
+  std::string s;
+  if (!g.compileError.empty()) {
+    s = "The submission did not compile, so every check scores 0:\n\n" + g.compileError;
+    if (s.back() != '\n') s += '\n';
+  } else {
+    std::size_t visible = 0, passed = 0, unseen = 0;
+    double score = 0.0, points = 0.0;
+    for (const CheckGrade& c : g.checks) {
+      if (c.visibility != Visibility::Visible) {
+        ++unseen;
+        continue;
+      }
+      ++visible;
+      passed += outcomeOf(c) == Outcome::Pass ? 1 : 0;
+      score += c.score;
+      points += c.points;
+    }
+    s = std::to_string(passed) + " of " + std::to_string(visible) + (unseen > 0 ? " visible" : "") +
+        (visible == 1 ? " check" : " checks") + " passed: " + number(score) + " / " + number(points) + " points.\n";
+    if (unseen > 0) {
+      s += std::to_string(unseen) + (unseen == 1 ? " more check is" : " more checks are") + " graded but not shown here.\n";
+    }
+  }
+  for (const std::string& note : g.notes) s += "Note: " + note + "\n";
+  return s;
+}
+
+// ---- Text: UTF-8, terminals, XML and HTML ----------------------------------------------------------
+
+constexpr char32_t kInvalid = 0xFFFFFFFF;
+
+// Calls f(c) for each code point of `text`; each byte that does not start a well-formed UTF-8
+// sequence (a stray continuation, an overlong form, a surrogate, past U+10FFFF, cut short) gives kInvalid.
+template <class F>
+void forEachCodePoint(std::string_view text, F&& f) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const auto b0 = static_cast<unsigned char>(text[i]);
+    if (b0 < 0x80) {
+      f(static_cast<char32_t>(b0));
+      ++i;
+      continue;
+    }
+    std::size_t len = 0;
+    char32_t c = 0, least = 0;
+    if ((b0 & 0xE0) == 0xC0) {
+      len = 2, c = b0 & 0x1F, least = 0x80;
+    } else if ((b0 & 0xF0) == 0xE0) {
+      len = 3, c = b0 & 0x0F, least = 0x800;
+    } else if ((b0 & 0xF8) == 0xF0) {
+      len = 4, c = b0 & 0x07, least = 0x10000;
+    }
+    bool ok = len > 0 && i + len <= text.size();
+    for (std::size_t k = 1; ok && k < len; ++k) {
+      const auto b = static_cast<unsigned char>(text[i + k]);
+      ok = (b & 0xC0) == 0x80;
+      c = (c << 6) | (b & 0x3F);
+    }
+    if (!ok || c < least || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF)) {
+      f(kInvalid);
+      ++i;
+      continue;
+    }
+    f(c);
+    i += len;
+  }
+}
+
+void appendUtf8(std::string& out, char32_t c) {
+  if (c < 0x80) {
+    out += static_cast<char>(c);
+  } else if (c < 0x800) {
+    out += static_cast<char>(0xC0 | (c >> 6));
+    out += static_cast<char>(0x80 | (c & 0x3F));
+  } else if (c < 0x10000) {
+    out += static_cast<char>(0xE0 | (c >> 12));
+    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (c & 0x3F));
+  } else {
+    out += static_cast<char>(0xF0 | (c >> 18));
+    out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (c & 0x3F));
+  }
+}
+
+bool isControl(char32_t c) { return c < 0x20 || (c >= 0x7F && c <= 0x9F); }
+
+// `text` (one line) safe to print on a terminal: control characters (an escape sequence from a
+// controller's message could recolour or clear the screen) and malformed UTF-8 become '?'; tabs stay.
+std::string terminalSafe(std::string_view text) {
+  std::string out;
+  forEachCodePoint(text, [&](char32_t c) {
+    if (c == kInvalid || (isControl(c) && c != '\t')) {
+      out += '?';
+    } else {
+      appendUtf8(out, c);
+    }
+  });
+  return out;
+}
+
+// Columns a terminalSafe string takes (one per code point).
+std::size_t widthOf(std::string_view text) {
+  return static_cast<std::size_t>(std::count_if(text.begin(), text.end(), [](char ch) {
+    return (static_cast<unsigned char>(ch) & 0xC0) != 0x80;
+  }));
+}
+
+// `text` as XML 1.0 or HTML character data or, with `attribute`, a double-quoted attribute value.
+// & < > " ' are escaped; characters XML 1.0 forbids even as references (C0 controls but tab, line
+// feed and carriage return), C1 controls, U+FFFE, U+FFFF and malformed UTF-8 become U+FFFD.
+// Carriage returns, and in attributes also tabs and line feeds, are written as references so that
+// a parser gives them back instead of normalizing them to line feeds or spaces.
+std::string markupEscape(std::string_view text, bool attribute = false) {
+  std::string out;
+  out.reserve(text.size());
+  forEachCodePoint(text, [&](char32_t c) {
+    switch (c) {
+      case '&': out += "&amp;"; return;
+      case '<': out += "&lt;"; return;
+      case '>': out += "&gt;"; return;
+      case '"': out += "&quot;"; return;
+      case '\'': out += "&#39;"; return;
+      case '\r': out += "&#13;"; return;
+      case '\n': out += attribute ? "&#10;" : "\n"; return;
+      case '\t': out += attribute ? "&#9;" : "\t"; return;
+      default: break;
+    }
+    if (c == kInvalid || isControl(c) || c == 0xFFFE || c == 0xFFFF) {
+      appendUtf8(out, 0xFFFD);
+    } else {
+      appendUtf8(out, c);
+    }
+  });
+  return out;
+}
+
+std::string base64(std::string_view bytes) {
+  static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  std::size_t i = 0;
+  for (; i + 3 <= bytes.size(); i += 3) {
+    const std::uint32_t v = static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i])) << 16 |
+                            static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i + 1])) << 8 |
+                            static_cast<unsigned char>(bytes[i + 2]);
+    out += kDigits[v >> 18];
+    out += kDigits[(v >> 12) & 63];
+    out += kDigits[(v >> 6) & 63];
+    out += kDigits[v & 63];
+  }
+  if (const std::size_t rest = bytes.size() - i; rest > 0) {
+    std::uint32_t v = static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i])) << 16;
+    if (rest == 2) v |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i + 1])) << 8;
+    out += kDigits[v >> 18];
+    out += kDigits[(v >> 12) & 63];
+    out += rest == 2 ? kDigits[(v >> 6) & 63] : '=';
+    out += '=';
+  }
+  return out;
+}
+
+// ---- Files -------------------------------------------------------------------------------------
+
+// Writes `bytes` to `<path>.partial` and renames it to `path`; `what` names the file in messages.
+Status writeWhole(const fs::path& path, const std::string& what, const std::string& bytes) {
+  const std::string name = path.string();
+  if (Status s = render::checkWritable(name, what); !s) return s;
+  const std::string partial = render::partialPath(name);
+  {
+    std::ofstream out(partial, std::ios::binary | std::ios::trunc);
+    if (!out) return Status::failure(what + ": cannot write '" + partial + "': " + std::strerror(errno));
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out) {
+      const std::string why = std::strerror(errno);
+      render::discardPartial(name);
+      return Status::failure(what + ": cannot write '" + partial + "': " + why);
+    }
+  }
+  return render::commitPartial(name, what);
+}
+
+Result<std::string> readWhole(const fs::path& path, const std::string& what) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Status::failure(what + ": cannot read '" + path.string() + "': " + std::strerror(errno));
+  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) return Status::failure(what + ": cannot read '" + path.string() + "': " + std::strerror(errno));
+  return bytes;
+}
+
+std::string dump(const Json& doc) {
+  // Malformed UTF-8 (a compiler quoting a Latin-1 source) becomes U+FFFD instead of an exception.
+  return doc.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+// ---- CSV ---------------------------------------------------------------------------------------
+
+void appendCsvField(std::string& line, std::string_view text) {
+  if (text.find_first_of(",\"\r\n") == std::string_view::npos) {
+    line += text;
+    return;
+  }
+  line += '"';
+  for (char c : text) {
+    if (c == '"') line += '"';
+    line += c;
+  }
+  line += '"';
+}
+
+std::string csvRecord(const std::vector<std::string>& fields) {
+  std::string line;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (i > 0) line += ',';
+    appendCsvField(line, fields[i]);
+  }
+  return line + "\r\n";
+}
+
+struct CsvRow {
+  std::vector<std::string> fields;
+  int line = 0;  // where it starts
+};
+
+// Reads RFC 4180 text (records ended by CRLF or LF; quoted fields may hold both).
+Result<std::vector<CsvRow>> parseCsv(std::string_view text, const std::string& file) {
+  const auto endsRecord = [&](std::size_t k) {
+    return text[k] == '\n' || (text[k] == '\r' && k + 1 < text.size() && text[k + 1] == '\n');
+  };
+  const auto error = [&](int at, const std::string& what) {
+    return Status::failure("gradebook: " + file + ":" + std::to_string(at) + ": " + what);
+  };
+  std::vector<CsvRow> rows;
+  std::size_t i = 0;
+  int line = 1;
+  while (i < text.size()) {
+    CsvRow& row = rows.emplace_back(CsvRow{.fields = {}, .line = line});
+    for (;;) {  // one field
+      std::string& field = row.fields.emplace_back();
+      if (i < text.size() && text[i] == '"') {
+        const int opened = line;
+        for (++i;; ++i) {
+          if (i >= text.size()) return error(opened, "a quoted field is not closed");
+          if (text[i] == '"' && (i + 1 >= text.size() || text[i + 1] != '"')) break;  // the closing quote
+          if (text[i] == '"') ++i;                                                    // "" is one quote
+          if (text[i] == '\n') ++line;
+          field += text[i];
+        }
+        ++i;
+        if (i < text.size() && text[i] != ',' && !endsRecord(i)) return error(line, "text after a closing quote");
+      } else {
+        for (; i < text.size() && text[i] != ',' && !endsRecord(i); ++i) {
+          if (text[i] == '"') return error(line, "a quote inside an unquoted field");
+          field += text[i];
+        }
+      }
+      if (i < text.size() && text[i] == ',') {
+        ++i;
+        continue;
+      }
+      if (i < text.size()) {  // the end of the record
+        i += text[i] == '\r' ? 2 : 1;
+        ++line;
+      }
+      break;
+    }
+  }
+  return rows;
+}
+
+// ---- PrairieLearn ------------------------------------------------------------------------------
+
+// `text` cut to at most `limit` bytes (at a character boundary), saying how much was cut.
+std::string clip(const std::string& text, std::size_t limit) {
+  if (text.size() <= limit) return text;
+  std::size_t end = limit;
+  while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) --end;
+  return text.substr(0, end) + "\n[... " + std::to_string(text.size() - end) + " more bytes cut]\n";
+}
+
+Json prairieLearnResults(const Grade& g, std::size_t limit) {
+  Json doc;
+  const bool gradable = g.compileError.empty();
+  const double max = g.maxScore();
+  double fraction = 0.0;
+  if (gradable && max > 0.0) {
+    fraction = std::clamp(g.score() / max, 0.0, 1.0);
+  } else if (gradable) {  // nothing to earn: all or nothing on the checks' outcomes
+    fraction = std::all_of(g.checks.begin(), g.checks.end(), [](const CheckGrade& c) { return outcomeOf(c) == Outcome::Pass; })
+                   ? 1.0
+                   : 0.0;
+  }
+  doc["gradable"] = gradable;
+  doc["score"] = fraction;
+  std::string notes;
+  for (const std::string& note : g.notes) notes += "Note: " + note + "\n";
+  if (!gradable) {
+    doc["message"] = "The submission did not compile; it was not graded and no attempt was used up.";
+    doc["output"] = clip(g.compileError, limit) + notes;
+    doc["format_errors"] = clip(g.compileError, limit);
+    doc["tests"] = Json::array();
+    return doc;
+  }
+  doc["message"] = clip(summaryOf(g), limit);
+  doc["output"] = notes;
+  // PrairieLearn shows every test to the student: checks that are not visible are summed into one.
+  Json tests = Json::array();
+  double hiddenPoints = 0.0, hiddenMax = 0.0;
+  std::size_t hidden = 0;
+  for (const CheckGrade& c : g.checks) {
+    if (c.visibility != Visibility::Visible) {
+      ++hidden;
+      hiddenPoints += c.score;
+      hiddenMax += c.points;
+      continue;
+    }
+    Json t;
+    t["name"] = c.name;
+    t["points"] = rounded(c.score);
+    t["max_points"] = rounded(c.points);
+    t["output"] = clip(c.output(), limit);
+    t["message"] = c.runs.empty() ? std::string("not run")
+                                  : std::to_string(passedRuns(c)) + " of " + std::to_string(c.runs.size()) + " runs passed";
+    tests.push_back(std::move(t));
+  }
+  if (hidden > 0) {
+    Json t;
+    t["name"] = "Hidden checks";
+    t["points"] = rounded(hiddenPoints);
+    t["max_points"] = rounded(hiddenMax);
+    t["output"] = "";
+    t["message"] = std::to_string(hidden) + (hidden == 1 ? " check whose result is" : " checks whose results are") + " not shown";
+    tests.push_back(std::move(t));
+  }
+  doc["tests"] = std::move(tests);
+  return doc;
+}
+
+}  // namespace
+
+std::string scoreTable(const Grade& g) {
+  struct Row {
+    std::string name, score, points, result, marker;
+    std::vector<std::string> reasons;
+  };
+  std::vector<Row> rows;
+  for (const CheckGrade& c : g.checks) {
+    Row r{.name = terminalSafe(c.name), .score = number(c.score), .points = number(c.points), .result = toString(outcomeOf(c)),
+          .marker = c.visibility == Visibility::Visible ? "" : std::string("[") + course::toString(c.visibility) + "]",
+          .reasons = {}};
+    for (const std::string& line : linesOf(c.output())) r.reasons.push_back(terminalSafe(line));
+    rows.push_back(std::move(r));
+  }
+  const Row total{.name = "Total", .score = number(g.score()), .points = number(g.maxScore()), .result = "", .marker = "", .reasons = {}};
+
+  std::size_t nameW = std::max(widthOf("Check"), widthOf(total.name)), scoreW = total.score.size(), pointsW = total.points.size();
+  for (const Row& r : rows) {
+    nameW = std::max(nameW, widthOf(r.name));
+    scoreW = std::max(scoreW, r.score.size());
+    pointsW = std::max(pointsW, r.points.size());
+  }
+  const std::size_t fractionW = std::max<std::size_t>(scoreW + 3 + pointsW, widthOf("Score"));
+  const std::size_t resultW = widthOf("PARTIAL");
+
+  auto pad = [](std::string s, std::size_t w) { return s + std::string(w - std::min(w, widthOf(s)), ' '); };
+  auto rtrim = [](std::string s) {
+    while (!s.empty() && s.back() == ' ') s.pop_back();
+    return s + "\n";
+  };
+  auto line = [&](const Row& r) {
+    std::string fraction = std::string(scoreW - r.score.size(), ' ') + r.score + " / " + r.points;
+    return rtrim(pad(r.name, nameW) + "  " + pad(fraction, fractionW) + "  " + pad(r.result, resultW) + "  " + r.marker);
+  };
+  const std::string rule = std::string(nameW, '-') + "  " + std::string(fractionW, '-') + "  " + std::string(resultW, '-') + "\n";
+
+  std::string out = terminalSafe(g.assignment) + ": " + terminalSafe(g.submission) + "\n";
+  out += rtrim(pad("Check", nameW) + "  " + pad("Score", fractionW) + "  Result");
+  out += rule;
+  for (const Row& r : rows) {
+    out += line(r);
+    for (const std::string& reason : r.reasons) out += rtrim("    " + reason);
+  }
+  if (!g.compileError.empty()) {
+    out += "The submission did not compile:\n";
+    for (const std::string& l : linesOf(g.compileError)) out += rtrim("    " + terminalSafe(l));
+  }
+  out += rule;
+  out += line(total);
+  for (const std::string& note : g.notes) out += rtrim("Note: " + terminalSafe(note));
+  return out;
+}
+
+Status writeGradescope(const Grade& g, const fs::path& path) {
+  Json doc;
+  doc["score"] = rounded(g.score());
+  doc["execution_time"] = std::llround(std::max(0.0, g.wallSeconds));
+  doc["output"] = summaryOf(g);
+  doc["output_format"] = "text";
+  Json tests = Json::array();
+  for (const CheckGrade& c : g.checks) {
+    Json t;
+    t["name"] = c.name;
+    t["score"] = rounded(c.score);
+    t["max_score"] = rounded(c.points);
+    t["status"] = outcomeOf(c) == Outcome::Pass ? "passed" : "failed";
+    t["output"] = c.output();
+    t["visibility"] = toString(c.visibility);
+    Json tags = Json::array();
+    std::set<std::string> seen;
+    for (const RunGrade& r : c.runs) {
+      if (seen.insert(r.world).second) tags.push_back(r.world);
+    }
+    t["tags"] = std::move(tags);
+    tests.push_back(std::move(t));
+  }
+  doc["tests"] = std::move(tests);
+  return writeWhole(path, "gradescope results", dump(doc));
+}
+
+Status writePrairieLearn(const Grade& g, const fs::path& path) {
+  // PrairieLearn rejects results over 1 MB: long texts are cut until the file fits.
+  constexpr std::size_t kMaxBytes = 1'000'000;
+  std::size_t limit = kMaxBytes;
+  std::string text = dump(prairieLearnResults(g, limit));
+  while (text.size() > kMaxBytes && limit > 1000) {
+    limit /= 2;
+    text = dump(prairieLearnResults(g, limit));
+  }
+  if (text.size() > kMaxBytes) {
+    return Status::failure("prairielearn results: cannot write '" + path.string() + "': the results take " +
+                           std::to_string(text.size()) + " bytes, more than PrairieLearn's 1 MB");
+  }
+  return writeWhole(path, "prairielearn results", text);
+}
+
+Status writeJUnit(const Grade& g, const fs::path& path) {
+  const std::string suite = markupEscape(g.assignment, true);
+  std::string cases;
+  int tests = 0, failures = 0;
+  auto testcase = [&](const std::string& name, const std::string* failure, const std::string& message) {
+    ++tests;
+    cases += "  <testcase name=\"" + markupEscape(name, true) + "\" classname=\"" + suite + "\"";
+    if (failure == nullptr) {
+      cases += "/>\n";
+      return;
+    }
+    ++failures;
+    cases += ">\n    <failure message=\"" + markupEscape(message, true) + "\">" + markupEscape(*failure) + "</failure>\n  </testcase>\n";
+  };
+  if (!g.compileError.empty()) testcase("compile", &g.compileError, "the submission did not compile");
+  for (const CheckGrade& c : g.checks) {
+    if (c.runs.empty()) {
+      const std::string why = g.compileError.empty() ? "not run" : "not run: the submission did not compile";
+      testcase(c.name, outcomeOf(c) == Outcome::Pass ? nullptr : &why, why);
+      continue;
+    }
+    for (const RunGrade& r : c.runs) {
+      testcase(c.name + " / " + r.world + " seed " + std::to_string(r.seed), r.passed ? nullptr : &r.reason, r.reason);
+    }
+  }
+  char buf[32];
+  const std::string seconds(buf, std::to_chars(buf, buf + sizeof buf, std::max(0.0, g.wallSeconds), std::chars_format::fixed, 3).ptr);
+  std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  xml += "<testsuite name=\"" + suite + "\" tests=\"" + std::to_string(tests) + "\" failures=\"" + std::to_string(failures) +
+         "\" errors=\"0\" skipped=\"0\" time=\"" + seconds + "\">\n";
+  xml += cases;
+  if (!g.notes.empty()) {
+    std::string notes;
+    for (const std::string& note : g.notes) notes += note + "\n";
+    xml += "  <system-out>" + markupEscape(notes) + "</system-out>\n";
+  }
+  xml += "</testsuite>\n";
+  return writeWhole(path, "junit report", xml);
+}
+
+Status writeGradebook(const std::vector<Grade>& grades, const fs::path& path) {
+  std::vector<const Grade*> sorted;
+  for (const Grade& g : grades) sorted.push_back(&g);
+  std::stable_sort(sorted.begin(), sorted.end(), [](const Grade* a, const Grade* b) { return a->submission < b->submission; });
+  for (std::size_t i = 1; i < sorted.size(); ++i) {
+    if (sorted[i]->submission == sorted[i - 1]->submission) {
+      return Status::failure("gradebook: cannot write '" + path.string() + "': submission '" + sorted[i]->submission +
+                             "' is graded twice");
+    }
+  }
+  // The checks' columns: every check of every grade, in the order they first appear.
+  std::vector<std::string> header{"submission", "score", "max_score"};
+  std::set<std::string> known;
+  for (const Grade* g : sorted) {
+    for (const CheckGrade& c : g->checks) {
+      if (known.insert(c.name).second) header.push_back(c.name);
+    }
+  }
+  std::string csv = csvRecord(header);
+  for (const Grade* g : sorted) {
+    std::vector<std::string> row{g->submission, number(g->score()), number(g->maxScore())};
+    for (std::size_t k = 3; k < header.size(); ++k) {
+      const auto c = std::find_if(g->checks.begin(), g->checks.end(), [&](const CheckGrade& x) { return x.name == header[k]; });
+      row.push_back(c == g->checks.end() ? std::string() : number(c->score));  // empty: not graded
+    }
+    csv += csvRecord(row);
+  }
+  return writeWhole(path, "gradebook", csv);
+}
+
+Result<std::vector<std::string>> mergeGradebooks(const std::vector<fs::path>& shards, const fs::path& out) {
+  if (shards.empty()) return Status::failure("gradebook: no gradebooks to merge into '" + out.string() + "'");
+  std::vector<std::string> header;
+  fs::path headerFile;
+  struct Source {
+    std::vector<std::string> fields;
+    std::string where;  // file:line
+  };
+  std::map<std::string, Source> rows;  // by submission, sorted
+  for (const fs::path& shard : shards) {
+    Result<std::string> text = readWhole(shard, "gradebook");
+    if (!text) return text.status();
+    Result<std::vector<CsvRow>> parsed = parseCsv(text.value(), shard.string());
+    if (!parsed) return parsed.status();
+    const std::vector<CsvRow>& records = parsed.value();
+    if (records.empty()) return Status::failure("gradebook: " + shard.string() + " is empty (no header)");
+    if (records[0].fields.size() < 3 || records[0].fields[0] != "submission") {
+      return Status::failure("gradebook: " + shard.string() +
+                             ":1: not a gradebook (the header must start with submission,score,max_score)");
+    }
+    if (header.empty()) {
+      header = records[0].fields;
+      headerFile = shard;
+    } else if (records[0].fields != header) {
+      std::string got = csvRecord(records[0].fields), want = csvRecord(header);
+      got.resize(got.size() - 2);
+      want.resize(want.size() - 2);
+      return Status::failure("gradebook: " + shard.string() + ":1: its header \"" + got + "\" differs from \"" + want + "\" of " +
+                             headerFile.string() + " (gradebooks of different rubrics?)");
+    }
+    for (std::size_t i = 1; i < records.size(); ++i) {
+      const CsvRow& r = records[i];
+      const std::string where = shard.string() + ":" + std::to_string(r.line);
+      if (r.fields.size() != header.size()) {
+        return Status::failure("gradebook: " + where + ": " + std::to_string(r.fields.size()) + " fields where the header has " +
+                               std::to_string(header.size()));
+      }
+      const auto [it, added] = rows.try_emplace(r.fields[0], Source{.fields = r.fields, .where = where});
+      if (!added) {
+        return Status::failure("gradebook: submission '" + r.fields[0] + "' is in " + it->second.where + " and in " + where);
+      }
+    }
+  }
+  std::string csv = csvRecord(header);
+  std::vector<std::string> submissions;
+  for (const auto& [submission, source] : rows) {
+    csv += csvRecord(source.fields);
+    submissions.push_back(submission);
+  }
+  if (Status s = writeWhole(out, "gradebook", csv); !s) return s;
+  return submissions;
+}
+
+Status writeHtmlReport(const Grade& g, const HtmlMedia& media, const fs::path& path) {
+  // The media first: a missing or wrong file is reported before anything is written.
+  std::string video, plot;
+  if (!media.video.empty()) {
+    Result<std::string> bytes = readWhole(media.video, "html report");
+    if (!bytes) return bytes.status();
+    if (bytes.value().size() < 12 || bytes.value().compare(4, 4, "ftyp") != 0) {
+      return Status::failure("html report: '" + media.video.string() + "' is not an MP4 video (it has no ftyp box)");
+    }
+    video = base64(bytes.value());
+  }
+  if (!media.plot.empty()) {
+    Result<std::string> bytes = readWhole(media.plot, "html report");
+    if (!bytes) return bytes.status();
+    if (bytes.value().compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) {
+      return Status::failure("html report: '" + media.plot.string() + "' is not a PNG image");
+    }
+    plot = base64(bytes.value());
+  }
+
+  const std::string title = markupEscape(g.assignment + ": " + g.submission);
+  std::string html =
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      // Nothing from elsewhere and no scripts, even if something slipped past the escaping.
+      "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; img-src data:; media-src data:; "
+      "style-src 'unsafe-inline'\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+      "<title>" + title + "</title>\n"
+      "<style>\n"
+      "body { font-family: sans-serif; margin: 1.5em; color: #222; }\n"
+      "table { border-collapse: collapse; }\n"
+      "th, td { border: 1px solid #bbb; padding: 0.3em 0.6em; text-align: left; vertical-align: top; }\n"
+      "td.num { text-align: right; font-variant-numeric: tabular-nums; }\n"
+      "tr.PASS td.status { color: #146c2e; } tr.FAIL td.status { color: #b3261e; } tr.PARTIAL td.status { color: #8a5a00; }\n"
+      ".visibility { color: #666; font-size: 0.85em; }\n"
+      "pre { background: #f4f4f4; padding: 0.8em; overflow-x: auto; }\n"
+      "figure { margin: 1.5em 0; } video, img { display: block; max-width: 100%; margin-bottom: 0.5em; }\n"
+      "</style>\n</head>\n<body>\n";
+  html += "<h1>" + title + "</h1>\n";
+  html += "<p class=\"total\">Total: <strong>" + number(g.score()) + " / " + number(g.maxScore()) + "</strong> points</p>\n";
+  html += "<table>\n<thead><tr><th>Check</th><th>Score</th><th>Points</th><th>Status</th><th>Reasons</th></tr></thead>\n<tbody>\n";
+  for (const CheckGrade& c : g.checks) {
+    const char* status = toString(outcomeOf(c));
+    html += "<tr class=\"" + std::string(status) + "\"><td>" + markupEscape(c.name);
+    if (c.visibility != Visibility::Visible) {
+      html += " <span class=\"visibility\">(" + std::string(course::toString(c.visibility)) + ")</span>";
+    }
+    html += "</td><td class=\"num\">" + number(c.score) + "</td><td class=\"num\">" + number(c.points) + "</td><td class=\"status\">" +
+            status + "</td><td>";
+    const std::vector<std::string> reasons = linesOf(c.output());
+    for (std::size_t i = 0; i < reasons.size(); ++i) html += (i > 0 ? "<br>" : "") + markupEscape(reasons[i]);
+    html += "</td></tr>\n";
+  }
+  html += "</tbody>\n</table>\n";
+  if (!g.compileError.empty()) {
+    html += "<h2>The submission did not compile</h2>\n<pre class=\"compile-error\">" + markupEscape(g.compileError) + "</pre>\n";
+  }
+  if (!g.notes.empty()) {
+    html += "<h2>Notes</h2>\n<ul class=\"notes\">\n";
+    for (const std::string& note : g.notes) html += "<li>" + markupEscape(note) + "</li>\n";
+    html += "</ul>\n";
+  }
+  if (!video.empty() || !plot.empty()) {
+    html += "<figure>\n";
+    if (!video.empty()) html += "<video controls src=\"data:video/mp4;base64," + video + "\"></video>\n";
+    if (!plot.empty()) html += "<img src=\"data:image/png;base64," + plot + "\" alt=\"plot of the run\">\n";
+    if (!media.caption.empty()) html += "<figcaption>" + markupEscape(media.caption) + "</figcaption>\n";
+    html += "</figure>\n";
+  }
+  html += "</body>\n</html>\n";
+  return writeWhole(path, "html report", html);
+}
+
+}  // namespace frob::course

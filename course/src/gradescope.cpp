@@ -1,0 +1,134 @@
+#include "frob/course/gradescope.hpp"
+
+#include "controller_setup.inc"
+#include "frob/render/output_file.hpp"
+
+#include <zip.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+
+namespace frob::course {
+
+namespace fs = std::filesystem;
+using render::Status;
+
+namespace {
+
+// Gradescope runs it once on its base image, Ubuntu 22.04 unless the course chose another. It
+// assumes apt-get and Debian's or Ubuntu's package names, and clang 15 or newer (Ubuntu 22.04's
+// newest; GCC 12 and older clangs mishandle coroutines, see README); nothing here can run Ubuntu,
+// so it is kept small.
+constexpr const char* kSetup = R"sh(#!/usr/bin/env bash
+# Builds frob for the autograder (Gradescope runs this once, as root, on its base image).
+set -euo pipefail
+cd /autograder/source
+apt-get update -qq
+DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+  cmake ninja-build pkg-config clang-15 libeigen3-dev libbox2d-dev libassimp-dev libosmesa6-dev libpng-dev \
+  libfreetype-dev fonts-dejavu-core libavcodec-dev libavformat-dev libavutil-dev libswscale-dev \
+  libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libseccomp-dev libzip-dev
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER=clang-15 -DCMAKE_CXX_COMPILER=clang++-15 \
+  -DFROB_BUILD_TESTS=OFF
+cmake --build build
+)sh";
+
+// Gradescope runs it for each submission. FROB_AUTOGRADER_ROOT and FROB let a test run it on a
+// fake /autograder tree with a frob built elsewhere.
+constexpr const char* kRun = R"sh(#!/usr/bin/env bash
+# Grades the submission into results/results.json, Gradescope's layout.
+set -u
+root="${FROB_AUTOGRADER_ROOT:-/autograder}"
+frob="${FROB:-$root/source/build/app/frob}"
+mkdir -p "$root/results"
+submission=$(find "$root/submission" -maxdepth 3 -name '*.cpp' -type f | sort | head -n 1)
+if [ -z "$submission" ]; then
+  printf '{"score": 0, "output": "No .cpp file was submitted: submit your controller file.", "tests": []}\n' > "$root/results/results.json"
+  exit 0
+fi
+export FROB_CACHE_DIR="$root/cache"
+if [ -f "$root/source/secret.txt" ]; then export FROB_GRADE_SECRET="$(head -n 1 "$root/source/secret.txt")"; fi
+cd "$(dirname "$submission")"
+"$frob" grade "$root/source/assignments/ASSIGNMENT" "$submission" --results "$root/results/results.json" --logs "$root/results/logs"
+)sh";
+
+// What of frob's sources the autograder builds from: everything but tests, builds and the other assignments.
+bool wanted(const fs::path& relative) {
+  const std::string top = relative.begin()->string();
+  static const char* kept[] = {"frob", "worlds", "render", "course", "app", "cmake", "CMakeLists.txt", "LICENSE", "README.md"};
+  return std::find(std::begin(kept), std::end(kept), top) != std::end(kept);
+}
+
+class Zip {
+ public:
+  explicit Zip(const std::string& path) {
+    int error = 0;
+    zip_ = ::zip_open(path.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
+  }
+  ~Zip() {
+    if (zip_ != nullptr) ::zip_discard(zip_);
+  }
+  [[nodiscard]] bool ok() const { return zip_ != nullptr; }
+  bool addText(const std::string& name, const std::string& text, bool executable) {
+    zip_source_t* src = ::zip_source_buffer(zip_, copy(text), text.size(), 1);
+    return add(name, src, executable);
+  }
+  bool addFile(const std::string& name, const fs::path& file) {
+    return add(name, ::zip_source_file(zip_, file.c_str(), 0, -1), false);
+  }
+  // Writes the archive; false with the reason in `error`.
+  bool close(std::string& error) {
+    if (::zip_close(zip_) == 0) return zip_ = nullptr, true;
+    error = ::zip_strerror(zip_);
+    return false;
+  }
+
+ private:
+  static void* copy(const std::string& text) {
+    void* p = std::malloc(text.size());
+    std::memcpy(p, text.data(), text.size());
+    return p;
+  }
+  bool add(const std::string& name, zip_source_t* src, bool executable) {
+    if (src == nullptr) return false;
+    const zip_int64_t at = ::zip_file_add(zip_, name.c_str(), src, ZIP_FL_OVERWRITE | ZIP_FL_ENC_UTF_8);
+    if (at < 0) return ::zip_source_free(src), false;
+    const zip_uint32_t mode = (executable ? 0100755u : 0100644u) << 16;  // Unix permissions in the high bits
+    return ::zip_file_set_external_attributes(zip_, static_cast<zip_uint64_t>(at), 0, ZIP_OPSYS_UNIX, mode) == 0;
+  }
+  zip_t* zip_ = nullptr;
+};
+
+}  // namespace
+
+Status writeGradescopeZip(const GradescopeZipDef& def, const fs::path& out) {
+  if (Status s = render::checkWritable(out.string(), "zip"); !s) return s;
+  const std::string partial = render::partialPath(out.string());
+  Zip zip(partial);
+  if (!zip.ok()) return Status::failure(out.string() + ": cannot write the zip");
+  std::string run = kRun;
+  run.replace(run.find("ASSIGNMENT"), 10, def.assignment);
+  bool ok = zip.addText("setup.sh", kSetup, true) && zip.addText("run_autograder", run, true);
+  if (!def.secret.empty()) ok = ok && zip.addText("secret.txt", def.secret + "\n", false);
+  std::error_code ec;
+  const fs::path source(FROB_SOURCE_DIR);
+  for (auto it = fs::recursive_directory_iterator(source, ec); ok && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    const fs::path relative = fs::relative(it->path(), source);
+    if (it->is_directory() && !wanted(relative)) it.disable_recursion_pending();
+    if (it->is_regular_file() && wanted(relative)) ok = zip.addFile(relative.generic_string(), it->path());
+  }
+  const fs::path assignment = def.rubric.parent_path();
+  for (auto it = fs::recursive_directory_iterator(assignment, ec); ok && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    if (it->is_regular_file()) ok = zip.addFile("assignments/" + def.assignment + "/" + fs::relative(it->path(), assignment).generic_string(), it->path());
+  }
+  std::string error;
+  if (!ok || !zip.close(error)) {
+    fs::remove(partial, ec);
+    return Status::failure(out.string() + ": cannot write the zip" + (error.empty() ? "" : ": " + error));
+  }
+  return render::commitPartial(out.string(), "zip");
+}
+
+}  // namespace frob::course

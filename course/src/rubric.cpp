@@ -1,0 +1,246 @@
+#include "frob/course/rubric.hpp"
+
+#include "frob/worlds/fnv.hpp"
+#include "frob/worlds/registry.hpp"
+#include "frob/worlds/toml_reader.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace frob::course {
+
+namespace fs = std::filesystem;
+using Kind = Criterion::Kind;
+
+namespace {
+
+// The criteria a check may name, with the keys each takes.
+struct CriterionSpec {
+  std::string_view key;
+  Kind kind;
+  std::initializer_list<std::string_view> fields;
+};
+const CriterionSpec kCriteria[] = {
+    {"goal", Kind::Goal, {"within", "by", "point"}},
+    {"waypoints", Kind::Waypoints, {"points", "within", "by"}},
+    {"stopped", Kind::Stopped, {"speed"}},
+    {"collisions", Kind::Collisions, {"max"}},
+    {"clearance", Kind::Clearance, {"min"}},
+    {"wall_distance", Kind::WallDistance, {"target", "tolerance", "fraction", "after"}},
+    {"coverage", Kind::Coverage, {"fraction", "cell"}},
+    {"robots_apart", Kind::RobotsApart, {"min"}},
+    {"path_ratio", Kind::PathRatio, {"max", "point", "within"}},
+    {"bug1_bound", Kind::Bug1Bound, {"point", "within"}},
+    {"returns", Kind::Returns, {"value"}},
+};
+
+class RubricReader : worlds::TomlReader {
+ public:
+  RubricReader(const fs::path& file) : TomlReader(file.string()), dir_(file.parent_path()) { rubric_.file = file; }
+
+  Result<Rubric> read(std::string_view text) {
+    toml::table root;
+    if (!parse(text, root) || !readRubric(root)) return Status::failure(error());
+    return std::move(rubric_);
+  }
+
+ private:
+  bool readRubric(const toml::table& root) {
+    if (!onlyKeys(root, "", {"title", "dt", "seconds", "check"})) return false;
+    double seconds = 60.0;
+    if (!optString(root, "title", "title", rubric_.title) || !optNumber(root, "dt", "dt", rubric_.dt) ||
+        !optNumber(root, "seconds", "seconds", seconds)) {
+      return false;
+    }
+    if (!(rubric_.dt > 0 && rubric_.dt <= 0.1)) return fail(*root.get("dt"), "dt", "must lie in (0, 0.1] seconds");
+    if (!(seconds > 0)) return fail(*root.get("seconds"), "seconds", "must be positive");
+    const toml::array* checks = root.get("check") ? root.get("check")->as_array() : nullptr;
+    if (checks == nullptr || checks->empty()) return fail(1, "check", "no [[check]] given: a rubric needs at least one");
+    for (std::size_t i = 0; i < checks->size(); ++i) {
+      const std::string field = "check[" + std::to_string(i) + "].";
+      const toml::table* t = table((*checks)[i], field);
+      Check c{.seconds = seconds, .line = line((*checks)[i])};
+      if (t == nullptr || !readCheck(*t, field, c)) return false;
+      for (const Check& other : rubric_.checks) {
+        if (other.name == c.name) return fail(c.line, field + "name", "'" + c.name + "' names two checks");
+      }
+      rubric_.checks.push_back(std::move(c));
+    }
+    return true;
+  }
+
+  bool readCheck(const toml::table& t, const std::string& field, Check& c) {
+    for (auto&& [k, v] : t) {
+      static constexpr std::string_view own[] = {"name", "points", "visibility", "worlds", "seeds", "secret_seeds", "seconds"};
+      if (std::find(std::begin(own), std::end(own), k.str()) != std::end(own)) continue;
+      const auto spec = std::find_if(std::begin(kCriteria), std::end(kCriteria), [&](const CriterionSpec& s) { return s.key == k.str(); });
+      if (spec == std::end(kCriteria)) {
+        std::string list;
+        for (const CriterionSpec& s : kCriteria) list += (list.empty() ? "" : ", ") + std::string(s.key);
+        return fail(static_cast<int>(k.source().begin.line), field + std::string(k.str()),
+                    "unknown key: a check has name, points, visibility, worlds, seeds, secret_seeds, seconds and criteria (" + list + ")");
+      }
+      const toml::table* params = table(v, field + std::string(k.str()));
+      if (params == nullptr) return false;
+      Criterion criterion{.kind = spec->kind, .line = line(v)};
+      if (!readCriterion(*params, field + std::string(k.str()) + ".", *spec, criterion)) return false;
+      c.criteria.push_back(std::move(criterion));
+    }
+    const toml::node* name = t.get("name");
+    if (name == nullptr) return fail(c.line, field + "name", "missing: every check needs a name");
+    if (!string(*name, field + "name", c.name)) return false;
+    if (c.name.empty()) return fail(*name, field + "name", "must not be empty");
+    if (!optNumber(t, "points", field + "points", c.points) || !optNumber(t, "seconds", field + "seconds", c.seconds) ||
+        !optInteger(t, "secret_seeds", field + "secret_seeds", 0, 1000, c.secretSeeds)) {
+      return false;
+    }
+    if (!(c.points >= 0)) return fail(*t.get("points"), field + "points", "must not be negative");
+    if (!(c.seconds > 0 && c.seconds <= 24 * 3600)) return fail(*t.get("seconds"), field + "seconds", "must lie in (0, 86400]");
+    if (const toml::node* v = t.get("visibility")) {
+      std::string text;
+      if (!string(*v, field + "visibility", text)) return false;
+      if (text == "visible") c.visibility = Visibility::Visible;
+      else if (text == "hidden") c.visibility = Visibility::Hidden;
+      else if (text == "after_due_date") c.visibility = Visibility::AfterDueDate;
+      else return fail(*v, field + "visibility", "expected \"visible\", \"hidden\" or \"after_due_date\"");
+    }
+    if (!readWorlds(t, field, c) || !readSeeds(t, field, c)) return false;
+    if (c.criteria.empty()) return fail(c.line, field + "name", "check '" + c.name + "' has no criterion");
+    // In the order written (TOML tables list their keys sorted): the first that fails gives the reason.
+    std::stable_sort(c.criteria.begin(), c.criteria.end(), [](const Criterion& a, const Criterion& b) { return a.line < b.line; });
+    return true;
+  }
+
+  bool readWorlds(const toml::table& t, const std::string& field, Check& c) {
+    const toml::node* n = t.get("worlds");
+    const toml::array* list = n != nullptr ? n->as_array() : nullptr;
+    if (list == nullptr || list->empty()) {
+      return fail(n != nullptr ? line(*n) : c.line, field + "worlds", "expected a list of reference worlds or world files");
+    }
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      WorldRef w;
+      const std::string f = field + "worlds[" + std::to_string(i) + "]";
+      if (!string((*list)[i], f, w.name)) return false;
+      if (worlds::findWorld(w.name) == nullptr) {
+        w.file = dir_ / w.name;
+        if (!fs::is_regular_file(w.file)) {
+          return fail((*list)[i], f, "'" + w.name + "' is neither a reference world (see frob list) nor a file beside the rubric");
+        }
+      }
+      c.worlds.push_back(std::move(w));
+    }
+    return true;
+  }
+
+  bool readSeeds(const toml::table& t, const std::string& field, Check& c) {
+    const toml::node* n = t.get("seeds");
+    if (n == nullptr) return true;
+    const toml::array* list = n->as_array();
+    if (list == nullptr) return fail(*n, field + "seeds", "expected a list of seeds");
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      long long seed = 0;
+      if (!integer((*list)[i], field + "seeds[" + std::to_string(i) + "]", 0, std::numeric_limits<long long>::max(), seed)) return false;
+      c.seeds.push_back(static_cast<std::uint64_t>(seed));
+    }
+    return true;
+  }
+
+  // A required positive (or non-negative) number.
+  bool need(const toml::table& t, std::string_view key, const std::string& field, double& out, bool zeroAllowed = false) {
+    const toml::node* n = t.get(key);
+    if (n == nullptr) return fail(0, field + std::string(key), "missing");
+    if (!number(*n, field + std::string(key), out)) return false;
+    if (zeroAllowed ? out < 0 : out <= 0) return fail(*n, field + std::string(key), zeroAllowed ? "must not be negative" : "must be positive");
+    return true;
+  }
+
+  bool readCriterion(const toml::table& t, const std::string& field, const CriterionSpec& spec, Criterion& c) {
+    if (!onlyKeys(t, field, spec.fields)) return false;
+    const auto fraction = [&](double& out) {
+      if (!need(t, "fraction", field, out)) return false;
+      return out <= 1 || fail(*t.get("fraction"), field + "fraction", "must lie in (0, 1]");
+    };
+    switch (c.kind) {
+      case Kind::Goal:
+        return need(t, "within", field, c.distance) && optNumber(t, "by", field + "by", c.seconds) && optString(t, "point", field + "point", c.point);
+      case Kind::Waypoints: {
+        const toml::node* n = t.get("points");
+        const toml::array* list = n != nullptr ? n->as_array() : nullptr;
+        if (list == nullptr || list->empty()) return fail(n != nullptr ? line(*n) : c.line, field + "points", "expected a list of point names");
+        for (std::size_t i = 0; i < list->size(); ++i) {
+          if (!string((*list)[i], field + "points[" + std::to_string(i) + "]", c.points.emplace_back())) return false;
+        }
+        return need(t, "within", field, c.distance) && optNumber(t, "by", field + "by", c.seconds);
+      }
+      case Kind::Stopped: return optNumber(t, "speed", field + "speed", c.speed);
+      case Kind::Collisions: return optInteger(t, "max", field + "max", 0, 1'000'000, c.count);
+      case Kind::Clearance: return need(t, "min", field, c.distance, true);
+      case Kind::WallDistance:
+        return need(t, "target", field, c.distance) && need(t, "tolerance", field, c.tolerance) && fraction(c.fraction) &&
+               optNumber(t, "after", field + "after", c.after);
+      case Kind::Coverage: return fraction(c.fraction) && optNumber(t, "cell", field + "cell", c.cell);
+      case Kind::RobotsApart: return optNumber(t, "min", field + "min", c.distance);
+      case Kind::PathRatio:
+        return need(t, "max", field, c.ratio) && optString(t, "point", field + "point", c.point) &&
+               optNumber(t, "within", field + "within", c.distance);
+      case Kind::Bug1Bound: return optString(t, "point", field + "point", c.point) && optNumber(t, "within", field + "within", c.distance);
+      case Kind::Returns: {
+        const toml::node* n = t.get("value");
+        if (n == nullptr) return fail(c.line, field + "value", "missing");
+        if (const auto* b = n->as_boolean()) return c.value = b->get() ? "true" : "false", true;
+        if (const auto* i = n->as_integer()) return c.value = std::to_string(i->get()), true;
+        return string(*n, field + "value", c.value);
+      }
+    }
+    return true;
+  }
+
+  fs::path dir_;
+  Rubric rubric_;
+};
+
+}  // namespace
+
+double Rubric::points() const {
+  double total = 0;
+  for (const Check& c : checks) total += c.points;
+  return total;
+}
+
+bool Rubric::needsSecret() const {
+  return std::any_of(checks.begin(), checks.end(), [](const Check& c) { return c.secretSeeds > 0; });
+}
+
+Result<Rubric> loadRubric(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return Status::failure(file.string() + ": cannot open the rubric");
+  std::ostringstream text;
+  text << in.rdbuf();
+  try {
+    return RubricReader(file).read(text.str());
+  } catch (const std::exception& e) {
+    return Status::failure(file.string() + ": " + e.what());
+  }
+}
+
+std::vector<std::uint64_t> seedsOf(const Check& check, const std::string& secret) {
+  std::vector<std::uint64_t> seeds = check.seeds;
+  for (int k = 0; k < check.secretSeeds; ++k) {
+    // Reproducible for the instructor, unguessable without the secret (a seed is at most 2^63 - 1).
+    seeds.push_back(worlds::Fnv1a().add(std::string_view(secret + "\n" + check.name + "\n" + std::to_string(k))).value() >> 1);
+  }
+  return seeds;
+}
+
+const char* toString(Visibility v) {
+  switch (v) {
+    case Visibility::Visible: return "visible";
+    case Visibility::Hidden: return "hidden";
+    case Visibility::AfterDueDate: return "after_due_date";
+  }
+  return "visible";
+}
+
+}  // namespace frob::course

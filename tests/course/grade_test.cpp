@@ -1,0 +1,197 @@
+// frob grade's engine: real submissions compiled, run in the sandboxed host, scored from the true
+// trajectory; the same grade twice; each run's wheel log replayed to the same verdict bit for bit.
+#include "frob/course/grade.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace frob::course {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A 6 x 4 m room: the robot at (1, 2) facing the goal at (5, 2), with a little odometry drift, so
+// that each seed drives a slightly different path.
+constexpr const char* kWorld = R"(size = [6.0, 4.0]
+seed = 9
+[odometry]
+translation = 0.02
+[points]
+goal = [5.0, 2.0]
+[[robot]]
+name = "nomad"
+start = [1.0, 2.0]
+)";
+
+constexpr const char* kRubric = R"(title = "Drive to the goal"
+seconds = 20
+
+[[check]]
+name = "reaches the goal"
+points = 4
+worlds = ["worlds/field.toml"]
+seeds = [1, 2]
+goal = { within = 0.3, by = 20 }
+collisions = { max = 0 }
+
+[[check]]
+name = "stops there"
+points = 2
+visibility = "hidden"
+worlds = ["worlds/field.toml"]
+secret_seeds = 1
+stopped = { speed = 0.05 }
+
+[[check]]
+name = "reports success"
+points = 1
+visibility = "after_due_date"
+worlds = ["worlds/field.toml"]
+returns = { value = true }
+)";
+
+// Drives ahead until odometry says x > 4.8, then returns true (and the robot stops).
+constexpr const char* kGood = R"(#include <frob/frob.hpp>
+using namespace frob;
+Task<Wheels, bool> toGoal() {
+  co_await mkTask([](const TaskState& ts) {
+    return std::pair{wheels(0.4, 0.0), predicate(lift([](Point2 p) { return p.x() > 4.8; }, place(ts.robot())))};
+  });
+  co_return true;
+}
+FROB_CONTROLLER(toGoal)
+)";
+
+constexpr const char* kCrash = R"(#include <frob/frob.hpp>
+using namespace frob;
+Behavior<Wheels> crash(const Robot&) {
+  return toBehavior(lift([](double t) { if (t > 1.0) *static_cast<volatile int*>(nullptr) = 1; return Wheels{0.4, 0.0}; }, time()));
+}
+FROB_CONTROLLER(crash)
+)";
+
+class Grading : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    // A folder of its own: ctest runs the tests of this file at the same time.
+    dir_ = fs::path(::testing::TempDir()) / "grade_test" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "assignment" / "worlds");
+    std::ofstream(dir_ / "assignment" / "worlds" / "field.toml") << kWorld;
+    std::ofstream(dir_ / "assignment" / "rubric.toml") << kRubric;
+    std::ofstream(dir_ / "good.cpp") << kGood;
+    std::ofstream(dir_ / "crash.cpp") << kCrash;
+    std::ofstream(dir_ / "broken.cpp") << "#include <frob/frob.hpp>\nthis is not C++\n";
+    Result<Rubric> rubric = loadRubric(dir_ / "assignment" / "rubric.toml");
+    ASSERT_TRUE(rubric.ok()) << rubric.error();
+    def_ = {.rubric = rubric.value(), .assignment = "drive", .secret = "test-secret"};
+    def_.compiler.cacheDir = fs::path(FROB_TEST_CACHE_DIR);
+  }
+  fs::path dir_;
+  GradeDef def_;
+};
+
+TEST_F(Grading, AGoodSubmissionGetsFullMarks) {
+  const Grade g = grade(def_, dir_ / "good.cpp");
+  EXPECT_EQ(g.compileError, "");
+  ASSERT_EQ(g.checks.size(), 3u);
+  for (const CheckGrade& c : g.checks) EXPECT_EQ(c.output(), "") << c.name;
+  EXPECT_EQ(g.checks[0].runs.size(), 2u);  // two seeds
+  EXPECT_EQ(g.checks[1].runs.size(), 1u);  // one secret seed
+  EXPECT_DOUBLE_EQ(g.score(), 7.0);
+  EXPECT_DOUBLE_EQ(g.maxScore(), 7.0);
+}
+
+TEST_F(Grading, ACrashFailsEveryRunWithItsReasonAndNothingElse) {
+  const Grade g = grade(def_, dir_ / "crash.cpp");
+  EXPECT_DOUBLE_EQ(g.score(), 0.0);
+  EXPECT_EQ(g.checks[0].output(),
+            "in worlds/field.toml, seed 1: the controller failed: nomad: crashed with SIGSEGV (a bad pointer, or an index out of "
+            "range?) at t = 1.01 s\n"
+            "in worlds/field.toml, seed 2: the controller failed: nomad: crashed with SIGSEGV (a bad pointer, or an index out of "
+            "range?) at t = 1.01 s\n");
+}
+
+TEST_F(Grading, ACompileErrorScoresZeroAndSaysSo) {
+  const Grade g = grade(def_, dir_ / "broken.cpp");
+  EXPECT_NE(g.compileError.find("could not compile"), std::string::npos) << g.compileError;
+  EXPECT_NE(g.compileError.find("broken.cpp:2:"), std::string::npos) << g.compileError;
+  EXPECT_DOUBLE_EQ(g.score(), 0.0);
+  EXPECT_EQ(g.checks[2].output(), "in worlds/field.toml, seed 9: the submission did not compile\n");
+}
+
+TEST_F(Grading, PartialCreditIsTheShareOfRunsPassed) {
+  // At 0.4 m/s from x = 1, within 0.3 m of x = 5 after about 9.5 s: allowed 9 s, neither seed
+  // passes; allowed 10 s, both do.
+  def_.rubric.checks[0].criteria[0].seconds = 9;
+  EXPECT_DOUBLE_EQ(grade(def_, dir_ / "good.cpp").checks[0].score, 0.0);
+  def_.rubric.checks[0].criteria[0].seconds = 10;
+  def_.rubric.checks[0].seeds = {1};
+  def_.rubric.checks[0].worlds.push_back({.name = "empty"});  // no goal there: that run fails
+  const Grade g = grade(def_, dir_ / "good.cpp");
+  EXPECT_DOUBLE_EQ(g.checks[0].score, 2.0);
+  EXPECT_EQ(g.checks[0].output(), "in empty, seed 1: the world has no point 'goal' to reach\n");
+}
+
+TEST_F(Grading, VisibleOnlyGradesTheVisibleChecks) {
+  def_.visibleOnly = true;
+  const Grade g = grade(def_, dir_ / "good.cpp");
+  ASSERT_EQ(g.checks.size(), 1u);
+  EXPECT_EQ(g.checks[0].name, "reaches the goal");
+}
+
+TEST_F(Grading, TheSameSubmissionTwiceGivesTheSameGrade) {
+  const Grade a = grade(def_, dir_ / "good.cpp"), b = grade(def_, dir_ / "good.cpp");
+  ASSERT_EQ(a.checks.size(), b.checks.size());
+  for (std::size_t c = 0; c < a.checks.size(); ++c) {
+    EXPECT_EQ(a.checks[c].score, b.checks[c].score);
+    ASSERT_EQ(a.checks[c].runs.size(), b.checks[c].runs.size());
+    for (std::size_t r = 0; r < a.checks[c].runs.size(); ++r) {
+      EXPECT_EQ(a.checks[c].runs[r].seed, b.checks[c].runs[r].seed);
+      EXPECT_EQ(a.checks[c].runs[r].trajectoryHash, b.checks[c].runs[r].trajectoryHash);
+      EXPECT_EQ(a.checks[c].runs[r].reason, b.checks[c].runs[r].reason);
+    }
+  }
+  // Different seeds drive different trajectories: the hash sees the noise.
+  EXPECT_NE(a.checks[0].runs[0].trajectoryHash, a.checks[0].runs[1].trajectoryHash);
+}
+
+TEST_F(Grading, EveryRunsLogReplaysToTheSameVerdictBitForBit) {
+  // A tighter rubric file (replay reads the rubric the log names), so that some runs fail with a reason.
+  std::string text = kRubric;
+  text.replace(text.find("by = 20"), 7, "by = 9");
+  std::ofstream(dir_ / "assignment" / "rubric.toml") << text;
+  def_.rubric = loadRubric(dir_ / "assignment" / "rubric.toml").value();
+  def_.logs = dir_ / "logs";
+  int failed = 0;
+  for (const char* submission : {"good.cpp", "crash.cpp"}) {
+    const Grade g = grade(def_, dir_ / submission);
+    for (const CheckGrade& c : g.checks) {
+      for (const RunGrade& r : c.runs) {
+        ASSERT_TRUE(fs::exists(r.log)) << r.log;
+        Result<Replay> again = replay(r.log);
+        ASSERT_TRUE(again.ok()) << again.error();
+        EXPECT_EQ(again.value().check, c.name);
+        EXPECT_EQ(again.value().run.seed, r.seed);
+        EXPECT_EQ(again.value().run.trajectoryHash, r.trajectoryHash) << r.log;
+        EXPECT_EQ(again.value().run.passed, r.passed) << r.log;
+        EXPECT_EQ(again.value().run.reason, r.reason) << r.log;
+        failed += !r.passed;
+      }
+    }
+  }
+  EXPECT_EQ(failed, 6);  // the good one late in both seeds; the crash in all four runs
+}
+
+TEST(Replay, ALogThatIsNotOneSaysSo) {
+  const fs::path log = fs::path(::testing::TempDir()) / "not_a_log.txt";
+  std::ofstream(log) << "hello\n";
+  Result<Replay> r = replay(log);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error(), log.string() + ": not a wheel log of frob grade (its first line)");
+}
+
+}  // namespace
+}  // namespace frob::course

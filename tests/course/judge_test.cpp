@@ -1,0 +1,162 @@
+// The grader's criteria, judged on hand-made runs whose answers are known exactly.
+#include "frob/course/judge.hpp"
+
+#include <gtest/gtest.h>
+
+namespace frob::course {
+namespace {
+
+using Kind = Criterion::Kind;
+
+// A 6 x 3 m room, enclosed, with a goal and two waypoints; steps of 0.1 s.
+RunRecord room() {
+  RunRecord r{.size = {6.0, 3.0}, .dt = 0.1};
+  const Point2 a(0, 0), b(6, 0), c(6, 3), d(0, 3);
+  for (auto [p, q] : {std::pair{a, b}, {b, c}, {c, d}, {d, a}}) r.walls.push_back(worlds::segmentWall(p, q));
+  r.enclosureWalls = 4;
+  r.points = {{"goal", {5.0, 1.5}}, {"a", {2.0, 1.5}}, {"b", {4.0, 1.5}}};
+  return r;
+}
+
+// A robot driving from (x0, y) along +x at `speed` m/s for `seconds`, sampled every 0.1 s.
+Track straight(double x0, double y, double speed, double seconds, const std::string& name = "ada") {
+  Track t{.name = name};
+  for (int k = 0; k <= static_cast<int>(std::lround(seconds * 10)); ++k) t.path.emplace_back(x0 + speed * 0.1 * k, y);
+  return t;
+}
+
+Verdict run(const Criterion& c, Track t, RunRecord r = room()) {
+  r.robots.push_back(std::move(t));
+  return judge(c, r);
+}
+
+TEST(Judge, GoalReachedInTimeOrLateOrNever) {
+  const Criterion goal{.kind = Kind::Goal, .distance = 0.2, .seconds = 10};
+  // From x = 1 at 0.5 m/s: within 0.2 m of x = 5 at x = 4.8, after 7.6 s.
+  EXPECT_TRUE(run(goal, straight(1, 1.5, 0.5, 9)).passed);
+  const Criterion strict{.kind = Kind::Goal, .distance = 0.2, .seconds = 7};
+  EXPECT_EQ(run(strict, straight(1, 1.5, 0.5, 9)).reason, "reached goal at 7.6 s; allowed 7 s");
+  EXPECT_EQ(run(goal, straight(1, 1.5, 0.5, 4)).reason, "never came within 0.20 m of goal (closest 2.00 m, at 4.0 s)");
+  const Criterion missing{.kind = Kind::Goal, .point = "exit", .distance = 0.2};
+  EXPECT_EQ(run(missing, straight(1, 1.5, 0.5, 1)).reason, "the world has no point 'exit' to reach");
+}
+
+TEST(Judge, WaypointsInOrder) {
+  const Criterion ab{.kind = Kind::Waypoints, .points = {"a", "b"}, .distance = 0.2};
+  EXPECT_TRUE(run(ab, straight(1, 1.5, 0.5, 8)).passed);
+  const Criterion ba{.kind = Kind::Waypoints, .points = {"b", "a"}, .distance = 0.2};
+  EXPECT_EQ(run(ba, straight(1, 1.5, 0.5, 8)).reason,
+            "reached b at 5.6 s, never came within 0.20 m of a after that (closest 1.80 m, at 5.6 s)");
+}
+
+TEST(Judge, StoppedAtTheEnd) {
+  const Criterion stopped{.kind = Kind::Stopped, .speed = 0.05};
+  EXPECT_TRUE(run(stopped, straight(1, 1.5, 0.0, 2)).passed);
+  EXPECT_EQ(run(stopped, straight(1, 1.5, 0.3, 2)).reason, "was still moving at 0.30 m/s at the end; it should stop (below 0.05 m/s)");
+}
+
+TEST(Judge, CollisionsNameTheFirstOneOverTheLimit) {
+  Track t = straight(1, 1.5, 0.5, 2);
+  t.contacts = {{41.2, {3.1, 2.75}}, {50.0, {4.0, 2.75}}};
+  EXPECT_EQ(run({.kind = Kind::Collisions, .count = 0}, t).reason, "touched a wall at 41.2 s at (3.1, 2.8) (2 contacts; 0 allowed)");
+  EXPECT_EQ(run({.kind = Kind::Collisions, .count = 1}, t).reason, "touched a wall at 50.0 s at (4.0, 2.8) (2 contacts; 1 allowed)");
+  EXPECT_TRUE(run({.kind = Kind::Collisions, .count = 2}, t).passed);
+  t.contacts = {{3.0, {3.0, 1.5}}};  // in the middle of the room: it must have been another robot
+  EXPECT_EQ(run({.kind = Kind::Collisions, .count = 0}, t).reason, "touched another robot at 3.0 s at (3.0, 1.5)");
+}
+
+TEST(Judge, ClearanceIsMeasuredFromTheBody) {
+  // Centre 0.30 m from the bottom wall, body radius 0.23: 0.07 m of clearance.
+  const Criterion c{.kind = Kind::Clearance, .distance = 0.1};
+  EXPECT_EQ(run(c, straight(1, 0.30, 0.5, 1)).reason, "came within 0.07 m of a wall at 0.0 s at (1.0, 0.3); at least 0.10 m required");
+  EXPECT_TRUE(run(c, straight(1, 0.34, 0.5, 1)).passed);
+}
+
+TEST(Judge, WallDistanceHeldForAFractionAfterSettling) {
+  const Criterion c{.kind = Kind::WallDistance, .distance = 0.5, .tolerance = 0.05, .fraction = 0.8, .after = 1.0};
+  // 0.73 m from the wall: 0.5 m from the body's surface, all the time.
+  EXPECT_TRUE(run(c, straight(1, 0.73, 0.3, 10)).passed);
+  // Drifting away: y = 0.73 + 0.02 t, within 0.05 m up to 2.5 s: 16 of the 91 steps from 1 s on.
+  Track drift{.name = "ada"};
+  for (int k = 0; k <= 100; ++k) drift.path.emplace_back(1 + 0.03 * k, 0.73 + 0.002 * k);
+  EXPECT_EQ(run(c, drift).reason,
+            "kept 0.50 ± 0.05 m from the wall for 18% of the time after 1.0 s; 80% required (furthest off: 0.20 m at 10.0 s at (4.0, 0.9))");
+}
+
+TEST(Judge, CoverageCountsTheFreeCellsItsCentreVisited) {
+  // Cells of 0.5 m: the centre fits in cells whose centre is 0.23 m clear of the walls, every cell
+  // of the 12 x 6 grid. A pass along y = 1.25 from x = 0.25 to 5.75 visits one row: 12 of 72.
+  const Criterion c{.kind = Kind::Coverage, .fraction = 0.2, .cell = 0.5};
+  EXPECT_EQ(run(c, straight(0.25, 1.25, 0.5, 11)).reason, "covered 17% of the floor it could reach (12 of 72 cells of 0.50 m); 20% required");
+  EXPECT_TRUE(run({.kind = Kind::Coverage, .fraction = 0.16, .cell = 0.5}, straight(0.25, 1.25, 0.5, 11)).passed);
+}
+
+TEST(Judge, RobotsApart) {
+  RunRecord r = room();
+  r.robots = {straight(1, 1.5, 0.5, 4, "ada"), straight(5, 1.5, -0.5, 4, "bob")};
+  // Their bodies touch when the centres are 0.46 m apart (after 3.54 s); 3.6 s is the first step
+  // at which they are less than the centimetre Box2D lets touching bodies overlap.
+  EXPECT_EQ(judge({.kind = Kind::RobotsApart}, r).reason, "ada and bob touched at 3.6 s at (3.0, 1.5)");
+  r.robots[1] = straight(5, 2.5, -0.5, 4, "bob");  // a metre apart sideways
+  EXPECT_TRUE(judge({.kind = Kind::RobotsApart}, r).passed);
+}
+
+TEST(Judge, PathRatioAgainstTheShortestPathAroundAWall) {
+  RunRecord r = room();
+  // A wall from the floor to y = 2 at x = 3 between the start (1, 1) and the goal (5, 1).
+  r.walls.insert(r.walls.begin(), worlds::segmentWall({3, 0}, {3, 2}));
+  r.points = {{"goal", {5.0, 1.0}}};
+  // The long way: up to y = 2.7, across, and down: 1.7 + 4 + 1.7 = 7.4 m (7.17 m until 0.23 m short).
+  Track t{.name = "ada"};
+  for (int k = 0; k <= 34; ++k) t.path.emplace_back(1, 1 + 0.05 * k);
+  for (int k = 1; k <= 80; ++k) t.path.emplace_back(1 + 0.05 * k, 2.7);
+  for (int k = 1; k <= 34; ++k) t.path.emplace_back(5, 2.7 - 0.05 * k);
+  const Verdict tight = run({.kind = Kind::PathRatio, .ratio = 1.2}, t, r);
+  ASSERT_FALSE(tight.passed);
+  // Round the wall's end with the body 0.23 m clear: 2 × |(2, 1.23)| = 4.70 m; the grader's path
+  // is straightened to within a few centimetres of it.
+  double travelled = 0, shortest = 0;
+  ASSERT_EQ(std::sscanf(tight.reason.c_str(), "drove %lf m to goal; the shortest path is %lf m", &travelled, &shortest), 2) << tight.reason;
+  EXPECT_NEAR(travelled, 7.2, 1e-9);  // stops at the first step within 0.23 m: (5, 1.2)
+  EXPECT_GE(shortest, 4.69);
+  EXPECT_LE(shortest, 4.76);
+  EXPECT_TRUE(run({.kind = Kind::PathRatio, .ratio = 1.6}, t, r).passed);
+}
+
+TEST(Judge, Bug1BoundCountsThePerimetersOfTheObstaclesMet) {
+  RunRecord r = room();
+  r.walls.insert(r.walls.begin(), worlds::rectangleWall({2.5, 0.5}, {3.5, 2.5}));  // 1 x 2 m block: perimeter 6 m
+  r.walls.insert(r.walls.begin(), worlds::circleWall({5.5, 2.5}, 0.2));            // far from the path: not met
+  r.points = {{"goal", {5.0, 1.5}}};
+  Track t{.name = "ada"};
+  for (int k = 0; k <= 40; ++k) t.path.emplace_back(1 + 0.05 * k, 1.5);  // to the block
+  t.path.emplace_back(5.0, 1.5);                                           // and a jump to the goal
+  // Drove 2 + 2 = 4 m (the jump included); the bound is 4 m direct + 1.5 × 6 m = 13 m.
+  EXPECT_TRUE(run({.kind = Kind::Bug1Bound}, t, r).passed);
+  // Dithering below the block: 1.20 m there, 399 jumps of 0.9 m, 3.23 m to the goal: 365.54 m.
+  for (int k = 0; k < 400; ++k) t.path.insert(t.path.end() - 1, k % 2 == 0 ? Point2(2.9, 0.3) : Point2(2.0, 0.3));
+  EXPECT_EQ(run({.kind = Kind::Bug1Bound}, t, r).reason,
+            "drove 365.54 m to goal; the BUG1 bound is 13.00 m (4.00 m direct + 1.5 × 6.00 m of perimeter of the 1 obstacles met)");
+}
+
+TEST(Judge, TheReturnedValueIsTheControllers) {
+  Track t = straight(1, 1.5, 0, 1);
+  EXPECT_EQ(run({.kind = Kind::Returns, .value = "true"}, t).reason, "its task never returned a value (reported by the controller)");
+  t.returned = "false";
+  EXPECT_EQ(run({.kind = Kind::Returns, .value = "true"}, t).reason, "its task returned false, not true (reported by the controller)");
+  t.returned = "true";
+  EXPECT_TRUE(run({.kind = Kind::Returns, .value = "true"}, t).passed);
+}
+
+TEST(Judge, EveryRobotMustMeetItAndTheOneThatFailsIsNamed) {
+  RunRecord r = room();
+  r.points = {{"goal_ada", {5.0, 1.5}}, {"goal_bob", {1.0, 2.5}}};
+  r.robots = {straight(1, 1.5, 0.5, 9, "ada"), straight(5, 2.5, -0.5, 9, "bob")};
+  const Criterion own{.kind = Kind::Goal, .point = "goal_{robot}", .distance = 0.2};
+  EXPECT_TRUE(judge(own, r).passed);
+  r.robots[1] = straight(5, 2.5, -0.5, 2, "bob");
+  EXPECT_EQ(judge(own, r).reason, "bob never came within 0.20 m of goal_bob (closest 3.00 m, at 2.0 s)");
+}
+
+}  // namespace
+}  // namespace frob::course

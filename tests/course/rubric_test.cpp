@@ -1,0 +1,133 @@
+// Rubric files: what they say, and one clear line naming the file, line and field for every mistake.
+#include "frob/course/rubric.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace frob::course {
+namespace {
+
+namespace fs = std::filesystem;
+using Kind = Criterion::Kind;
+
+// Writes `text` as rubric.toml (and a world file beside it) in a fresh folder; returns its path.
+fs::path rubricFile(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "rubric_test" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir / "worlds");
+  std::ofstream(dir / "worlds" / "room.toml") << "size = [4.0, 3.0]\n[[robot]]\nstart = [1.0, 1.0]\n";
+  std::ofstream(dir / "rubric.toml") << text;
+  return dir / "rubric.toml";
+}
+
+constexpr const char* kGood = R"(title = "Go to goal"
+seconds = 90
+
+[[check]]
+name = "reaches the goal"
+points = 4
+worlds = ["empty", "worlds/room.toml"]
+seeds = [1, 2]
+goal = { within = 0.2, by = 60 }
+collisions = { max = 0 }
+
+[[check]]
+name = "hidden fields"
+visibility = "hidden"
+points = 2.5
+worlds = ["obstacles"]
+secret_seeds = 3
+seconds = 120
+bug1_bound = { point = "goal" }
+returns = { value = true }
+)";
+
+TEST(Rubric, ReadsChecksWorldsSeedsAndCriteria) {
+  const fs::path file = rubricFile("good", kGood);
+  Result<Rubric> r = loadRubric(file);
+  ASSERT_TRUE(r.ok()) << r.error();
+  EXPECT_EQ(r.value().title, "Go to goal");
+  EXPECT_DOUBLE_EQ(r.value().points(), 6.5);
+  EXPECT_TRUE(r.value().needsSecret());
+  ASSERT_EQ(r.value().checks.size(), 2u);
+  const Check& a = r.value().checks[0];
+  EXPECT_EQ(a.name, "reaches the goal");
+  EXPECT_EQ(a.visibility, Visibility::Visible);
+  EXPECT_DOUBLE_EQ(a.seconds, 90);
+  ASSERT_EQ(a.worlds.size(), 2u);
+  EXPECT_TRUE(a.worlds[0].file.empty());  // a reference world
+  EXPECT_EQ(a.worlds[1].file, file.parent_path() / "worlds/room.toml");
+  EXPECT_EQ(a.seeds, (std::vector<std::uint64_t>{1, 2}));
+  ASSERT_EQ(a.criteria.size(), 2u);
+  EXPECT_EQ(a.criteria[0].kind, Kind::Goal);
+  EXPECT_DOUBLE_EQ(a.criteria[0].distance, 0.2);
+  EXPECT_DOUBLE_EQ(a.criteria[0].seconds, 60);
+  EXPECT_EQ(a.criteria[1].kind, Kind::Collisions);
+  const Check& b = r.value().checks[1];
+  EXPECT_EQ(b.visibility, Visibility::Hidden);
+  EXPECT_EQ(b.secretSeeds, 3);
+  EXPECT_EQ(b.criteria[1].value, "true");
+}
+
+TEST(Rubric, SecretSeedsDependOnTheSecretAndTheCheckOnly) {
+  Result<Rubric> r = loadRubric(rubricFile("seeds", kGood));
+  ASSERT_TRUE(r.ok()) << r.error();
+  const Check& hidden = r.value().checks[1];
+  const std::vector<std::uint64_t> a = seedsOf(hidden, "s3cret"), again = seedsOf(hidden, "s3cret"), other = seedsOf(hidden, "other");
+  ASSERT_EQ(a.size(), 3u);
+  EXPECT_EQ(a, again);
+  EXPECT_NE(a, other);
+  EXPECT_NE(a[0], a[1]);
+  EXPECT_EQ(seedsOf(r.value().checks[0], "s3cret"), (std::vector<std::uint64_t>{1, 2}));
+}
+
+struct Mistake {
+  std::string replace, with;  // an edit of kGood
+  std::string error;          // the whole message after "<file>:"
+};
+
+void PrintTo(const Mistake& m, std::ostream* os) { *os << m.with; }
+
+class RubricMistake : public ::testing::TestWithParam<Mistake> {};
+
+TEST_P(RubricMistake, IsOneLineNamingFileLineAndField) {
+  std::string text = kGood;
+  const std::size_t at = text.find(GetParam().replace);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, GetParam().replace.size(), GetParam().with);
+  // A folder of its own: ctest runs the cases at the same time.
+  const fs::path file = rubricFile("mistake_" + std::to_string(std::hash<std::string>{}(GetParam().with)), text);
+  Result<Rubric> r = loadRubric(file);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error(), file.string() + ":" + GetParam().error);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Rubric, RubricMistake,
+    ::testing::Values(
+        Mistake{"collisions = {", "colisions = {",
+                "10: check[0].colisions: unknown key: a check has name, points, visibility, worlds, seeds, secret_seeds, "
+                "seconds and criteria (goal, waypoints, stopped, collisions, clearance, wall_distance, coverage, robots_apart, "
+                "path_ratio, bug1_bound, returns)"},
+        Mistake{"within = 0.2, by", "withn = 0.2, by", "9: check[0].goal.withn: unknown key (expected one of within, by, point)"},
+        Mistake{"within = 0.2", "within = -1", "9: check[0].goal.within: must be positive"},
+        Mistake{"\"worlds/room.toml\"", "\"worlds/missing.toml\"",
+                "7: check[0].worlds[1]: 'worlds/missing.toml' is neither a reference world (see frob list) nor a file beside the rubric"},
+        Mistake{"visibility = \"hidden\"", "visibility = \"secret\"",
+                "14: check[1].visibility: expected \"visible\", \"hidden\" or \"after_due_date\""},
+        Mistake{"points = 4", "points = \"four\"", "6: check[0].points: expected a number"},
+        Mistake{"name = \"hidden fields\"", "name = \"reaches the goal\"", "12: check[1].name: 'reaches the goal' names two checks"},
+        Mistake{"goal = { within = 0.2, by = 60 }\ncollisions = { max = 0 }\n", "",
+                "4: check[0].name: check 'reaches the goal' has no criterion"},
+        Mistake{"seconds = 90", "seconds = [", "4: syntax error: Error while parsing value: could not determine value type"}));
+
+TEST(Rubric, AMissingFileIsNamed) {
+  Result<Rubric> r = loadRubric("/no/such/rubric.toml");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error(), "/no/such/rubric.toml: cannot open the rubric");
+}
+
+}  // namespace
+}  // namespace frob::course
