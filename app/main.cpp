@@ -1,5 +1,6 @@
 // The frob command line: thin, it parses arguments and calls the libraries.
 #include "frob/course/examples.hpp"
+#include "frob/course/generate.hpp"
 #include "frob/course/isolation.hpp"
 #include "frob/course/session.hpp"
 #include "frob/course/summary.hpp"
@@ -16,6 +17,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -173,6 +175,22 @@ int renderCommand(const std::string& worldName, const std::string& out, const st
   return 0;
 }
 
+// A generated world, written where asked.
+int generateCommand(const std::string& kindName, std::uint64_t seed, const std::string& out) {
+  const std::optional<course::WorldKind> kind = course::worldKind(kindName);
+  if (!kind) return fail("unknown kind of world '" + kindName + "': one of " + course::worldKindNames());
+  Result<worlds::WorldDef> world = course::generateWorld(*kind, seed);
+  if (!world) return fail(world.error());
+  if (Status s = render::checkWritable(out, "world"); !s) return fail(s.error());
+  std::ofstream file(render::partialPath(out));
+  file << course::toToml(world.value());
+  file.close();
+  if (!file) return fail(out + ": cannot write the world");
+  if (Status s = render::commitPartial(out, "world"); !s) return fail(s.error());
+  std::cout << "wrote " << out << ": " << world.value().description << "\n";
+  return 0;
+}
+
 int listCommand() {
   std::cout << "Worlds (frob run --world NAME, frob render NAME):\n";
   for (const worlds::WorldEntry& w : worlds::referenceWorlds()) std::printf("  %-10s %s\n", std::string(w.name).c_str(), std::string(w.description).c_str());
@@ -253,12 +271,22 @@ The rubric format and the instructors' guide: course/grading.md)");
   gradeCmd->add_option("--replay", grade.replay, "Replay a run's wheel log in the simulator and judge it again");
   gradeCmd->add_option("--gradescope-zip", grade.gradescopeZip, "Write the assignment's autograder zip for Gradescope");
 
+  std::string kind, worldOut;
+  std::uint64_t worldSeed = 1;
+  CLI::App* worldCmd = cli.add_subcommand("world", "Make worlds");
+  worldCmd->require_subcommand(1);
+  CLI::App* generateCmd = worldCmd->add_subcommand("generate", "Make a world of a kind from a seed, checked for what its kind promises");
+  generateCmd->add_option("kind", kind, "obstacles, maze, rooms or loop")->required();
+  generateCmd->add_option("--seed", worldSeed, "The seed: the same kind and seed make the same world everywhere")->capture_default_str();
+  generateCmd->add_option("--out", worldOut, "The world file to write (TOML)")->required();
+
   CLI::App* listCmd = cli.add_subcommand("list", "List the reference worlds and the course examples");
 
   CLI11_PARSE(cli, argc, argv);
   if (runCmd->parsed()) return frob::app::runCommand(run);
   if (renderCmd->parsed()) return frob::app::renderCommand(renderWorld, renderOut, renderSize);
   if (gradeCmd->parsed()) return frob::app::gradeCommand(grade);
+  if (generateCmd->parsed()) return frob::app::generateCommand(kind, worldSeed, worldOut);
   if (listCmd->parsed()) return frob::app::listCommand();
   std::cout << cli.help();
   return 0;

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace frob::course {
@@ -17,13 +18,6 @@ namespace frob::course {
 namespace fs = std::filesystem;
 
 namespace {
-
-// A world as the rubric names it: a reference world, or a file beside the rubric.
-Result<worlds::WorldDef> loadWorldRef(const WorldRef& w) {
-  worlds::Loaded<worlds::WorldDef> loaded = w.file.empty() ? worlds::loadReferenceWorld(w.name) : worlds::loadWorld(w.file);
-  if (!loaded) return Status::failure(loaded.error);
-  return *loaded;
-}
 
 // What a run made: the grader's record of it, and the wheels applied at every step.
 struct Ran {
@@ -112,6 +106,7 @@ void writeLog(const fs::path& path, const Rubric& rubric, const Check& check, co
   std::fprintf(f, "frob-replay 1\nrubric %s\ncheck %s\nworld %s\nseed %" PRIu64 "\nsteps %zu\nrobots %zu\n",
                fs::absolute(rubric.file).c_str(), check.name.c_str(), world.name.c_str(), seed, ran.wheels.size(),
                ran.record.robots.size());
+  if (world.generated) std::fprintf(f, "generated %s %" PRIu64 "\n", toString(*world.generated), world.worldSeed);
   for (std::size_t i = 0; i < ran.record.robots.size(); ++i) {
     const Track& t = ran.record.robots[i];
     if (!t.failure.empty()) std::fprintf(f, "failure %zu %s\n", i, t.failure.c_str());
@@ -160,7 +155,7 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
     if (def.visibleOnly && check.visibility != Visibility::Visible) continue;
     CheckGrade cg{.name = check.name, .points = check.points, .visibility = check.visibility};
     const std::vector<std::uint64_t> seeds = seedsOf(check, def.secret);
-    for (const WorldRef& w : check.worlds) {
+    for (const WorldRef& w : worldsOf(check, def.secret)) {
       auto [known, added] = worldsByName.try_emplace(w.name, Status());
       if (added) known->second = loadWorldRef(w);
       const Result<worlds::WorldDef>& world = known->second;
@@ -208,6 +203,7 @@ Result<Replay> replay(const fs::path& log) {
   if (!in) return Status::failure(log.string() + ": cannot open the log");
   const auto bad = [&](const std::string& what) { return Status::failure(log.string() + ": not a wheel log of frob grade (" + what + ")"); };
   std::string line, rubricFile, checkName, worldName;
+  std::optional<WorldRef> generated;
   std::uint64_t seed = 0;
   std::size_t steps = 0, robots = 0;
   std::vector<std::pair<std::size_t, std::string>> failures, returned;
@@ -221,6 +217,12 @@ Result<Replay> replay(const fs::path& log) {
     else if (key == "seed") seed = std::stoull(value);
     else if (key == "steps") steps = std::stoull(value);
     else if (key == "robots") robots = std::stoull(value);
+    else if (key == "generated") {
+      const std::size_t gap = value.find(' ');
+      const std::optional<WorldKind> kind = worldKind(value.substr(0, gap));
+      if (!kind || gap == std::string::npos) return bad("line '" + line + "'");
+      generated = WorldRef{.generated = kind, .worldSeed = std::stoull(value.substr(gap + 1))};
+    }
     else if (key == "failure" || key == "returned") {
       const std::size_t gap = value.find(' ');
       (key == "failure" ? failures : returned).emplace_back(std::stoull(value.substr(0, gap)), value.substr(gap + 1));
@@ -246,9 +248,10 @@ Result<Replay> replay(const fs::path& log) {
   if (!rubric) return rubric.status();
   const auto check = std::find_if(rubric.value().checks.begin(), rubric.value().checks.end(), [&](const Check& c) { return c.name == checkName; });
   if (check == rubric.value().checks.end()) return Status::failure(rubricFile + ": has no check '" + checkName + "' any more");
+  // A generated world comes back from its kind and seed (a hidden one's seed is the secret's, not in the rubric).
   const auto ref = std::find_if(check->worlds.begin(), check->worlds.end(), [&](const WorldRef& w) { return w.name == worldName; });
-  if (ref == check->worlds.end()) return Status::failure(rubricFile + ": check '" + checkName + "' has no world '" + worldName + "' any more");
-  Result<worlds::WorldDef> world = loadWorldRef(*ref);
+  if (!generated && ref == check->worlds.end()) return Status::failure(rubricFile + ": check '" + checkName + "' has no world '" + worldName + "' any more");
+  Result<worlds::WorldDef> world = loadWorldRef(generated ? *generated : *ref);
   if (!world) return world.status();
   if (world.value().robots.size() != robots) return bad("the world now has another number of robots");
 

@@ -71,15 +71,16 @@ Status filmRun(const GradeDef& def, const fs::path& submission, const std::strin
                const RunOutputs& outputs) {
   const auto check = std::find_if(def.rubric.checks.begin(), def.rubric.checks.end(), [&](const Check& c) { return c.name == checkName; });
   if (check == def.rubric.checks.end()) return Status::failure("no check '" + checkName + "'");
-  const auto ref = std::find_if(check->worlds.begin(), check->worlds.end(), [&](const WorldRef& w) { return w.name == run.world; });
-  if (ref == check->worlds.end()) return Status::failure("no world '" + run.world + "' in check '" + checkName + "'");
-  worlds::Loaded<worlds::WorldDef> world = ref->file.empty() ? worlds::loadReferenceWorld(ref->name) : worlds::loadWorld(ref->file);
-  if (!world) return Status::failure(world.error);
+  const std::vector<WorldRef> all = worldsOf(*check, def.secret);
+  const auto ref = std::find_if(all.begin(), all.end(), [&](const WorldRef& w) { return w.name == run.world; });
+  if (ref == all.end()) return Status::failure("no world '" + run.world + "' in check '" + checkName + "'");
+  Result<worlds::WorldDef> world = loadWorldRef(*ref);
+  if (!world) return world.status();
   Result<CompiledController> compiled = compileControllerFile(submission, def.compiler);
   if (!compiled) return compiled.status();
   Result<LoadedController> controller = describeInHost(compiled.value(), def.isolation);
   if (!controller) return controller.status();
-  Result<Summary> s = runSession({.world = *world, .worldName = run.world, .options = {.dt = def.rubric.dt, .seed = run.seed},
+  Result<Summary> s = runSession({.world = world.value(), .worldName = run.world, .options = {.dt = def.rubric.dt, .seed = run.seed},
                                   .controllers = {controller.value()}, .isolation = def.isolation, .seconds = check->seconds,
                                   .outputs = outputs});
   if (!s) return s.status();

@@ -73,14 +73,14 @@ class RubricReader : worlds::TomlReader {
 
   bool readCheck(const toml::table& t, const std::string& field, Check& c) {
     for (auto&& [k, v] : t) {
-      static constexpr std::string_view own[] = {"name", "points", "visibility", "worlds", "seeds", "secret_seeds", "seconds"};
+      static constexpr std::string_view own[] = {"name", "points", "visibility", "worlds", "generated", "seeds", "secret_seeds", "seconds"};
       if (std::find(std::begin(own), std::end(own), k.str()) != std::end(own)) continue;
       const auto spec = std::find_if(std::begin(kCriteria), std::end(kCriteria), [&](const CriterionSpec& s) { return s.key == k.str(); });
       if (spec == std::end(kCriteria)) {
         std::string list;
         for (const CriterionSpec& s : kCriteria) list += (list.empty() ? "" : ", ") + std::string(s.key);
         return fail(static_cast<int>(k.source().begin.line), field + std::string(k.str()),
-                    "unknown key: a check has name, points, visibility, worlds, seeds, secret_seeds, seconds and criteria (" + list + ")");
+                    "unknown key: a check has name, points, visibility, worlds, generated, seeds, secret_seeds, seconds and criteria (" + list + ")");
       }
       const toml::table* params = table(v, field + std::string(k.str()));
       if (params == nullptr) return false;
@@ -106,18 +106,37 @@ class RubricReader : worlds::TomlReader {
       else if (text == "after_due_date") c.visibility = Visibility::AfterDueDate;
       else return fail(*v, field + "visibility", "expected \"visible\", \"hidden\" or \"after_due_date\"");
     }
-    if (!readWorlds(t, field, c) || !readSeeds(t, field, c)) return false;
+    if (!readGenerated(t, field, c) || !readWorlds(t, field, c) || !readSeeds(t, field, c)) return false;
     if (c.criteria.empty()) return fail(c.line, field + "name", "check '" + c.name + "' has no criterion");
     // In the order written (TOML tables list their keys sorted): the first that fails gives the reason.
     std::stable_sort(c.criteria.begin(), c.criteria.end(), [](const Criterion& a, const Criterion& b) { return a.line < b.line; });
     return true;
   }
 
+  bool readGenerated(const toml::table& t, const std::string& field, Check& c) {
+    const toml::node* n = t.get("generated");
+    if (n == nullptr) return true;
+    const toml::table* g = table(*n, field + "generated");
+    if (g == nullptr || !onlyKeys(*g, field + "generated.", {"kind", "seeds", "secret"})) return false;
+    GeneratedWorlds gen;
+    std::string kind;
+    const toml::node* k = g->get("kind");
+    if (k == nullptr) return fail(*n, field + "generated.kind", "missing (one of " + worldKindNames() + ")");
+    if (!string(*k, field + "generated.kind", kind)) return false;
+    if (!worldKind(kind)) return fail(*k, field + "generated.kind", "unknown kind '" + kind + "' (one of " + worldKindNames() + ")");
+    gen.kind = *worldKind(kind);
+    if (!seedList(*g, "seeds", field + "generated.seeds", gen.seeds) || !optInteger(*g, "secret", field + "generated.secret", 0, 1000, gen.secret)) return false;
+    if (gen.seeds.empty() && gen.secret == 0) return fail(*n, field + "generated", "give seeds, or a number of secret ones");
+    c.generated = gen;
+    return true;
+  }
+
   bool readWorlds(const toml::table& t, const std::string& field, Check& c) {
     const toml::node* n = t.get("worlds");
+    if (n == nullptr && c.generated) return true;
     const toml::array* list = n != nullptr ? n->as_array() : nullptr;
     if (list == nullptr || list->empty()) {
-      return fail(n != nullptr ? line(*n) : c.line, field + "worlds", "expected a list of reference worlds or world files");
+      return fail(n != nullptr ? line(*n) : c.line, field + "worlds", "expected a list of reference worlds or world files (or generated worlds)");
     }
     for (std::size_t i = 0; i < list->size(); ++i) {
       WorldRef w;
@@ -134,15 +153,18 @@ class RubricReader : worlds::TomlReader {
     return true;
   }
 
-  bool readSeeds(const toml::table& t, const std::string& field, Check& c) {
-    const toml::node* n = t.get("seeds");
+  bool readSeeds(const toml::table& t, const std::string& field, Check& c) { return seedList(t, "seeds", field + "seeds", c.seeds); }
+
+  // An optional list of non-negative integers.
+  bool seedList(const toml::table& t, std::string_view key, const std::string& field, std::vector<std::uint64_t>& out) {
+    const toml::node* n = t.get(key);
     if (n == nullptr) return true;
     const toml::array* list = n->as_array();
-    if (list == nullptr) return fail(*n, field + "seeds", "expected a list of seeds");
+    if (list == nullptr) return fail(*n, field, "expected a list of seeds");
     for (std::size_t i = 0; i < list->size(); ++i) {
       long long seed = 0;
-      if (!integer((*list)[i], field + "seeds[" + std::to_string(i) + "]", 0, std::numeric_limits<long long>::max(), seed)) return false;
-      c.seeds.push_back(static_cast<std::uint64_t>(seed));
+      if (!integer((*list)[i], field + "[" + std::to_string(i) + "]", 0, std::numeric_limits<long long>::max(), seed)) return false;
+      out.push_back(static_cast<std::uint64_t>(seed));
     }
     return true;
   }
@@ -210,7 +232,7 @@ double Rubric::points() const {
 }
 
 bool Rubric::needsSecret() const {
-  return std::any_of(checks.begin(), checks.end(), [](const Check& c) { return c.secretSeeds > 0; });
+  return std::any_of(checks.begin(), checks.end(), [](const Check& c) { return c.secretSeeds > 0 || (c.generated && c.generated->secret > 0); });
 }
 
 Result<Rubric> loadRubric(const fs::path& file) {
@@ -225,13 +247,38 @@ Result<Rubric> loadRubric(const fs::path& file) {
   }
 }
 
+namespace {
+// The k-th seed of `what` in `check` from the secret: reproducible for the instructor, unguessable
+// without the secret (at most 2^63 - 1, as a rubric's seeds).
+std::uint64_t secretSeed(const std::string& secret, const std::string& what, const Check& check, int k) {
+  return worlds::Fnv1a().add(std::string_view(secret + "\n" + what + check.name + "\n" + std::to_string(k))).value() >> 1;
+}
+}  // namespace
+
 std::vector<std::uint64_t> seedsOf(const Check& check, const std::string& secret) {
   std::vector<std::uint64_t> seeds = check.seeds;
-  for (int k = 0; k < check.secretSeeds; ++k) {
-    // Reproducible for the instructor, unguessable without the secret (a seed is at most 2^63 - 1).
-    seeds.push_back(worlds::Fnv1a().add(std::string_view(secret + "\n" + check.name + "\n" + std::to_string(k))).value() >> 1);
-  }
+  for (int k = 0; k < check.secretSeeds; ++k) seeds.push_back(secretSeed(secret, "", check, k));
   return seeds;
+}
+
+std::vector<WorldRef> worldsOf(const Check& check, const std::string& secret) {
+  std::vector<WorldRef> all = check.worlds;
+  if (!check.generated) return all;
+  const GeneratedWorlds& g = *check.generated;
+  const std::string kind = toString(g.kind);
+  for (std::uint64_t seed : g.seeds) all.push_back({.name = "generated " + kind + ", seed " + std::to_string(seed), .generated = g.kind, .worldSeed = seed});
+  for (int k = 0; k < g.secret; ++k) {
+    all.push_back({.name = "generated " + kind + ", hidden world " + std::to_string(k + 1), .generated = g.kind,
+                   .worldSeed = secretSeed(secret, "world\n", check, k)});
+  }
+  return all;
+}
+
+Result<worlds::WorldDef> loadWorldRef(const WorldRef& w) {
+  if (w.generated) return generateWorld(*w.generated, w.worldSeed);
+  worlds::Loaded<worlds::WorldDef> loaded = w.file.empty() ? worlds::loadReferenceWorld(w.name) : worlds::loadWorld(w.file);
+  if (!loaded) return Status::failure(loaded.error);
+  return *loaded;
 }
 
 const char* toString(Visibility v) {

@@ -50,6 +50,14 @@ points = 1
 visibility = "after_due_date"
 worlds = ["worlds/field.toml"]
 returns = { value = true }
+
+[[check]]
+name = "survives generated rooms"
+points = 1
+visibility = "hidden"
+seconds = 5
+generated = { kind = "rooms", seeds = [3], secret = 1 }
+collisions = { max = 1000 }
 )";
 
 // Drives ahead until odometry says x > 4.8, then returns true (and the robot stops).
@@ -96,12 +104,14 @@ class Grading : public ::testing::Test {
 TEST_F(Grading, AGoodSubmissionGetsFullMarks) {
   const Grade g = grade(def_, dir_ / "good.cpp");
   EXPECT_EQ(g.compileError, "");
-  ASSERT_EQ(g.checks.size(), 3u);
+  ASSERT_EQ(g.checks.size(), 4u);
   for (const CheckGrade& c : g.checks) EXPECT_EQ(c.output(), "") << c.name;
   EXPECT_EQ(g.checks[0].runs.size(), 2u);  // two seeds
   EXPECT_EQ(g.checks[1].runs.size(), 1u);  // one secret seed
-  EXPECT_DOUBLE_EQ(g.score(), 7.0);
-  EXPECT_DOUBLE_EQ(g.maxScore(), 7.0);
+  ASSERT_EQ(g.checks[3].runs.size(), 2u);  // two generated worlds, one of them the secret's
+  EXPECT_EQ(g.checks[3].runs[1].world, "generated rooms, hidden world 1");
+  EXPECT_DOUBLE_EQ(g.score(), 8.0);
+  EXPECT_DOUBLE_EQ(g.maxScore(), 8.0);
 }
 
 TEST_F(Grading, ACrashFailsEveryRunWithItsReasonAndNothingElse) {
@@ -182,7 +192,7 @@ TEST_F(Grading, EveryRunsLogReplaysToTheSameVerdictBitForBit) {
       }
     }
   }
-  EXPECT_EQ(failed, 6);  // the good one late in both seeds; the crash in all four runs
+  EXPECT_EQ(failed, 8);  // the good one late in both seeds; the crash in all six runs
 }
 
 TEST(Replay, ALogThatIsNotOneSaysSo) {

@@ -108,7 +108,7 @@ INSTANTIATE_TEST_SUITE_P(
     Rubric, RubricMistake,
     ::testing::Values(
         Mistake{"collisions = {", "colisions = {",
-                "10: check[0].colisions: unknown key: a check has name, points, visibility, worlds, seeds, secret_seeds, "
+                "10: check[0].colisions: unknown key: a check has name, points, visibility, worlds, generated, seeds, secret_seeds, "
                 "seconds and criteria (goal, waypoints, stopped, collisions, clearance, wall_distance, coverage, robots_apart, "
                 "path_ratio, bug1_bound, returns)"},
         Mistake{"within = 0.2, by", "withn = 0.2, by", "9: check[0].goal.withn: unknown key (expected one of within, by, point)"},
@@ -122,6 +122,31 @@ INSTANTIATE_TEST_SUITE_P(
         Mistake{"goal = { within = 0.2, by = 60 }\ncollisions = { max = 0 }\n", "",
                 "4: check[0].name: check 'reaches the goal' has no criterion"},
         Mistake{"seconds = 90", "seconds = [", "4: syntax error: Error while parsing value: could not determine value type"}));
+
+TEST(Rubric, GeneratedWorldsFromSeedsAndFromTheSecret) {
+  const fs::path file = rubricFile("generated", R"(title = "Fields"
+[[check]]
+name = "fields"
+generated = { kind = "obstacles", seeds = [4], secret = 2 }
+goal = { within = 0.5 }
+)");
+  Result<Rubric> r = loadRubric(file);
+  ASSERT_TRUE(r.ok()) << r.error();
+  EXPECT_TRUE(r.value().needsSecret());
+  const std::vector<WorldRef> worlds = worldsOf(r.value().checks[0], "s3cret");
+  ASSERT_EQ(worlds.size(), 3u);
+  EXPECT_EQ(worlds[0].name, "generated obstacles, seed 4");
+  EXPECT_EQ(worlds[0].worldSeed, 4u);
+  EXPECT_EQ(worlds[1].name, "generated obstacles, hidden world 1");  // the name does not give the seed away
+  EXPECT_NE(worlds[1].worldSeed, worldsOf(r.value().checks[0], "other")[1].worldSeed);
+  EXPECT_EQ(worlds[1].worldSeed, worldsOf(r.value().checks[0], "s3cret")[1].worldSeed);
+  Result<worlds::WorldDef> w = loadWorldRef(worlds[0]);
+  ASSERT_TRUE(w.ok()) << w.error();
+  EXPECT_EQ(toToml(w.value()), toToml(generateWorld(WorldKind::Obstacles, 4).value()));
+
+  const fs::path bad = rubricFile("generated_bad", "[[check]]\nname = \"x\"\ngenerated = { kind = \"forest\", seeds = [1] }\nstopped = {}\n");
+  EXPECT_EQ(loadRubric(bad).error(), bad.string() + ":3: check[0].generated.kind: unknown kind 'forest' (one of obstacles, maze, rooms, loop)");
+}
 
 TEST(Rubric, AMissingFileIsNamed) {
   Result<Rubric> r = loadRubric("/no/such/rubric.toml");

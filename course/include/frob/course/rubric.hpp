@@ -4,6 +4,7 @@
 /// vocabulary that the grader computes from the true trajectory. The format is described in
 /// course/grading.md.
 
+#include "frob/course/generate.hpp"
 #include "frob/render/result.hpp"
 
 #include <cstdint>
@@ -52,10 +53,19 @@ struct Criterion {
   int line = 0;              ///< where the rubric gives it
 };
 
-/// A world a check runs in: a reference world's name, or a file relative to the rubric's folder.
+/// A world a check runs in: a reference world, a file beside the rubric, or a generated world.
 struct WorldRef {
-  std::string name;             ///< as the rubric gives it
-  std::filesystem::path file;   ///< the file, when it is not a reference world
+  std::string name;                     ///< as reports name it: "maze", "worlds/room.toml", "generated maze, seed 3"
+  std::filesystem::path file;           ///< the file, when it is not a reference world
+  std::optional<WorldKind> generated;   ///< the kind, when it is generated
+  std::uint64_t worldSeed = 0;          ///< the generator's seed, when it is generated
+};
+
+/// The worlds a check generates: of one kind, from given seeds and from seeds of the instructor's secret.
+struct GeneratedWorlds {
+  WorldKind kind = WorldKind::Obstacles;
+  std::vector<std::uint64_t> seeds;
+  int secret = 0;                       ///< how many more, drawn from the secret (named without their seed)
 };
 
 /// One check: points for meeting every criterion, in every world with every seed.
@@ -63,7 +73,8 @@ struct Check {
   std::string name;
   double points = 1.0;
   Visibility visibility = Visibility::Visible;
-  std::vector<WorldRef> worlds;
+  std::vector<WorldRef> worlds;       ///< the worlds it names (worldsOf() adds the generated ones)
+  std::optional<GeneratedWorlds> generated;
   std::vector<std::uint64_t> seeds;   ///< simulation seeds; empty: each world's own
   int secretSeeds = 0;                ///< more seeds, drawn from the instructor's secret
   double seconds = 60.0;              ///< simulated seconds of each run
@@ -79,7 +90,7 @@ struct Rubric {
   std::vector<Check> checks;
   /// Total points.
   [[nodiscard]] double points() const;
-  /// True when some check draws seeds from the instructor's secret.
+  /// True when some check draws seeds or worlds from the instructor's secret.
   [[nodiscard]] bool needsSecret() const;
 };
 
@@ -89,6 +100,10 @@ struct Rubric {
 
 /// The seeds a check runs with: its own, then `secretSeeds` derived from `secret` and the check's name.
 [[nodiscard]] std::vector<std::uint64_t> seedsOf(const Check& check, const std::string& secret);
+/// The worlds a check runs in: those it names, then those it generates (the secret's from `secret`).
+[[nodiscard]] std::vector<WorldRef> worldsOf(const Check& check, const std::string& secret);
+/// A world of a check, loaded or generated.
+[[nodiscard]] Result<worlds::WorldDef> loadWorldRef(const WorldRef& world);
 
 /// Readable name of a visibility, as Gradescope spells it ("visible", "hidden", "after_due_date").
 [[nodiscard]] const char* toString(Visibility v);

@@ -1,0 +1,271 @@
+#include "frob/course/generate.hpp"
+
+#include "free_space.hpp"
+
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+
+namespace frob::course {
+
+using worlds::WallDef;
+using worlds::WorldDef;
+
+namespace {
+
+constexpr double kRadius = 0.23;     // the Nomad's body, which the promises are kept for
+constexpr double kClearance = 0.1;   // around the body at the start and the goal
+
+// SplitMix64, with reals from the top 53 bits: the same numbers from every standard library.
+class Random {
+ public:
+  explicit Random(std::uint64_t seed) : state_(seed) {}
+  std::uint64_t next() {
+    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  }
+  double uniform(double lo, double hi) { return lo + (hi - lo) * static_cast<double>(next() >> 11) * 0x1p-53; }
+  int integer(int lo, int hi) { return lo + static_cast<int>(next() % static_cast<std::uint64_t>(hi - lo + 1)); }
+
+ private:
+  std::uint64_t state_;
+};
+
+// A length or coordinate to the millimetre, so that the world file reads back exactly.
+double mm(double v) { return std::round(v * 1000.0) / 1000.0; }
+void snap(Point2& p) { p = {mm(p.x()), mm(p.y())}; }
+void snap(WorldDef& w) {
+  snap(w.size);
+  for (worlds::NamedPoint& p : w.points) snap(p.position);
+  for (worlds::RobotDef& r : w.robots) snap(r.start.position);
+  for (WallDef& wall : w.walls) {
+    for (Point2& p : wall.points) snap(p);
+    wall.radius = mm(wall.radius);
+  }
+}
+
+WorldDef base(const char* what, const Vec2& size, std::uint64_t seed, const Point2& start, double headingDeg, const Point2& goal) {
+  WorldDef w{.description = what, .size = size, .seed = seed};
+  w.points.push_back({"goal", goal});
+  w.robots.push_back({.name = "nomad", .start = {.position = start, .heading = headingDeg * pi / 180.0}});
+  return w;
+}
+
+// The walls of `w` with its enclosure, as the simulator builds them.
+std::vector<WallDef> allWalls(const WorldDef& w) {
+  std::vector<WallDef> all = w.walls;
+  if (w.enclosed) {
+    const Point2 a(0, 0), b(w.size.x(), 0), c = w.size, d(0, w.size.y());
+    for (auto [p, q] : {std::pair{a, b}, {b, c}, {c, d}, {d, a}}) all.push_back(worlds::segmentWall(p, q));
+  }
+  return all;
+}
+
+// The promises of every kind: clearance at the start and the goal, and a way between them.
+bool keepsPromises(const WorldDef& w) {
+  const std::vector<WallDef> walls = allWalls(w);
+  const WallIndex index(walls, w.size, 1.0);
+  const Point2 start = w.robots.front().start.position, goal = w.points.front().position;
+  if (index.distance(start) < kRadius + kClearance || index.distance(goal) < kRadius + kClearance) return false;
+  const FreeGrid grid(walls, w.size, kRadius, 0.05);
+  return grid.reachable(grid.cellOf(start))[grid.cellOf(goal)];
+}
+
+// Nearest distance between two walls (0 when they touch or overlap), sampled along the edges of `a`.
+double gapBetween(const WallDef& a, const WallDef& b) {
+  if (a.shape == worlds::WallShape::Circle) return std::max(0.0, worlds::distanceToWall(a.points[0], b) - a.radius);
+  double d = INFINITY;
+  const auto edge = [&](const Point2& p, const Point2& q) {
+    for (int i = 0; i <= 40; ++i) d = std::min(d, worlds::distanceToWall(p + (q - p) * (i / 40.0), b));
+  };
+  const auto& v = a.points;
+  if (a.shape == worlds::WallShape::Rectangle) {
+    const Point2 c1(v[1].x(), v[0].y()), c3(v[0].x(), v[1].y());
+    edge(v[0], c1), edge(c1, v[1]), edge(v[1], c3), edge(c3, v[0]);
+    if (worlds::distanceToWall(b.points[0], a) == 0) d = 0;  // b inside a
+  } else {
+    for (std::size_t i = 0; i + 1 < v.size(); ++i) edge(v[i], v[i + 1]);
+  }
+  return d;
+}
+
+WorldDef obstacles(Random& r, std::uint64_t seed) {
+  WorldDef w = base("Generated obstacle field: blocks, pillars and a trap between the start and the goal", {15, 15}, seed,
+                    {1.5, 1.5}, 45, {13.5, 13.5});
+  const double apart = 2 * kRadius + 0.1;  // BUG can go round each obstacle on its own
+  std::vector<WallDef> placed;
+  if (r.next() % 2 == 0) {  // an L whose inside corner faces the start: the trap BUG must leave
+    const Point2 c = Point2(r.uniform(5.5, 9.5), r.uniform(5.5, 9.5));
+    const double s = r.uniform(1.2, 1.8);
+    placed.push_back(worlds::polylineWall({c + Point2(-s, s), c + Point2(s, s), c + Point2(s, -s)}));
+  }
+  const int count = r.integer(8, 14);
+  for (int attempt = 0; static_cast<int>(placed.size()) < count && attempt < 500; ++attempt) {
+    const Point2 c(r.uniform(2.0, 13.0), r.uniform(2.0, 13.0));
+    WallDef o;
+    if (r.next() % 3 == 0) {
+      o = worlds::circleWall(c, r.uniform(0.2, 0.6));
+    } else {
+      const Vec2 half(r.uniform(0.25, 1.0), r.uniform(0.25, 1.0));
+      o = worlds::rectangleWall(Point2(c - half), Point2(c + half));
+    }
+    const bool clearOfEnds = worlds::distanceToWall(w.robots[0].start.position, o) > 1.0 && worlds::distanceToWall(w.points[0].position, o) > 1.0;
+    const bool clearOfOthers = std::all_of(placed.begin(), placed.end(), [&](const WallDef& p) { return gapBetween(o, p) > apart && gapBetween(p, o) > apart; });
+    if (clearOfEnds && clearOfOthers) placed.push_back(o);
+  }
+  w.walls = placed;
+  return w;
+}
+
+WorldDef maze(Random& r, std::uint64_t seed) {
+  const int cols = r.integer(5, 8), rows = r.integer(5, 8);
+  constexpr double cell = 1.6;
+  WorldDef w = base("Generated perfect maze of 1.6 m cells", {cols * cell, rows * cell}, seed, {cell / 2, cell / 2}, 0,
+                    {(cols - 0.5) * cell, (rows - 0.5) * cell});
+  // Depth-first carving: every cell joined to the others by exactly one way.
+  std::vector<bool> seen(static_cast<std::size_t>(cols * rows), false), eastOpen(seen.size(), false), northOpen(seen.size(), false);
+  std::vector<int> stack{0};
+  seen[0] = true;
+  while (!stack.empty()) {
+    const int c = stack.back(), x = c % cols, y = c / cols;
+    std::vector<int> next;
+    if (x > 0 && !seen[c - 1]) next.push_back(c - 1);
+    if (x + 1 < cols && !seen[c + 1]) next.push_back(c + 1);
+    if (y > 0 && !seen[c - cols]) next.push_back(c - cols);
+    if (y + 1 < rows && !seen[c + cols]) next.push_back(c + cols);
+    if (next.empty()) {
+      stack.pop_back();
+      continue;
+    }
+    const int n = next[r.next() % next.size()];
+    if (n == c + 1) eastOpen[c] = true;
+    if (n == c - 1) eastOpen[n] = true;
+    if (n == c + cols) northOpen[c] = true;
+    if (n == c - cols) northOpen[n] = true;
+    seen[n] = true;
+    stack.push_back(n);
+  }
+  for (int y = 0; y < rows; ++y) {
+    for (int x = 0; x < cols; ++x) {
+      const int c = y * cols + x;
+      if (x + 1 < cols && !eastOpen[c]) w.walls.push_back(worlds::segmentWall(Point2((x + 1) * cell, y * cell), Point2((x + 1) * cell, (y + 1) * cell)));
+      if (y + 1 < rows && !northOpen[c]) w.walls.push_back(worlds::segmentWall(Point2(x * cell, (y + 1) * cell), Point2((x + 1) * cell, (y + 1) * cell)));
+    }
+  }
+  return w;
+}
+
+WorldDef rooms(Random& r, std::uint64_t seed) {
+  const double width = r.uniform(9, 12), height = r.uniform(7, 9);
+  const double split = r.uniform(0.4, 0.6) * width, across = r.uniform(0.4, 0.6) * height;
+  WorldDef w = base("Generated floor of rooms with doorways and furniture", {width, height}, seed, {1.0, 1.0}, 0,
+                    {width - 1.0, height - 1.0});
+  // A wall down the middle and one across each half, each with a doorway of 1.2 to 1.6 m.
+  const auto wallWithDoor = [&](const Point2& a, const Point2& b) {
+    const double length = (b - a).norm(), door = r.uniform(1.2, 1.6), at = r.uniform(0.6, length - door - 0.6);
+    const Vec2 u = (b - a) / length;
+    w.walls.push_back(worlds::segmentWall(a, Point2(a + u * at)));
+    w.walls.push_back(worlds::segmentWall(Point2(a + u * (at + door)), b));
+  };
+  wallWithDoor({split, 0}, {split, height});
+  wallWithDoor({0, across}, {split, across});
+  const double across2 = r.uniform(0.4, 0.6) * height;
+  wallWithDoor({split, across2}, {width, across2});
+  // Furniture: tables and pillars, more than the robot's diameter from each other and from walls.
+  for (int attempt = 0, pieces = r.integer(4, 8); pieces > 0 && attempt < 300; ++attempt) {
+    const Point2 c(r.uniform(0.8, width - 0.8), r.uniform(0.8, height - 0.8));
+    const WallDef o = r.next() % 2 == 0 ? worlds::circleWall(c, r.uniform(0.15, 0.35))
+                                        : worlds::rectangleWall(Point2(c - Vec2(0.4, 0.3)), Point2(c + Vec2(r.uniform(0.4, 0.8), 0.3)));
+    bool clear = worlds::distanceToWall(w.robots[0].start.position, o) > 0.8 && worlds::distanceToWall(w.points[0].position, o) > 0.8;
+    for (const WallDef& other : allWalls(w)) clear = clear && gapBetween(o, other) > 2 * kRadius + 0.1;
+    if (clear) w.walls.push_back(o), --pieces;
+  }
+  return w;
+}
+
+WorldDef loop(Random& r, std::uint64_t seed) {
+  const double width = r.uniform(10, 14), height = r.uniform(7, 10), corridor = r.uniform(1.2, 2.0);
+  WorldDef w = base("Generated corridor loop round a block, with convex and concave corners", {width, height}, seed,
+                    {width / 2, corridor / 2}, 0, {width / 2, height - corridor / 2});
+  // The block, as a closed outline with a notch in its bottom side (its concave corners).
+  const Point2 lo(corridor, corridor), hi(width - corridor, height - corridor);
+  const double notchAt = r.uniform(lo.x() + 1.0, hi.x() - 2.5), notchWidth = r.uniform(0.8, 1.5), notchDepth = r.uniform(0.5, 1.2);
+  w.walls.push_back(worlds::polylineWall({lo, Point2(notchAt, lo.y()), Point2(notchAt, lo.y() + notchDepth),
+                                          Point2(notchAt + notchWidth, lo.y() + notchDepth), Point2(notchAt + notchWidth, lo.y()),
+                                          Point2(hi.x(), lo.y()), hi, Point2(lo.x(), hi.y())},
+                                         true));
+  // Outer corners cut at 45 degrees on some sides: the corridor's convex corners become concave.
+  if (r.next() % 2 == 0) w.walls.push_back(worlds::segmentWall({0, corridor * 0.6}, {corridor * 0.6, 0}));
+  if (r.next() % 2 == 0) w.walls.push_back(worlds::segmentWall({width - corridor * 0.6, height}, {width, height - corridor * 0.6}));
+  return w;
+}
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", v);
+  return buf;
+}
+std::string point(const Point2& p) { return "[" + number(p.x()) + ", " + number(p.y()) + "]"; }
+
+}  // namespace
+
+std::optional<WorldKind> worldKind(std::string_view name) {
+  for (WorldKind k : {WorldKind::Obstacles, WorldKind::Maze, WorldKind::Rooms, WorldKind::Loop}) {
+    if (name == toString(k)) return k;
+  }
+  return std::nullopt;
+}
+
+const char* toString(WorldKind kind) {
+  switch (kind) {
+    case WorldKind::Obstacles: return "obstacles";
+    case WorldKind::Maze: return "maze";
+    case WorldKind::Rooms: return "rooms";
+    case WorldKind::Loop: return "loop";
+  }
+  return "?";
+}
+
+std::string worldKindNames() { return "obstacles, maze, rooms, loop"; }
+
+Result<WorldDef> generateWorld(WorldKind kind, std::uint64_t seed) {
+  const std::function<WorldDef(Random&, std::uint64_t)> make[] = {obstacles, maze, rooms, loop};
+  // Each attempt its own stream; the first world that keeps the promises is the one.
+  for (std::uint64_t attempt = 0; attempt < 100; ++attempt) {
+    Random random(seed * 0x100000001b3ULL + attempt);
+    WorldDef w = make[static_cast<int>(kind)](random, seed);
+    snap(w);
+    if (keepsPromises(w) && worlds::checkWorld(w).empty()) return w;
+  }
+  return Status::failure(std::string("no ") + toString(kind) + " world keeping its promises was found for seed " + std::to_string(seed));
+}
+
+std::string toToml(const WorldDef& w) {
+  std::string t = "# Made by frob world generate; the loader reads it back as it was made.\n";
+  t += "description = \"" + w.description + "\"\nsize = " + point(w.size) + "\nenclosed = " + (w.enclosed ? "true" : "false") +
+       "\nseed = " + std::to_string(w.seed) + "\n\n[points]\n";
+  for (const worlds::NamedPoint& p : w.points) t += p.name + " = " + point(p.position) + "\n";
+  for (const worlds::RobotDef& r : w.robots) {
+    t += "\n[[robot]]\nname = \"" + r.name + "\"\nstart = " + point(r.start.position) + "\nheading_deg = " + number(r.start.heading * 180.0 / pi) + "\n";
+  }
+  for (const WallDef& wall : w.walls) {
+    t += "\n[[wall]]\n";
+    switch (wall.shape) {
+      case worlds::WallShape::Segment: t += "from = " + point(wall.points[0]) + "\nto = " + point(wall.points[1]) + "\n"; break;
+      case worlds::WallShape::Rectangle: t += "rect = [" + point(wall.points[0]) + ", " + point(wall.points[1]) + "]\n"; break;
+      case worlds::WallShape::Circle: t += "circle = " + point(wall.points[0]) + "\nradius = " + number(wall.radius) + "\n"; break;
+      case worlds::WallShape::Polyline: {
+        t += "polyline = [";
+        for (std::size_t i = 0; i < wall.points.size(); ++i) t += (i ? ", " : "") + point(wall.points[i]);
+        t += std::string("]\n") + (wall.closed ? "closed = true\n" : "");
+        break;
+      }
+    }
+  }
+  return t;
+}
+
+}  // namespace frob::course

@@ -1,0 +1,148 @@
+// World generators: each kind keeps its promises for many seeds (checked here with brute-force
+// distances and a flood fill of our own, not the generator's), writes a file that loads back to
+// the same world, and the same kind and seed give the same world (golden hashes).
+#include "frob/course/generate.hpp"
+#include "frob/worlds/fnv.hpp"
+#include "frob/worlds/world_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+
+namespace frob::course {
+namespace {
+
+using worlds::WallDef;
+
+constexpr double kRadius = 0.23;
+
+std::vector<WallDef> withEnclosure(const worlds::WorldDef& w) {
+  std::vector<WallDef> all = w.walls;
+  const Point2 a(0, 0), b(w.size.x(), 0), c = w.size, d(0, w.size.y());
+  for (auto [p, q] : {std::pair{a, b}, {b, c}, {c, d}, {d, a}}) all.push_back(worlds::segmentWall(p, q));
+  return all;
+}
+
+double nearestWall(const std::vector<WallDef>& walls, const Point2& p) {
+  double d = INFINITY;
+  for (const WallDef& w : walls) d = std::min(d, worlds::distanceToWall(p, w));
+  return d;
+}
+
+// Whether the body can get from `a` to `b`: a flood fill over 10 cm cells whose centres keep the
+// body clear of every wall (a coarser, independent check of the generator's 5 cm one).
+bool reachable(const worlds::WorldDef& w, const Point2& a, const Point2& b) {
+  const std::vector<WallDef> walls = withEnclosure(w);
+  constexpr double cell = 0.1;
+  const int nx = static_cast<int>(w.size.x() / cell), ny = static_cast<int>(w.size.y() / cell);
+  const auto index = [&](const Point2& p) { return static_cast<int>(p.y() / cell) * nx + static_cast<int>(p.x() / cell); };
+  std::vector<int> state(static_cast<std::size_t>(nx * ny), 0);  // 0 unknown, 1 free and seen, 2 blocked
+  std::vector<int> stack{index(a)};
+  state[index(a)] = 1;
+  while (!stack.empty()) {
+    const int c = stack.back();
+    stack.pop_back();
+    if (c == index(b)) return true;
+    const int x = c % nx, y = c / nx;
+    for (auto [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+      const int X = x + dx, Y = y + dy, n = Y * nx + X;
+      if (X < 0 || Y < 0 || X >= nx || Y >= ny || state[n] != 0) continue;
+      state[n] = nearestWall(walls, Point2((X + 0.5) * cell, (Y + 0.5) * cell)) >= kRadius ? 1 : 2;
+      if (state[n] == 1) stack.push_back(n);
+    }
+  }
+  return false;
+}
+
+// The gap between two walls: the least, over a 2 cm grid, of the sum of the distances to both.
+double gap(const WallDef& a, const WallDef& b, const Vec2& size) {
+  double best = INFINITY;
+  for (double x = 0; x <= size.x(); x += 0.02) {
+    for (double y = 0; y <= size.y(); y += 0.02) best = std::min(best, worlds::distanceToWall({x, y}, a) + worlds::distanceToWall({x, y}, b));
+  }
+  return best;
+}
+
+class EveryKind : public ::testing::TestWithParam<WorldKind> {};
+
+TEST_P(EveryKind, KeepsItsPromisesForManySeeds) {
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    Result<worlds::WorldDef> w = generateWorld(GetParam(), seed);
+    ASSERT_TRUE(w.ok()) << w.error();
+    const worlds::WorldDef& world = w.value();
+    EXPECT_EQ(world.seed, seed);
+    const Point2 start = world.robots.at(0).start.position, goal = *worlds::findPoint(world, "goal");
+    EXPECT_GE(nearestWall(withEnclosure(world), start), kRadius + 0.1) << "seed " << seed;
+    EXPECT_GE(nearestWall(withEnclosure(world), goal), kRadius + 0.1) << "seed " << seed;
+    EXPECT_TRUE(reachable(world, start, goal)) << toString(GetParam()) << " seed " << seed;
+    EXPECT_EQ(worlds::checkWorld(world), "");
+  }
+}
+
+TEST_P(EveryKind, WritesAFileThatLoadsBackToTheSameWorld) {
+  const worlds::WorldDef made = generateWorld(GetParam(), 7).value();
+  worlds::Loaded<worlds::WorldDef> back = worlds::parseWorld(toToml(made), "made.toml");
+  ASSERT_TRUE(back.ok()) << back.error;
+  ASSERT_EQ(back->walls.size(), made.walls.size());
+  for (std::size_t i = 0; i < made.walls.size(); ++i) {
+    EXPECT_EQ(back->walls[i].shape, made.walls[i].shape) << i;
+    EXPECT_EQ(back->walls[i].points, made.walls[i].points) << i;  // exactly: coordinates are whole millimetres
+    EXPECT_EQ(back->walls[i].radius, made.walls[i].radius) << i;
+    EXPECT_EQ(back->walls[i].closed, made.walls[i].closed) << i;
+  }
+  EXPECT_EQ(back->points.at(0).position, made.points.at(0).position);
+  EXPECT_EQ(back->robots.at(0).start.position, made.robots.at(0).start.position);
+  EXPECT_EQ(back->seed, made.seed);
+  EXPECT_EQ(toToml(*back), toToml(made));
+}
+
+INSTANTIATE_TEST_SUITE_P(Generate, EveryKind, ::testing::Values(WorldKind::Obstacles, WorldKind::Maze, WorldKind::Rooms, WorldKind::Loop),
+                         [](const ::testing::TestParamInfo<WorldKind>& info) { return std::string(toString(info.param)); });
+
+TEST(Generate, ObstaclesAreMoreThanTheRobotsDiameterApart) {
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    const worlds::WorldDef w = generateWorld(WorldKind::Obstacles, seed).value();
+    ASSERT_GE(w.walls.size(), 8u);
+    for (std::size_t i = 0; i < w.walls.size(); ++i) {
+      for (std::size_t j = i + 1; j < w.walls.size(); ++j) {
+        EXPECT_GT(gap(w.walls[i], w.walls[j], w.size), 2 * kRadius + 0.1 - 0.03) << "seed " << seed << ": " << i << ", " << j;  // 2 cm grid
+      }
+    }
+  }
+}
+
+TEST(Generate, AMazeIsPerfect) {
+  // A perfect maze of C x R cells keeps all but C R - 1 of its inner walls: one way between any two cells.
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const worlds::WorldDef w = generateWorld(WorldKind::Maze, seed).value();
+    const int cols = static_cast<int>(std::lround(w.size.x() / 1.6)), rows = static_cast<int>(std::lround(w.size.y() / 1.6));
+    EXPECT_EQ(static_cast<int>(w.walls.size()), (cols - 1) * rows + cols * (rows - 1) - (cols * rows - 1)) << "seed " << seed;
+  }
+}
+
+TEST(Generate, TheSameKindAndSeedGiveTheSameWorld) {
+  // Golden hashes of the files, for this generator on every platform (it uses no library
+  // randomness and writes millimetres). A change to a generator changes them: say so in its commit.
+  const std::pair<WorldKind, std::uint64_t> golden[] = {{WorldKind::Obstacles, 0xc6da9590a03e1de5},
+                                                        {WorldKind::Maze, 0x8d6d1211bd3c238a},
+                                                        {WorldKind::Rooms, 0x6c928bc0cf02103b},
+                                                        {WorldKind::Loop, 0xddba8c29c890a141}};
+  for (const auto& [kind, hash] : golden) {
+    const std::string text = toToml(generateWorld(kind, 1).value());
+    EXPECT_EQ(text, toToml(generateWorld(kind, 1).value()));
+    const std::uint64_t actual = worlds::Fnv1a().add(std::string_view(text)).value();
+    EXPECT_EQ(actual, hash) << toString(kind) << ": actual 0x" << std::hex << actual;
+  }
+  EXPECT_NE(toToml(generateWorld(WorldKind::Obstacles, 1).value()), toToml(generateWorld(WorldKind::Obstacles, 2).value()));
+}
+
+TEST(Generate, KindsByName) {
+  EXPECT_EQ(worldKind("maze"), WorldKind::Maze);
+  EXPECT_EQ(worldKind("mazes"), std::nullopt);
+  EXPECT_EQ(worldKindNames(), "obstacles, maze, rooms, loop");
+}
+
+}  // namespace
+}  // namespace frob::course
