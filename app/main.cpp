@@ -1,6 +1,7 @@
 // The frob command line: thin, it parses arguments and calls the libraries.
 #include "frob/course/examples.hpp"
 #include "frob/course/generate.hpp"
+#include "frob/course/grade.hpp"
 #include "frob/course/isolation.hpp"
 #include "frob/course/session.hpp"
 #include "frob/course/summary.hpp"
@@ -201,6 +202,8 @@ int listCommand() {
     const std::string about = c ? c.value().entry.options.summary + " [" + c.value().entry.options.world + "]" : c.error();
     std::printf("  %-16s %s\n", e.name.c_str(), about.c_str());
   }
+  std::cout << "\nAssignments (frob grade NAME my.cpp --visible-only; handouts in assignments/NAME/handout.md):\n";
+  for (const course::Assignment& a : course::assignments()) std::printf("  %-16s %s\n", a.name.c_str(), a.title.c_str());
   return 0;
 }
 

@@ -60,6 +60,18 @@ std::vector<fs::path> shardOf(const std::vector<fs::path>& all, int i, int n) {
   return mine;
 }
 
+std::vector<Assignment> assignments() {
+  std::vector<Assignment> all;
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(FROB_ASSIGNMENTS_DIR, ec)) {
+    if (!fs::is_regular_file(e.path() / "rubric.toml")) continue;
+    Result<Rubric> r = loadRubric(e.path() / "rubric.toml");
+    all.push_back({e.path().filename().string(), r ? r.value().title : r.error(), e.path() / "rubric.toml"});
+  }
+  std::sort(all.begin(), all.end(), [](const Assignment& a, const Assignment& b) { return a.name < b.name; });
+  return all;
+}
+
 Result<fs::path> findRubric(const std::string& name) {
   for (const fs::path& candidate : {fs::path(name), fs::path(name) / "rubric.toml", fs::path(FROB_ASSIGNMENTS_DIR) / name / "rubric.toml"}) {
     if (fs::is_regular_file(candidate)) return candidate;

@@ -77,6 +77,15 @@ struct Grade {
 /// Shard `i` of `n` (1-based) of `all`: every n-th from the i-th, the same on every machine.
 [[nodiscard]] std::vector<std::filesystem::path> shardOf(const std::vector<std::filesystem::path>& all, int i, int n);
 
+/// One of the course's assignments (a folder of assignments/ with a rubric.toml).
+struct Assignment {
+  std::string name;              ///< its folder's name
+  std::string title;             ///< the rubric's title, or why the rubric cannot be read
+  std::filesystem::path rubric;
+};
+/// The course's assignments, by name.
+[[nodiscard]] std::vector<Assignment> assignments();
+
 /// An assignment's rubric: `name` under the course's assignments/ folder, a folder holding a
 /// rubric.toml, or a rubric file.
 [[nodiscard]] Result<std::filesystem::path> findRubric(const std::string& name);

@@ -1,0 +1,123 @@
+// frob grade from the command line: exit statuses, a class graded whole and in shards merged to
+// the same gradebook, replays of logged runs, generated worlds, and the assignments frob list shows.
+#include "run_frob.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace frob::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kRubric = R"(title = "Forward"
+seconds = 3
+[[check]]
+name = "goes forward"
+points = 2
+worlds = ["room.toml"]
+seeds = [1, 2]
+goal = { within = 0.4 }
+[[check]]
+name = "no bumps"
+worlds = ["room.toml"]
+collisions = { max = 0 }
+)";
+
+// Drives forward at `speed`: fast ones reach the goal 1 m ahead in 3 s, slow ones do not.
+std::string driver(const std::string& speed) {
+  return "#include <frob/frob.hpp>\nusing namespace frob;\nBehavior<Wheels> go(const Robot&) { return Wheels{" + speed +
+         ", 0.0}; }\nFROB_CONTROLLER(go)\n";
+}
+
+fs::path assignment(const std::string& name) {
+  const fs::path dir = freshFolder(name);
+  fs::create_directories(dir / "forward");
+  std::ofstream(dir / "forward" / "rubric.toml") << kRubric;
+  std::ofstream(dir / "forward" / "room.toml") << "size = [4.0, 3.0]\n[points]\ngoal = [2.0, 1.5]\n[[robot]]\nstart = [1.0, 1.5]\n";
+  return dir;
+}
+
+TEST(GradeCli, ARubricMistakeIsOneLineAndStatus2) {
+  const fs::path dir = assignment("grade_cli_mistake");
+  std::ofstream(dir / "forward" / "rubric.toml") << "[[check]]\nname = \"x\"\nworlds = [\"room.toml\"]\ngoal = { witihn = 1 }\n";
+  std::ofstream(dir / "sub.cpp") << driver("0.5");
+  const FrobResult r = runFrob(dir, {"grade", "forward", "sub.cpp"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "frob: forward/rubric.toml:4: check[0].goal.witihn: unknown key (expected one of within, by, point)\n");
+  EXPECT_EQ(runFrob(dir, {"grade", "nowhere", "sub.cpp"}).err,
+            "frob: unknown assignment 'nowhere': not a folder of assignments/ (see frob list), and no rubric.toml there\n");
+}
+
+TEST(GradeCli, ASubmissionThatFailsStillExitsZeroWithItsScore) {
+  const fs::path dir = assignment("grade_cli_one");
+  std::ofstream(dir / "slow.cpp") << driver("0.1");
+  const FrobResult r = runFrob(dir, {"grade", "forward", "slow.cpp", "--results", "r.json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(readFile(dir / "r.json"));
+  EXPECT_EQ(j["score"], 1.0);  // no bumps, but never near the goal
+  EXPECT_NE(r.out.find("never came within 0.40 m of goal"), std::string::npos) << r.out;
+}
+
+TEST(GradeCli, AClassInShardsMergesToTheWholeClassesGradebook) {
+  const fs::path dir = assignment("grade_cli_class");
+  fs::create_directories(dir / "class" / "dana");
+  std::ofstream(dir / "class" / "ann.cpp") << driver("0.5");
+  std::ofstream(dir / "class" / "ben.cpp") << driver("0.1");
+  std::ofstream(dir / "class" / "cat.cpp") << "not C++";
+  std::ofstream(dir / "class" / "dana" / "controller.cpp") << driver("0.5");
+  const FrobResult whole = runFrob(dir, {"grade", "forward", "class", "--jobs", "2", "--gradebook", "all.csv"});
+  ASSERT_EQ(whole.status, 0) << whole.err;
+  for (int shard : {1, 2}) {
+    const std::string n = std::to_string(shard);
+    ASSERT_EQ(runFrob(dir, {"grade", "forward", "class", "--shard", n + "/2", "--gradebook", "s" + n + ".csv"}).status, 0);
+  }
+  const FrobResult merged = runFrob(dir, {"grade", "--merge", "s1.csv", "s2.csv", "--gradebook", "merged.csv"});
+  ASSERT_EQ(merged.status, 0) << merged.err;
+  EXPECT_EQ(merged.out, "merged 4 submissions into merged.csv\n");
+  EXPECT_EQ(readFile(dir / "merged.csv"), readFile(dir / "all.csv"));
+  const std::string csv = readFile(dir / "all.csv");
+  EXPECT_NE(csv.find("class/ann.cpp,3,3"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("class/ben.cpp,1,3"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("class/cat.cpp,0,3"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("class/dana/controller.cpp,3,3"), std::string::npos) << csv;
+  EXPECT_EQ(runFrob(dir, {"grade", "forward", "class", "--shard", "3/2"}).status, 2);
+}
+
+TEST(GradeCli, AReplayFromTheCommandLineGivesTheVerdictAndHashAgain) {
+  const fs::path dir = assignment("grade_cli_replay");
+  std::ofstream(dir / "slow.cpp") << driver("0.1");
+  ASSERT_EQ(runFrob(dir, {"grade", "forward", "slow.cpp", "--logs", "logs"}).status, 0);
+  const FrobResult r = runFrob(dir, {"grade", "--replay", "logs/goes_forward__room__1.log"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("check goes forward, world room.toml, seed 1: FAILED: never came within 0.40 m of goal", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("trajectory "), std::string::npos);
+}
+
+TEST(WorldGenerate, WritesAWorldThatRuns) {
+  const fs::path dir = freshFolder("world_generate");
+  const FrobResult made = runFrob(dir, {"world", "generate", "maze", "--seed", "4", "--out", "m.toml"});
+  ASSERT_EQ(made.status, 0) << made.err;
+  EXPECT_EQ(made.out, "wrote m.toml: Generated perfect maze of 1.6 m cells\n");
+  EXPECT_EQ(runFrob(dir, {"run", "bug", "--world", "m.toml", "--seconds", "1", "--quiet"}).status, 0);
+  EXPECT_EQ(runFrob(dir, {"world", "generate", "forest", "--out", "f.toml"}).err,
+            "frob: unknown kind of world 'forest': one of obstacles, maze, rooms, loop\n");
+}
+
+TEST(FrobList, NamesEveryAssignmentWithItsTitle) {
+  const FrobResult r = runFrob(freshFolder("list_assignments"), {"list"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string listed = r.out.substr(r.out.find("Assignments"));
+  for (const fs::directory_entry& e : fs::directory_iterator(FROB_SOURCE_DIR "/assignments")) {
+    if (!fs::exists(e.path() / "rubric.toml")) continue;
+    const std::string rubric = readFile(e.path() / "rubric.toml");
+    const std::size_t at = rubric.find("title = \"");
+    ASSERT_NE(at, std::string::npos) << e.path();
+    const std::string title = rubric.substr(at + 9, rubric.find('"', at + 9) - at - 9);
+    EXPECT_NE(listed.find("  " + e.path().filename().string() + " "), std::string::npos) << e.path();
+    EXPECT_NE(listed.find(title), std::string::npos) << title;
+  }
+}
+
+}  // namespace
+}  // namespace frob::testing
