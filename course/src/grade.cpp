@@ -1,5 +1,6 @@
 #include "frob/course/grade.hpp"
 
+#include "frob/course/diagnose.hpp"
 #include "frob/course/judge.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/world_file.hpp"
@@ -22,6 +23,7 @@ namespace {
 // What a run made: the grader's record of it, and the wheels applied at every step.
 struct Ran {
   RunRecord record;
+  std::vector<std::string> hints;
   std::vector<std::vector<Wheels>> wheels;
   std::uint64_t trajectoryHash = 0;
 };
@@ -35,20 +37,28 @@ Ran drive(worlds::Run& run, const worlds::WorldDef& world, std::int64_t steps) {
   for (std::size_t i = 0; i < sim.robotCount(); ++i) {
     ran.record.robots.push_back({.name = sim.robotName(i), .radius = sim.robot(i).radius, .path = {sim.truePose(i).position}});
   }
+  Diagnosis diagnosis(sim.walls(), world.size, sim.dt());
   for (std::int64_t k = 0; k < steps && run.failures().empty(); ++k) {
     run.step();
     ran.wheels.push_back(run.commands());
     const double sensedAt = sim.time() - sim.dt();
     for (std::size_t i = 0; i < sim.robotCount(); ++i) {
       Track& t = ran.record.robots[i];
-      for (std::size_t b = 0; b < sim.frame(i).bumps.size(); ++b) t.contacts.emplace_back(sensedAt, t.path.back());
+      const SensorFrame& frame = sim.frame(i);
+      for (std::size_t b = 0; b < frame.bumps.size(); ++b) t.contacts.emplace_back(sensedAt, t.path.back());
       t.path.push_back(sim.truePose(i).position);
+      const double front = frame.sonar.empty() ? sim.spec(i).sonarMaxRange : frame.sonar[0];  // sonar 0 looks ahead
+      diagnosis.observe(i, sim.time(), sim.truePose(i), run.commands()[i], front, sim.spec(i).sonarMaxRange);
       for (const TaskRecord& ended : run.timeline(i).drainEnded()) {
+        diagnosis.taskEnded(i, ended);
         if (ended.parent < 0 && ended.how == TaskEnd::Returned) t.returned = ended.detail;
       }
     }
   }
   for (const worlds::ControllerFailure& f : run.failures()) ran.record.robots.at(f.robot).failure = f.message;
+  for (std::size_t i = 0; i < sim.robotCount(); ++i) {
+    for (std::string& h : diagnosis.hints(i, sim.robotName(i), run.timeline(i).running(), sim.time())) ran.hints.push_back(std::move(h));
+  }
   ran.trajectoryHash = run.recorder().trajectoryHash();
   return ran;
 }
@@ -127,7 +137,9 @@ void writeLog(const fs::path& path, const Rubric& rubric, const Check& check, co
 std::string CheckGrade::output() const {
   std::string out;
   for (const RunGrade& r : runs) {
-    if (!r.passed) out += "in " + r.world + ", seed " + std::to_string(r.seed) + ": " + r.reason + "\n";
+    if (r.passed) continue;
+    out += "in " + r.world + ", seed " + std::to_string(r.seed) + ": " + r.reason + "\n";
+    for (const std::string& h : r.hints) out += "  hint: " + h + "\n";
   }
   return out;
 }
@@ -179,6 +191,7 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
         const Ran ran = drive(run, world.value(), stepsFor(check.seconds, def.rubric.dt));
         judgeRun(check, ran.record, r);
         r.trajectoryHash = ran.trajectoryHash;
+        r.hints = ran.hints;
         for (std::string& n : host.value()->notes()) {
           if (std::find(g.notes.begin(), g.notes.end(), n) == g.notes.end()) g.notes.push_back(std::move(n));
         }

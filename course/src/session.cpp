@@ -1,5 +1,7 @@
 #include "frob/course/session.hpp"
 
+#include "frob/course/diagnose.hpp"
+
 #include "frob/render/output_file.hpp"
 #include "frob/render/run_view.hpp"
 #include "frob/render/video.hpp"
@@ -54,6 +56,15 @@ worlds::DriverFactory driverFor(const RunDef& def, std::shared_ptr<ControllerHos
   }
   host = started.value();
   return host->driver(modulePerRobot, pictures);
+}
+
+// The sonar that looks straight ahead.
+std::size_t frontSonarOf(const RobotSpec& spec) {
+  std::size_t best = 0;
+  for (std::size_t k = 0; k < spec.sonarAngles.size(); ++k) {
+    if (std::abs(std::remainder(spec.sonarAngles[k], 2 * pi)) < std::abs(std::remainder(spec.sonarAngles[best], 2 * pi))) best = k;
+  }
+  return best;
 }
 
 const worlds::NamedPoint* findGoal(const worlds::WorldDef& world) {
@@ -164,6 +175,7 @@ Result<Summary> runSession(const RunDef& def) {
   };
 
   const worlds::NamedPoint* goal = findGoal(sim.world());
+  Diagnosis diagnosis(sim.walls(), sim.world().size, sim.dt());
   std::vector<RobotWatch> watch(n);
   for (std::size_t i = 0; i < n; ++i) {
     const LoadedController& c = def.controllers.size() == 1 ? def.controllers.front() : def.controllers[i];
@@ -191,7 +203,10 @@ Result<Summary> runSession(const RunDef& def) {
         if (d <= kGoalRadius && !w.summary.goalTime) w.summary.goalTime = rec.time;
       }
       Timeline& timeline = run.timeline(i);
+      const RobotSpec& spec = sim.spec(i);
+      diagnosis.observe(i, rec.time, r.truePose, r.wheels, r.sonar.empty() ? spec.sonarMaxRange : r.sonar[frontSonarOf(spec)], spec.sonarMaxRange);
       for (TaskRecord& ended : timeline.drainEnded()) {
+        diagnosis.taskEnded(i, ended);
         // The top task returning with nothing left running: this controller is done.
         if (ended.parent < 0 && ended.how == TaskEnd::Returned && timeline.running().empty()) w.summary.finishedAt = ended.end;
         if (!out.timeline.empty()) w.all.push_back(ended);
@@ -221,7 +236,9 @@ Result<Summary> runSession(const RunDef& def) {
   for (std::size_t i = 0; i < n; ++i) {
     RobotWatch& w = watch[i];
     w.summary.lastTasks.assign(w.lastEnded.begin(), w.lastEnded.end());
-    for (TaskRecord& r : run.timeline(i).running()) {
+    const std::vector<TaskRecord> running = run.timeline(i).running();
+    w.summary.hints = diagnosis.hints(i, w.summary.name, running, sim.time());
+    for (TaskRecord r : running) {
       r.end = sim.time();
       if (!out.timeline.empty()) w.all.push_back(r);
       w.summary.lastTasks.push_back(std::move(r));

@@ -40,6 +40,7 @@ std::string formatSummary(const Summary& s, double wallSeconds) {
     if (!r.lastTasks.empty()) text += "    last tasks:\n";
     for (const TaskRecord& t : r.lastTasks) text += taskLine(t);
     if (!r.failure.empty()) text += "    FAILED: " + r.failure + "\n";
+    for (const std::string& h : r.hints) text += "    hint: " + h + "\n";
   }
   for (const std::string& w : s.written) text += "  wrote " + w + "\n";
   for (const std::string& n : s.notes) text += "  note: " + n + "\n";
@@ -59,7 +60,8 @@ std::string summaryJson(const Summary& s, double wallSeconds) {
                       {"collisions", r.collisions}, {"goal_distance", optional(r.goalDistance)},
                       {"goal_reached", r.goalTime.has_value()}, {"goal_time", optional(r.goalTime)},
                       {"finished_at", optional(r.finishedAt)}, {"last_tasks", tasks},
-                      {"failure", r.failure.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.failure)}});
+                      {"failure", r.failure.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.failure)},
+                      {"hints", r.hints}});
   }
   nlohmann::ordered_json sandbox = nlohmann::ordered_json::array();
   for (const sandbox::Layer& l : s.sandbox) sandbox.push_back({{"layer", l.name}, {"applied", l.applied}, {"note", l.note}});

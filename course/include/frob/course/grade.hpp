@@ -36,6 +36,7 @@ struct RunGrade {
   std::uint64_t seed = 0;
   bool passed = false;
   std::string reason;                   ///< why it failed, in words a student can act on; "" when it passed
+  std::vector<std::string> hints;       ///< what common mistake the run shows, naming the fix (course/diagnose.hpp)
   std::uint64_t trajectoryHash = 0;     ///< of every true pose (replays must match it)
   std::filesystem::path log;            ///< its wheel log, when logs are kept
 };
@@ -47,7 +48,8 @@ struct CheckGrade {
   double score = 0.0;                   ///< points × passed runs / runs
   Visibility visibility = Visibility::Visible;
   std::vector<RunGrade> runs;
-  /// The reasons of the failed runs, one line each ("in maze, seed 3: touched a wall at 41.2 s at (3.1, 4.5)").
+  /// The reasons of the failed runs, one line each ("in maze, seed 3: touched a wall at 41.2 s at (3.1, 4.5)"),
+  /// each followed by its hints ("  hint: ...").
   [[nodiscard]] std::string output() const;
 };
 

@@ -61,6 +61,7 @@ struct RobotSummary {
   std::optional<double> finishedAt;   ///< when its controller's task returned, seconds
   std::vector<TaskRecord> lastTasks;  ///< the last tasks that ended, oldest first, then those still running
   std::string failure;                ///< why its controller failed; empty when it did not
+  std::vector<std::string> hints;     ///< what went wrong that is common, in words that name the fix
 };
 
 /// What a run did.
