@@ -1,6 +1,7 @@
 #include "frob/course/diagnose.hpp"
 
 #include "free_space.hpp"
+#include "text.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -10,12 +11,6 @@ namespace frob::course {
 
 namespace {
 
-template <class... A>
-std::string format(const char* f, A... args) {
-  char buf[512];
-  std::snprintf(buf, sizeof buf, f, args...);
-  return buf;
-}
 
 constexpr double kPressedFor = 1.0;  // seconds of pushing before it counts
 constexpr double kQuickTask = 1e-9;  // a task that ends at the instant it starts

@@ -1,6 +1,7 @@
 #include "frob/course/judge.hpp"
 
 #include "free_space.hpp"
+#include "text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,12 +16,6 @@ using worlds::WallShape;
 
 namespace {
 
-template <class... A>
-std::string format(const char* f, A... args) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, f, args...);
-  return buf;
-}
 std::string at(const Point2& p) { return format("(%.1f, %.1f)", p.x(), p.y()); }
 std::string secondsText(double s) { return format("%.1f s", s); }
 
