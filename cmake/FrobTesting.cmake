@@ -3,16 +3,17 @@ find_package(GTest REQUIRED)
 find_package(benchmark REQUIRED)
 include(GoogleTest)
 
-# frob_add_test(name SOURCES a.cpp ... LIBS lib ... [TIMEOUT seconds]): a GoogleTest executable whose
-# tests ctest discovers one by one, each with a timeout so that a hang fails instead of stalling CI.
+# frob_add_test(name SOURCES a.cpp ... LIBS lib ... [TIMEOUT seconds] [LABELS label ...]): a GoogleTest
+# executable whose tests ctest discovers one by one, each with a timeout so that a hang fails instead
+# of stalling CI.
 function(frob_add_test name)
-  cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
   if(NOT ARG_TIMEOUT)
     set(ARG_TIMEOUT 120)
   endif()
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_LIBS} frob::build_options GTest::gtest GTest::gmock GTest::gtest_main)
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT ${ARG_TIMEOUT})
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT ${ARG_TIMEOUT} LABELS "${ARG_LABELS}")
 endfunction()
 
 # frob_add_benchmark(name SOURCES ... LIBS ...): a Google Benchmark executable. ctest runs it once
