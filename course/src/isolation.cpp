@@ -21,12 +21,6 @@
 #include <fstream>
 #include <optional>
 
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define FROB_HOST_UNDER_ASAN 1
-#endif
-#endif
-
 namespace frob::course {
 
 namespace fs = std::filesystem;
@@ -239,19 +233,18 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
 
   const IsolationDef& d = impl->def;
   JailDef jail{.command = command,
-               .limits = {.cpuSeconds = static_cast<std::uint64_t>(std::ceil(d.runSeconds)), .fileBytes = d.fileBytes, .openFiles = 64},
+               .limits = {.cpuSeconds = static_cast<std::uint64_t>(std::ceil(d.runSeconds)), .memoryBytes = d.memoryBytes,
+                          .fileBytes = d.fileBytes, .openFiles = 64},
                .files = {.read = {"/usr", "/lib", "/lib64", "/etc/ld.so.cache"}, .write = {scratch}},
                .cwd = scratch,
                .fds = {-1, out[1], out[1], impl->channel.fd(), impl->wake}};
-#ifdef FROB_HOST_UNDER_ASAN
-  // AddressSanitizer reserves terabytes of address space, so memory is watched by its size instead;
-  // crashes are left to the kernel so that they read as the signals they are.
-  jail.env = {"ASAN_OPTIONS=detect_leaks=0:handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_abort=0:symbolize=0"};
-  jail.files.read.push_back("/proc");
-#else
-  jail.limits.memoryBytes = d.memoryBytes;
-  impl->memoryLimited = true;
-#endif
+  if constexpr (kSanitizedBuild) {
+    // Memory is watched by its size instead of limited (see kSanitizedBuild); crashes are left to
+    // the kernel so that they read as the signals they are.
+    jail.env = {"ASAN_OPTIONS=detect_leaks=0:handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_abort=0:symbolize=0"};
+    jail.files.read.push_back("/proc");
+  }
+  impl->memoryLimited = !kSanitizedBuild;
   Result<Jailed> process = Jailed::start(jail);
   ::close(out[1]);
   if (!process) return failure(process.error());

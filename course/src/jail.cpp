@@ -28,7 +28,7 @@ Result<Jailed> Jailed::start(const JailDef& def) {
     if (value != 0) args.insert(args.end(), {flag, std::to_string(value)});
   };
   add("--cpu", def.limits.cpuSeconds);
-  add("--memory", def.limits.memoryBytes);
+  if (!kSanitizedBuild) add("--memory", def.limits.memoryBytes);
   add("--file-size", def.limits.fileBytes);
   add("--open-files", def.limits.openFiles);
   for (const auto& [flag, paths] : {std::pair{"--read", &def.files.read}, {"--write", &def.files.write}, {"--execute", &def.files.execute}}) {

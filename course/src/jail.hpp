@@ -10,15 +10,29 @@
 #include <string>
 #include <vector>
 
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define FROB_SANITIZED_BUILD 1
+#endif
+#endif
+
 namespace frob::course {
 
 using render::Result;
 using render::Status;
 
+/// Whether this build runs under AddressSanitizer, which reserves terabytes of address space: then
+/// no address-space limit can be set on frob-jail or what it runs, and memory is watched instead.
+#ifdef FROB_SANITIZED_BUILD
+inline constexpr bool kSanitizedBuild = true;
+#else
+inline constexpr bool kSanitizedBuild = false;
+#endif
+
 /// A program to run confined.
 struct JailDef {
   std::vector<std::string> command;  ///< the program (absolute path) and its arguments
-  sandbox::Limits limits;
+  sandbox::Limits limits;            ///< memoryBytes is dropped in a sanitizer build (kSanitizedBuild)
   sandbox::FileAccess files;
   std::string cwd;                   ///< its working folder
   std::vector<std::string> env;      ///< its whole environment, NAME=VALUE

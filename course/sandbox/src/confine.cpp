@@ -67,8 +67,11 @@ Layer limitResources(const Limits& limits) {
                   set(RLIMIT_FSIZE, limits.fileBytes, "file size") && set(RLIMIT_NOFILE, limits.openFiles, "open files") &&
                   (limits.cpuSeconds == 0 || ::setrlimit(RLIMIT_CPU, &cpu) == 0 || (layer.note = errorText("cpu"), false));
   layer.applied = ok;
-  if (ok) layer.note = "cpu " + std::to_string(limits.cpuSeconds) + " s, memory " + std::to_string(limits.memoryBytes >> 20) +
-                       " MiB, files " + std::to_string(limits.fileBytes >> 20) + " MiB, no core files";
+  if (ok) {
+    layer.note = "cpu " + std::to_string(limits.cpuSeconds) + " s, " +
+                 (limits.memoryBytes != 0 ? "memory " + std::to_string(limits.memoryBytes >> 20) + " MiB" : std::string("no memory limit")) +
+                 ", files " + std::to_string(limits.fileBytes >> 20) + " MiB, no core files";
+  }
   return layer;
 }
 
