@@ -109,7 +109,9 @@ class Judge {
       case Kind::Bug1Bound: return pathLength(t);
       case Kind::Returns:
         if (!t.returned) return "its task never returned a value (reported by the controller)";
-        return *t.returned == c_.value ? "" : "its task returned " + *t.returned + ", not " + c_.value + " (reported by the controller)";
+        if (*t.returned == c_.value) return "";
+        return "its task returned " + (t.returned->empty() ? std::string("no value") : *t.returned) + ", not " + c_.value +
+               " (reported by the controller)";
       case Kind::RobotsApart: break;
     }
     return "";
@@ -138,8 +140,8 @@ class Judge {
       const std::optional<std::size_t> k = firstWithin(t.path, *p, c_.distance, from);
       if (!k) {
         const std::size_t near = closestTo(t.path, *p, from);
-        return reached + format("never came within %.2f m of %s after that (closest %.2f m, at %s)", c_.distance, name.c_str(),
-                                (t.path[near] - *p).norm(), secondsText(timeOf(near)).c_str());
+        return reached + format("never came within %.2f m of %s%s (closest %.2f m, at %s)", c_.distance, name.c_str(),
+                                reached.empty() ? "" : " after that", (t.path[near] - *p).norm(), secondsText(timeOf(near)).c_str());
       }
       if (late(*k)) return reached + "reached " + name + " at " + secondsText(timeOf(*k)) + "; " + allowed();
       reached += "reached " + name + " at " + secondsText(timeOf(*k)) + ", ";

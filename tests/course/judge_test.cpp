@@ -44,6 +44,7 @@ TEST(Judge, GoalReachedInTimeOrLateOrNever) {
 TEST(Judge, WaypointsInOrder) {
   const Criterion ab{.kind = Kind::Waypoints, .points = {"a", "b"}, .distance = 0.2};
   EXPECT_TRUE(run(ab, straight(1, 1.5, 0.5, 8)).passed);
+  EXPECT_EQ(run(ab, straight(1, 2.5, 0.5, 8)).reason, "never came within 0.20 m of a (closest 1.00 m, at 2.0 s)");
   const Criterion ba{.kind = Kind::Waypoints, .points = {"b", "a"}, .distance = 0.2};
   EXPECT_EQ(run(ba, straight(1, 1.5, 0.5, 8)).reason,
             "reached b at 5.6 s, never came within 0.20 m of a after that (closest 1.80 m, at 5.6 s)");
@@ -144,6 +145,8 @@ TEST(Judge, TheReturnedValueIsTheControllers) {
   EXPECT_EQ(run({.kind = Kind::Returns, .value = "true"}, t).reason, "its task never returned a value (reported by the controller)");
   t.returned = "false";
   EXPECT_EQ(run({.kind = Kind::Returns, .value = "true"}, t).reason, "its task returned false, not true (reported by the controller)");
+  t.returned = "";
+  EXPECT_EQ(run({.kind = Kind::Returns, .value = "true"}, t).reason, "its task returned no value, not true (reported by the controller)");
   t.returned = "true";
   EXPECT_TRUE(run({.kind = Kind::Returns, .value = "true"}, t).passed);
 }

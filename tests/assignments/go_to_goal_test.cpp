@@ -1,0 +1,135 @@
+// The go_to_goal assignment graded as CI grades it, hidden checks included (test secret): the
+// reference solution gets full marks, the starter nothing, and each typical wrong submission of
+// tests/assignments/go_to_goal/ exactly the partial score it deserves, failing the checks it should
+// with a reason a student can act on. Course examples 4 (driveTo to one point) and 6 (BUG), copied,
+// do not pass.
+#include "grade_assignment.hpp"
+
+#include "frob/worlds/world_file.hpp"
+
+#include <gmock/gmock.h>
+
+namespace frob::testing {
+namespace {
+
+using ::testing::HasSubstr;
+using Scores = std::map<std::string, double>;
+
+constexpr const char* kAssignment = "go_to_goal";
+const std::string kInOrder = "visits the waypoints in order";
+const std::string kInTime = "within the time limit";
+const std::string kSofa = "goes round the sofa without touching anything";
+const std::string kOtherRooms = "other rooms, other furniture";
+
+// What the grader told the student about `check` (one line per failed run), "" when it passed.
+std::string reasons(const course::Grade& g, const std::string& check) {
+  for (const course::CheckGrade& c : g.checks) {
+    if (c.name == check) return c.output();
+  }
+  ADD_FAILURE() << "no check named '" << check << "'";
+  return "";
+}
+
+course::Grade gradeFile(const std::filesystem::path& file) {
+  course::Grade g = gradeAssignment(kAssignment, file);
+  EXPECT_EQ(g.compileError, "") << file;
+  return g;
+}
+
+TEST(GoToGoalAssignment, RubricHasTheChecksTheHandoutDescribes) {
+  course::Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
+  ASSERT_TRUE(rubric.ok()) << rubric.error();
+  Scores points;
+  for (const course::Check& c : rubric.value().checks) points[c.name] = c.points;
+  EXPECT_EQ(points, (Scores{{kInOrder, 3}, {kInTime, 2}, {kSofa, 2}, {kOtherRooms, 3}}));
+  const course::Check& hidden = rubric.value().checks.back();
+  EXPECT_EQ(hidden.name, kOtherRooms);
+  EXPECT_EQ(hidden.visibility, course::Visibility::Hidden);
+  EXPECT_GT(hidden.secretSeeds, 0);
+}
+
+// The handout gives the waypoints' coordinates once: every world, visible or hidden, has them there.
+TEST(GoToGoalAssignment, EveryWorldHasTheHandoutsWaypointsAndStart) {
+  const std::map<std::string, Point2> handout = {{"wp1", {3.0, 2.5}}, {"wp2", {3.5, 7.5}}, {"wp3", {9.0, 7.0}}, {"wp4", {8.5, 2.5}}};
+  for (const char* file : {"worlds/lounge.toml", "hidden_worlds/study.toml", "hidden_worlds/workshop.toml"}) {
+    worlds::Loaded<worlds::WorldDef> world = worlds::loadWorld(assignmentFile(kAssignment, file));
+    ASSERT_TRUE(world) << world.error;
+    for (const auto& [name, at] : handout) {
+      std::optional<Point2> p = worlds::findPoint(*world, name);
+      ASSERT_TRUE(p.has_value()) << file << " has no " << name;
+      EXPECT_EQ(*p, at) << file << ": " << name;
+    }
+    ASSERT_EQ(world->robots.size(), 1u) << file;
+    EXPECT_EQ(world->robots[0].start.position, Point2(1.5, 1.5)) << file;
+    EXPECT_EQ(world->robots[0].start.heading, 0.0) << file;
+  }
+}
+
+TEST(GoToGoalAssignment, SolutionGetsFullMarksOnEveryCheck) {
+  course::Grade g = gradeFile(assignmentFile(kAssignment, "solution.cpp"));
+  ASSERT_EQ(g.checks.size(), 4u);
+  for (const course::CheckGrade& c : g.checks) EXPECT_EQ(c.score, c.points) << c.name << ":\n" << c.output();
+  EXPECT_EQ(g.score(), 10.0);
+}
+
+// The starter drives to wp1 and stops there: it compiles and runs, and earns nothing yet.
+TEST(GoToGoalAssignment, StarterScoresNothing) {
+  course::Grade g = gradeFile(assignmentFile(kAssignment, "starter.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kInOrder, 0}, {kInTime, 0}, {kSofa, 0}, {kOtherRooms, 0}}));
+  EXPECT_THAT(reasons(g, kInOrder), HasSubstr("reached wp1 at"));
+  EXPECT_THAT(reasons(g, kInOrder), HasSubstr("never came within 0.20 m of wp2"));
+}
+
+// Example 4 copied with the handout's waypoints: it gives up at the first obstacle (the sofa).
+TEST(GoToGoalAssignment, CopiedExample4GivesUpAtTheSofa) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "copied_example.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kInOrder, 0}, {kInTime, 0}, {kSofa, 0}, {kOtherRooms, 0}}));
+  for (const std::string& check : {kInOrder, kInTime, kSofa, kOtherRooms}) {
+    EXPECT_THAT(reasons(g, check), HasSubstr("reached wp1 at 4.5 s, never came within 0.20 m of wp2")) << check;
+  }
+}
+
+// Example 4 itself (two points of the empty room) does not come near the waypoints at all.
+TEST(GoToGoalAssignment, Example4AsItIsScoresNothing) {
+  course::Grade g = gradeFile(example("04_drive_to.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kInOrder, 0}, {kInTime, 0}, {kSofa, 0}, {kOtherRooms, 0}}));
+  EXPECT_THAT(reasons(g, kInOrder), HasSubstr("never came within 0.20 m of wp1"));
+}
+
+// Example 6's BUG, once per waypoint: in order and untouched, but BUG circles each obstacle once
+// before it leaves it, which takes some 95 s for a round the time limit allows 75 s for.
+TEST(GoToGoalAssignment, CopiedExample6IsTooSlow) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "bug_per_waypoint.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kInOrder, 3}, {kInTime, 0}, {kSofa, 2}, {kOtherRooms, 0}}));
+  EXPECT_THAT(reasons(g, kInTime), HasSubstr("reached wp3 at 64.2 s, never came within 0.20 m of wp4"));
+  EXPECT_THAT(reasons(g, kOtherRooms), HasSubstr("never came within 0.20 m of wp4"));
+}
+
+// After wp1 it goes round the room the wrong way: wp4, wp3, then wp2.
+TEST(GoToGoalAssignment, WrongOrderFailsEveryCheck) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "wrong_order.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kInOrder, 0}, {kInTime, 0}, {kSofa, 0}, {kOtherRooms, 0}}));
+  EXPECT_THAT(reasons(g, kInOrder), HasSubstr("reached wp1 at 4.5 s, reached wp2 at 53.0 s, never came within 0.20 m of wp3 after that"));
+  EXPECT_THAT(reasons(g, kSofa), HasSubstr("never came within 0.20 m of wp2 after that"));
+}
+
+// The solution at half speed: everything right but the time limit (the round takes about 93 s).
+TEST(GoToGoalAssignment, TooSlowMissesTheTimeLimit) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "too_slow.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kInOrder, 3}, {kInTime, 0}, {kSofa, 2}, {kOtherRooms, 0}}));
+  EXPECT_THAT(reasons(g, kInTime), HasSubstr("reached wp3 at 64.0 s, never came within 0.20 m of wp4"));
+}
+
+// A route worked out by hand round the lounge's furniture: full marks in the lounge, and it runs
+// into the furniture of both hidden rooms. This is what the hidden check is for.
+TEST(GoToGoalAssignment, HardCodedRouteFailsOnlyTheHiddenRooms) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "hard_coded_route.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kInOrder, 3}, {kInTime, 2}, {kSofa, 2}, {kOtherRooms, 0}}));
+  EXPECT_THAT(reasons(g, kOtherRooms), HasSubstr("in hidden_worlds/study.toml, seed "));
+  EXPECT_THAT(reasons(g, kOtherRooms), HasSubstr("touched a wall at 22.4 s"));
+  EXPECT_THAT(reasons(g, kOtherRooms), HasSubstr("in hidden_worlds/workshop.toml, seed "));
+  EXPECT_THAT(reasons(g, kOtherRooms), HasSubstr("touched a wall at 6.0 s"));
+}
+
+}  // namespace
+}  // namespace frob::testing

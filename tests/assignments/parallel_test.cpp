@@ -1,0 +1,142 @@
+// The parallel assignment graded as CI grades it, hidden checks included (test secret): the
+// reference solution gets full marks, the starter only the patrol's points, and each typical wrong
+// submission of tests/assignments/parallel/ exactly the partial score it deserves, failing the
+// checks it should with a reason a student can act on. Course example 7 (withTask with a trip
+// meter), copied, does not pass: the key, the bumpers and the reason change what must happen.
+#include "grade_assignment.hpp"
+
+#include "frob/worlds/world_file.hpp"
+
+#include <gmock/gmock.h>
+
+namespace frob::testing {
+namespace {
+
+using ::testing::HasSubstr;
+using Scores = std::map<std::string, double>;
+
+constexpr const char* kAssignment = "parallel";
+const std::string kPatrol = "patrols p1, p2, p3, p4 and back to p1";
+const std::string kKey = "stops at once when s is pressed";
+const std::string kBump = "stops at the first bump";
+const std::string kBudget = "stops when the 20 m budget is used";
+const std::string kOtherKeys = "other keys do not stop it";
+const std::string kOtherBox = "a box elsewhere in the aisles";
+
+// What the grader told the student about `check` (one line per failed run), "" when it passed.
+std::string reasons(const course::Grade& g, const std::string& check) {
+  for (const course::CheckGrade& c : g.checks) {
+    if (c.name == check) return c.output();
+  }
+  ADD_FAILURE() << "no check named '" << check << "'";
+  return "";
+}
+
+course::Grade gradeFile(const std::filesystem::path& file) {
+  course::Grade g = gradeAssignment(kAssignment, file);
+  EXPECT_EQ(g.compileError, "") << file;
+  return g;
+}
+
+const char* const kStillMoving = "was still moving at 0.60 m/s at the end; it should stop";
+
+TEST(ParallelAssignment, RubricHasTheChecksTheHandoutDescribes) {
+  course::Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
+  ASSERT_TRUE(rubric.ok()) << rubric.error();
+  Scores points;
+  int hidden = 0;
+  for (const course::Check& c : rubric.value().checks) {
+    points[c.name] = c.points;
+    if (c.visibility == course::Visibility::Hidden) {
+      ++hidden;
+      EXPECT_GT(c.secretSeeds, 0) << c.name;
+    }
+  }
+  EXPECT_EQ(points, (Scores{{kPatrol, 2}, {kKey, 2}, {kBump, 2}, {kBudget, 2}, {kOtherKeys, 1}, {kOtherBox, 1}}));
+  EXPECT_EQ(hidden, 2);
+}
+
+// The handout gives the route's coordinates once: every world, visible or hidden, has them there.
+TEST(ParallelAssignment, EveryWorldHasTheHandoutsRouteAndStart) {
+  const std::map<std::string, Point2> handout = {{"p1", {1.5, 1.5}}, {"p2", {6.5, 1.5}}, {"p3", {6.5, 4.5}}, {"p4", {1.5, 4.5}}};
+  for (const char* file : {"worlds/warehouse.toml", "worlds/warehouse_key.toml", "worlds/warehouse_box.toml",
+                           "hidden_worlds/warehouse_keys.toml", "hidden_worlds/warehouse_box2.toml"}) {
+    worlds::Loaded<worlds::WorldDef> world = worlds::loadWorld(assignmentFile(kAssignment, file));
+    ASSERT_TRUE(world) << world.error;
+    for (const auto& [name, at] : handout) {
+      std::optional<Point2> p = worlds::findPoint(*world, name);
+      ASSERT_TRUE(p.has_value()) << file << " has no " << name;
+      EXPECT_EQ(*p, at) << file << ": " << name;
+    }
+    ASSERT_EQ(world->robots.size(), 1u) << file;
+    EXPECT_EQ(world->robots[0].start.position, Point2(1.0, 1.0)) << file;
+  }
+}
+
+TEST(ParallelAssignment, SolutionGetsFullMarksOnEveryCheck) {
+  course::Grade g = gradeFile(assignmentFile(kAssignment, "solution.cpp"));
+  ASSERT_EQ(g.checks.size(), 6u);
+  for (const course::CheckGrade& c : g.checks) EXPECT_EQ(c.score, c.points) << c.name << ":\n" << c.output();
+  EXPECT_EQ(g.score(), 10.0);
+}
+
+// The starter patrols for ever: the patrol's points, nothing else.
+TEST(ParallelAssignment, StarterOnlyPatrols) {
+  course::Grade g = gradeFile(assignmentFile(kAssignment, "starter.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kPatrol, 2}, {kKey, 0}, {kBump, 0}, {kBudget, 0}, {kOtherKeys, 0}, {kOtherBox, 0}}));
+  for (const std::string& check : {kKey, kBump, kBudget, kOtherKeys, kOtherBox}) {
+    EXPECT_THAT(reasons(g, check), HasSubstr(kStillMoving)) << check;
+  }
+}
+
+// Example 7 copied, with the patrol as its driver and the budget as its trip: it patrols and stops
+// after 20 m, but a key press and a bump change nothing, and it reports no reason.
+TEST(ParallelAssignment, CopiedExample7IgnoresKeyAndBumpersAndGivesNoReason) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "copied_example.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kPatrol, 2}, {kKey, 0}, {kBump, 0}, {kBudget, 0}, {kOtherKeys, 0}, {kOtherBox, 0}}));
+  EXPECT_THAT(reasons(g, kKey), HasSubstr(kStillMoving));
+  EXPECT_THAT(reasons(g, kBump), HasSubstr("(2 contacts; 1 allowed)"));
+  EXPECT_THAT(reasons(g, kBudget), HasSubstr("not budget (reported by the controller)"));
+}
+
+// Example 7 as it is wanders the room: it never comes near the route.
+TEST(ParallelAssignment, Example7AsItIsScoresNothing) {
+  course::Grade g = gradeFile(example("07_with_task.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kPatrol, 0}, {kKey, 0}, {kBump, 0}, {kBudget, 0}, {kOtherKeys, 0}, {kOtherBox, 0}}));
+  EXPECT_THAT(reasons(g, kPatrol), HasSubstr("never came within 0.20 m of p1"));
+}
+
+// The watcher does not watch the keyboard: the operator cannot stop it.
+TEST(ParallelAssignment, IgnoringTheKeyFailsTheKeyChecks) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "ignores_key.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kPatrol, 2}, {kKey, 0}, {kBump, 2}, {kBudget, 2}, {kOtherKeys, 0}, {kOtherBox, 1}}));
+  EXPECT_THAT(reasons(g, kKey), HasSubstr(kStillMoving));
+  EXPECT_THAT(reasons(g, kOtherKeys), HasSubstr(kStillMoving));
+}
+
+// Any key stops it: right in the visible key world, wrong when x is pressed before s.
+TEST(ParallelAssignment, StoppingOnAnyKeyFailsTheOtherKeysCheck) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "stops_on_any_key.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kPatrol, 2}, {kKey, 2}, {kBump, 2}, {kBudget, 2}, {kOtherKeys, 0}, {kOtherBox, 1}}));
+  EXPECT_THAT(reasons(g, kOtherKeys), HasSubstr("reached p1 at 3.1 s, never came within 0.20 m of p2 after that"));
+}
+
+// The watcher does not watch the bumpers: the robot pushes past the box and patrols on.
+TEST(ParallelAssignment, IgnoringTheBumpersFailsTheBoxChecks) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "ignores_bumper.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kPatrol, 2}, {kKey, 2}, {kBump, 0}, {kBudget, 2}, {kOtherKeys, 1}, {kOtherBox, 0}}));
+  EXPECT_THAT(reasons(g, kBump), HasSubstr(kStillMoving));
+  EXPECT_THAT(reasons(g, kOtherBox), HasSubstr(kStillMoving));
+}
+
+// withTask without withExit: the watcher ends as it should, but nothing ends the patrol.
+TEST(ParallelAssignment, AWatcherWhoseEndIsIgnoredStopsNothing) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "patrol_never_ends.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kPatrol, 2}, {kKey, 0}, {kBump, 0}, {kBudget, 0}, {kOtherKeys, 0}, {kOtherBox, 0}}));
+  for (const std::string& check : {kKey, kBump, kBudget, kOtherKeys, kOtherBox}) {
+    EXPECT_THAT(reasons(g, check), HasSubstr(kStillMoving)) << check;
+  }
+}
+
+}  // namespace
+}  // namespace frob::testing
