@@ -1,6 +1,7 @@
 #include "frob/sandbox/channel.hpp"
 
 #include <linux/futex.h>
+#include <sched.h>
 #include <sys/mman.h>
 #include <sys/syscall.h>
 #include <unistd.h>
@@ -108,6 +109,9 @@ bool spinUntil(const Doorbell& bell, std::uint32_t sequence, std::uint64_t nanos
       cpuRelax();
     }
     if (std::chrono::steady_clock::now() >= end) return false;
+    // Give the core away if another process wants it (the other side, on a crowded machine);
+    // on an idle one this returns at once.
+    ::sched_yield();
   }
 }
 
