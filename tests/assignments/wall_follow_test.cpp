@@ -1,0 +1,157 @@
+// The wall_follow assignment graded as CI grades it, hidden checks included (test secret): the
+// reference solution gets full marks, the starter nothing, and each typical wrong submission of
+// tests/assignments/wall_follow/ exactly the partial score it deserves, failing the checks it
+// should with a reason a student can act on. Course example 2 (the paper's rerror), copied as it
+// is, does not pass: it follows the LEFT wall, 50 cm away, and stops where that wall ends.
+#include "grade_assignment.hpp"
+
+#include "frob/worlds/world_file.hpp"
+
+#include <gmock/gmock.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace frob::testing {
+namespace {
+
+using ::testing::HasSubstr;
+using Scores = std::map<std::string, double>;
+
+constexpr const char* kAssignment = "wall_follow";
+const std::string kRound = "goes round with the wall on its right";
+const std::string kKeeps = "keeps 40 cm from the wall as it goes";
+const std::string kUnseenRound = "goes round unseen rooms with the wall on its right";
+const std::string kUnseenKeeps = "keeps 40 cm from the wall in unseen rooms";
+
+// What the grader told the student about `check` (one line per failed run), "" when it passed.
+std::string reasons(const course::Grade& g, const std::string& check) {
+  for (const course::CheckGrade& c : g.checks) {
+    if (c.name == check) return c.output();
+  }
+  ADD_FAILURE() << "no check named '" << check << "'";
+  return "";
+}
+
+course::Grade gradeFile(const std::filesystem::path& file) {
+  course::Grade g = gradeAssignment(kAssignment, file);
+  EXPECT_EQ(g.compileError, "") << file;
+  return g;
+}
+
+TEST(WallFollowAssignment, RubricHasTheChecksTheHandoutDescribes) {
+  course::Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
+  ASSERT_TRUE(rubric.ok()) << rubric.error();
+  Scores points;
+  for (const course::Check& c : rubric.value().checks) {
+    points[c.name] = c.points;
+    EXPECT_EQ(c.visibility == course::Visibility::Hidden, c.name == kUnseenRound || c.name == kUnseenKeeps) << c.name;
+    if (c.visibility == course::Visibility::Hidden) EXPECT_GT(c.secretSeeds, 0) << c.name;
+  }
+  EXPECT_EQ(points, (Scores{{kRound, 4}, {kKeeps, 4}, {kUnseenRound, 2}, {kUnseenKeeps, 2}}));
+}
+
+// The waypoints a to f of every world lie on the path of a robot that keeps 40 cm between its rim
+// and the wall: its centre 63 cm from the nearest wall. The robot starts 60 or 90 cm from the wall
+// on its right.
+TEST(WallFollowAssignment, WaypointsLieOnTheFollowersPath) {
+  for (const char* file : {"worlds/l_room.toml", "worlds/notched_block.toml", "hidden_worlds/z_corridor.toml", "hidden_worlds/alcove_room.toml"}) {
+    worlds::Loaded<worlds::WorldDef> world = worlds::loadWorld(assignmentFile(kAssignment, file));
+    ASSERT_TRUE(world) << world.error;
+    auto nearestWall = [&](const Point2& p) {
+      double d = 1e9;
+      for (const worlds::WallDef& w : world->walls) d = std::min(d, worlds::distanceToWall(p, w));
+      return d;
+    };
+    for (const char* name : {"a", "b", "c", "d", "e", "f"}) {
+      std::optional<Point2> p = worlds::findPoint(*world, name);
+      ASSERT_TRUE(p.has_value()) << file << " has no " << name;
+      EXPECT_NEAR(nearestWall(*p), 0.63, 0.005) << file << ": " << name;
+    }
+    // The point 60 or 90 cm to the right of the robot's rim, square to its heading, is on a wall.
+    ASSERT_EQ(world->robots.size(), 1u) << file;
+    const worlds::RobotDef& robot = world->robots[0];
+    const Vec2 right(std::sin(robot.start.heading), -std::cos(robot.start.heading));
+    auto onAWall = [&](double gap) { return nearestWall(robot.start.position + (robot.radius + gap) * right) < 1e-9; };
+    EXPECT_TRUE(onAWall(0.6) || onAWall(0.9)) << file;
+  }
+}
+
+TEST(WallFollowAssignment, SolutionGetsFullMarksOnEveryCheck) {
+  course::Grade g = gradeFile(assignmentFile(kAssignment, "solution.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kRound, 4}, {kKeeps, 4}, {kUnseenRound, 2}, {kUnseenKeeps, 2}}));
+  EXPECT_EQ(g.score(), g.maxScore());
+  for (const course::CheckGrade& c : g.checks) EXPECT_EQ(c.output(), "") << c.name;
+}
+
+// The paper's rerror used the simplest way, turning in proportion to it: once it turns towards the
+// wall its right sonar hears nothing, so it turns on, and circles by the wall for the whole run.
+TEST(WallFollowAssignment, StarterScoresNothing) {
+  course::Grade g = gradeFile(assignmentFile(kAssignment, "starter.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 0}, {kUnseenRound, 0}, {kUnseenKeeps, 0}}));
+  EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/l_room.toml, seed 1: never came within 0.30 m of a (closest 3.54 m"));
+  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("kept 0.40 ± 0.06 m from the wall for 8% of the time after 10.0 s; 80% required"));
+}
+
+// The reference follower mirrored: 40 cm from the wall on its LEFT. It keeps its distance all the
+// way, but goes round the L-shaped room the other way (past a, then never b) and round the outer
+// wall instead of the block.
+TEST(WallFollowAssignment, FollowingTheLeftWallKeepsItsDistanceTheWrongWayRound) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "left_wall.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 4}, {kUnseenRound, 0}, {kUnseenKeeps, 2}}));
+  EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/l_room.toml, seed 1: reached a at 48.1 s, never came within 0.30 m of b after that"));
+  EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/notched_block.toml, seed 1: never came within 0.30 m of a (closest 1.86 m"));
+  EXPECT_THAT(reasons(g, kUnseenRound), HasSubstr("in hidden_worlds/alcove_room.toml, seed "));
+  EXPECT_THAT(reasons(g, kUnseenRound), HasSubstr("reached a at 45.9 s, never came within 0.30 m of b after that"));
+}
+
+// The reference follower with example 6's setpoint, 25 cm: never at 40 cm. It goes round the
+// L-shaped room and the alcove room, but so close to the wall it loses its way in the notch and in
+// the Z-shaped corridor.
+TEST(WallFollowAssignment, TooCloseGoesRoundButNeverAtTheSetpoint) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "too_close.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kRound, 2}, {kKeeps, 0}, {kUnseenRound, 1}, {kUnseenKeeps, 0}}));
+  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/l_room.toml, seed 1: kept 0.40 ± 0.06 m from the wall for 0% of the time after 10.0 s"));
+  EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/notched_block.toml, seed 1: reached a at 13.1 s, never came within 0.30 m of b after that"));
+  EXPECT_THAT(reasons(g, kUnseenRound), HasSubstr("in hidden_worlds/z_corridor.toml, seed "));
+  EXPECT_THAT(reasons(g, kUnseenKeeps), HasSubstr("in hidden_worlds/alcove_room.toml, seed "));
+}
+
+// A bang-bang follower: full turn left when the right sonar reads under 40 cm, full turn right
+// when over. It weaves (within 6 cm of 40 cm a fifth of the time) and, never slowing down, runs
+// into the wall ahead at a concave corner.
+TEST(WallFollowAssignment, BangBangOscillatesAndBumpsAtCorners) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "oscillates.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 0}, {kUnseenRound, 0}, {kUnseenKeeps, 0}}));
+  EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/l_room.toml, seed 1: touched a wall at 15.5 s at (6.8, 0.9)"));
+  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/l_room.toml, seed 1: kept 0.40 ± 0.06 m from the wall for 21% of the time"));
+  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/notched_block.toml, seed 1: kept 0.40 ± 0.06 m from the wall for 17% of the time"));
+  EXPECT_THAT(reasons(g, kUnseenRound), HasSubstr("touched a wall at 14.7 s"));
+}
+
+// Like example 2, it stops when the wall on its right ends: at the first convex corner, by the
+// wall and at the right distance. Standing there keeps 40 cm from the wall, but not "as it goes":
+// it has seen too little of the floor.
+TEST(WallFollowAssignment, StoppingAtTheEndOfTheWallDoesNotGoRound) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "stops_at_end.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 0}, {kUnseenRound, 0}, {kUnseenKeeps, 0}}));
+  EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/l_room.toml, seed 1: reached a at 9.7 s, reached b at 17.4 s, reached c at 25.3 s, never came within 0.30 m of d after that"));
+  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/l_room.toml, seed 1: covered 12% of the floor it could reach (20 of 168 cells of 0.50 m); 15% required"));
+  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/notched_block.toml, seed 1: covered 2% of the floor it could reach"));
+  EXPECT_THAT(reasons(g, kUnseenKeeps), HasSubstr("covered 7% of the floor it could reach"));
+}
+
+// Example 2 copied as it is follows the wall on its LEFT, 50 cm away, and stops when that wall
+// ends. In the L-shaped room the left wall is far: it stops at once. By the block it follows the
+// outer wall: not the block's waypoints, and 50 cm is not 40 ± 6 cm.
+TEST(WallFollowAssignment, Example2AsItIsFollowsTheWrongWall) {
+  course::Grade g = gradeFile(example("02_wall_follower.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 0}, {kUnseenRound, 0}, {kUnseenKeeps, 0}}));
+  EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/l_room.toml, seed 1: never came within 0.30 m of a (closest 4.03 m, at 0.0 s)"));
+  EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/notched_block.toml, seed 1: never came within 0.30 m of a (closest 1.75 m"));
+  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/l_room.toml, seed 1: kept 0.40 ± 0.06 m from the wall for 0% of the time after 10.0 s"));
+  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/notched_block.toml, seed 1: kept 0.40 ± 0.06 m from the wall for 9% of the time"));
+}
+
+}  // namespace
+}  // namespace frob::testing

@@ -1,0 +1,124 @@
+// The wander assignment graded as CI grades it, hidden checks included (test secret): the reference
+// solution gets full marks, the starter little, and each typical wrong submission of
+// tests/assignments/wander/ exactly the partial score it deserves, failing the checks it should
+// with a reason a student can act on. Course example 1 (the paper's runAround), copied as it is,
+// does not pass: it stops for the door posts, goes back down the hall and spins there for ever.
+#include "grade_assignment.hpp"
+
+#include "frob/worlds/world_file.hpp"
+
+#include <gmock/gmock.h>
+
+#include <cmath>
+
+namespace frob::testing {
+namespace {
+
+using ::testing::HasSubstr;
+using Scores = std::map<std::string, double>;
+
+constexpr const char* kAssignment = "wander";
+const std::string kHall = "gets out of the hall";
+const std::string kTouch = "never touches anything";
+const std::string kExplore = "explores the room";
+const std::string kUnseen = "explores unseen rooms without touching anything";
+
+// What the grader told the student about `check` (one line per failed run), "" when it passed.
+std::string reasons(const course::Grade& g, const std::string& check) {
+  for (const course::CheckGrade& c : g.checks) {
+    if (c.name == check) return c.output();
+  }
+  ADD_FAILURE() << "no check named '" << check << "'";
+  return "";
+}
+
+course::Grade gradeFile(const std::filesystem::path& file) {
+  course::Grade g = gradeAssignment(kAssignment, file);
+  EXPECT_EQ(g.compileError, "") << file;
+  return g;
+}
+
+TEST(WanderAssignment, RubricHasTheChecksTheHandoutDescribes) {
+  course::Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
+  ASSERT_TRUE(rubric.ok()) << rubric.error();
+  Scores points;
+  for (const course::Check& c : rubric.value().checks) points[c.name] = c.points;
+  EXPECT_EQ(points, (Scores{{kHall, 2}, {kTouch, 3}, {kExplore, 3}, {kUnseen, 2}}));
+  const course::Check& hidden = rubric.value().checks.back();
+  EXPECT_EQ(hidden.name, kUnseen);
+  EXPECT_EQ(hidden.visibility, course::Visibility::Hidden);
+  EXPECT_GT(hidden.secretSeeds, 0);
+}
+
+// Every world, visible or hidden, starts the robot alone in a hall and names the point 1 m into
+// the room that "gets out of the hall" asks for.
+TEST(WanderAssignment, EveryWorldHasOneRobotAndTheRoomPoint) {
+  for (const char* file : {"worlds/living_room.toml", "worlds/bedroom.toml", "hidden_worlds/kitchen.toml", "hidden_worlds/study.toml"}) {
+    worlds::Loaded<worlds::WorldDef> world = worlds::loadWorld(assignmentFile(kAssignment, file));
+    ASSERT_TRUE(world) << world.error;
+    ASSERT_EQ(world->robots.size(), 1u) << file;
+    std::optional<Point2> room = worlds::findPoint(*world, "room");
+    ASSERT_TRUE(room.has_value()) << file;
+    // The room point lies 2 to 3 m straight ahead of the start, beyond the doorway.
+    const Pose2& start = world->robots[0].start;
+    const Vec2 ahead = *room - start.position;
+    EXPECT_NEAR(ahead.norm(), 2.4, 0.6) << file;
+    EXPECT_NEAR(std::atan2(ahead.y(), ahead.x()), start.heading, 1e-6) << file;
+  }
+}
+
+TEST(WanderAssignment, SolutionGetsFullMarksOnEveryCheck) {
+  course::Grade g = gradeFile(assignmentFile(kAssignment, "solution.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kHall, 2}, {kTouch, 3}, {kExplore, 3}, {kUnseen, 2}}));
+  EXPECT_EQ(g.score(), g.maxScore());
+  for (const course::CheckGrade& c : g.checks) EXPECT_EQ(c.output(), "") << c.name;
+}
+
+// The paper's runAround word for word, at the paper's 10 cm/s: it creeps out of the hall, then runs
+// into what it meets at an angle (only its front sonar looks) and gets little further.
+TEST(WanderAssignment, StarterCreepsOutAndTouches) {
+  course::Grade g = gradeFile(assignmentFile(kAssignment, "starter.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kHall, 2}, {kTouch, 0}, {kExplore, 0}, {kUnseen, 0}}));
+  EXPECT_THAT(reasons(g, kTouch), HasSubstr("in worlds/living_room.toml, seed 1: touched a wall at 53.5 s"));
+  EXPECT_THAT(reasons(g, kTouch), HasSubstr("in worlds/bedroom.toml, seed 1: touched a wall at 77.5 s"));
+  EXPECT_THAT(reasons(g, kExplore), HasSubstr("covered 31% of the floor it could reach (10 of 32 cells of 1.00 m); 50% required"));
+  EXPECT_THAT(reasons(g, kUnseen), HasSubstr("touched a wall"));
+}
+
+// It stops for anything within 50 cm of its five front sonars and always turns a quarter turn to
+// the right: the door posts stop it in the doorway, and quarter turns to the right only ever send
+// it back down the hall. It touches nothing, but that counts only for a robot that gets about.
+TEST(WanderAssignment, QuarterTurnsToTheRightNeverLeaveTheHall) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "quarter_turns.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kHall, 0}, {kTouch, 0}, {kExplore, 0}, {kUnseen, 0}}));
+  EXPECT_THAT(reasons(g, kHall), HasSubstr("in worlds/living_room.toml, seed 1: never came within 0.50 m of room (closest 1.57 m"));
+  EXPECT_THAT(reasons(g, kTouch), HasSubstr("covered 3% of the floor it could reach (1 of 32 cells of 1.00 m); 25% required"));
+  EXPECT_THAT(reasons(g, kExplore), HasSubstr("covered 6% of the floor it could reach (2 of 32 cells of 1.00 m); 50% required"));
+  EXPECT_THAT(reasons(g, kUnseen), HasSubstr("in hidden_worlds/kitchen.toml, seed "));
+  EXPECT_THAT(reasons(g, kUnseen), HasSubstr("covered 10% of the floor it could reach"));
+}
+
+// A good explorer that finds the walls with its bumpers: out of the hall and all over the rooms,
+// touching every wall it turns away from.
+TEST(WanderAssignment, StoppingOnTheBumperExploresButTouches) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "stops_on_bumper.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kHall, 2}, {kTouch, 0}, {kExplore, 3}, {kUnseen, 0}}));
+  EXPECT_THAT(reasons(g, kTouch), HasSubstr("in worlds/living_room.toml, seed 1: touched a wall at 10.7 s at (4.0, 5.8) (12 contacts; 0 allowed)"));
+  EXPECT_THAT(reasons(g, kUnseen), HasSubstr("in hidden_worlds/study.toml, seed "));
+  EXPECT_THAT(reasons(g, kUnseen), HasSubstr("touched a wall at 13.8 s"));
+}
+
+// Example 1 copied as it is: its goAhead also stops when anything is within 25 cm to a side, and
+// its turnRight waits for 30 cm on both sides: it stops for the door posts, turns back down the
+// hall, and spins for ever at the end of the hall, where no heading gives 30 cm on both sides.
+TEST(WanderAssignment, Example1AsItIsNeverLeavesTheHall) {
+  course::Grade g = gradeFile(example("01_run_around.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kHall, 0}, {kTouch, 0}, {kExplore, 0}, {kUnseen, 0}}));
+  EXPECT_THAT(reasons(g, kHall), HasSubstr("in worlds/bedroom.toml, seed 1: never came within 0.50 m of room (closest 1.61 m"));
+  EXPECT_THAT(reasons(g, kTouch), HasSubstr("covered 3% of the floor it could reach (1 of 32 cells of 1.00 m); 25% required"));
+  EXPECT_THAT(reasons(g, kExplore), HasSubstr("covered 6% of the floor it could reach (2 of 32 cells of 1.00 m); 50% required"));
+  EXPECT_THAT(reasons(g, kUnseen), HasSubstr("covered 5% of the floor it could reach"));
+}
+
+}  // namespace
+}  // namespace frob::testing
