@@ -1,0 +1,160 @@
+// The bug assignment graded as CI grades it, hidden checks included (test secret): the reference
+// solution gets full marks, the starter nothing, and each typical wrong submission of
+// tests/assignments/bug/ exactly the partial score it deserves, failing the checks it should with
+// a reason a student can act on. Course example 6 (the paper's BUG), copied as it is or with its
+// goal corrected, does not pass: it goes all the way round every obstacle and nothing limits how
+// long it goes round.
+#include "grade_assignment.hpp"
+
+#include "frob/course/generate.hpp"
+
+#include <gmock/gmock.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace frob::testing {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+using Scores = std::map<std::string, double>;
+
+constexpr const char* kAssignment = "bug";
+const std::string kReaches = "reaches the goal";
+const std::string kBound = "within the BUG1 bound";
+const std::string kHidden = "hidden fields";
+
+// What the grader told the student about `check` (one line per failed run), "" when it passed.
+std::string reasons(const course::Grade& g, const std::string& check) {
+  for (const course::CheckGrade& c : g.checks) {
+    if (c.name == check) return c.output();
+  }
+  ADD_FAILURE() << "no check named '" << check << "'";
+  return "";
+}
+
+course::Grade gradeFile(const std::filesystem::path& file) {
+  course::Grade g = gradeAssignment(kAssignment, file);
+  EXPECT_EQ(g.compileError, "") << file;
+  return g;
+}
+
+std::string readFile(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(BugAssignment, RubricHasTheChecksTheHandoutDescribes) {
+  course::Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
+  ASSERT_TRUE(rubric.ok()) << rubric.error();
+  Scores points;
+  for (const course::Check& c : rubric.value().checks) points[c.name] = c.points;
+  EXPECT_EQ(points, (Scores{{kReaches, 5}, {kBound, 3}, {kHidden, 4}}));
+  const course::Check& hidden = rubric.value().checks.back();
+  EXPECT_EQ(hidden.name, kHidden);
+  EXPECT_EQ(hidden.visibility, course::Visibility::Hidden);
+  ASSERT_TRUE(hidden.generated.has_value());
+  EXPECT_EQ(hidden.generated->kind, course::WorldKind::Obstacles);
+  EXPECT_EQ(hidden.generated->secret, 4);
+}
+
+// The visible worlds are generated obstacle fields, exactly as `frob world generate obstacles
+// --seed N` writes them (plus one comment line saying so), so the handout's promises hold for them:
+// start (1.5, 1.5), goal (13.5, 13.5), a way between.
+TEST(BugAssignment, VisibleWorldsAreGeneratedFields) {
+  for (const auto& [file, seed] : {std::pair{"worlds/trap.toml", 58}, std::pair{"worlds/field.toml", 19}}) {
+    course::Result<worlds::WorldDef> made = course::generateWorld(course::WorldKind::Obstacles, seed);
+    ASSERT_TRUE(made.ok()) << made.error();
+    std::string text = readFile(assignmentFile(kAssignment, file));
+    const std::string note = "# frob world generate obstacles --seed " + std::to_string(seed) +
+                             " --out assignments/bug/" + file + "\n";
+    const std::size_t at = text.find(note);
+    ASSERT_NE(at, std::string::npos) << file;
+    text.erase(at, note.size());
+    EXPECT_EQ(text, course::toToml(made.value())) << file;
+  }
+}
+
+TEST(BugAssignment, SolutionGetsFullMarksOnEveryCheck) {
+  course::Grade g = gradeFile(assignmentFile(kAssignment, "solution.cpp"));
+  ASSERT_EQ(g.checks.size(), 3u);
+  for (const course::CheckGrade& c : g.checks) EXPECT_EQ(c.score, c.points) << c.name << ":\n" << c.output();
+  EXPECT_EQ(g.score(), 12.0);
+}
+
+// The starter drives at the goal and stops at the first obstacle: it compiles and runs, and earns
+// nothing yet.
+TEST(BugAssignment, StarterScoresNothing) {
+  course::Grade g = gradeFile(assignmentFile(kAssignment, "starter.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}}));
+  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 58: never came within 0.30 m of goal"));
+  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 19: never came within 0.30 m of goal"));
+  EXPECT_THAT(reasons(g, kBound), HasSubstr("so its path cannot be measured"));
+  EXPECT_THAT(reasons(g, kHidden), HasSubstr("never came within 0.30 m of goal"));
+}
+
+// Without taskCatch, the first error ends the controller. In the trap field (and in one hidden
+// field) the robot loses the obstacle it met (it follows a neighbour whose circle never passes
+// where it started), its 30 s limit for going round runs out, and nothing restarts BUG; in the
+// other fields no leg fails and it does as well as the solution.
+TEST(BugAssignment, ForgettingTaskCatchStopsAtTheFirstError) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "no_task_catch.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 3}, {kHidden, 3}}));
+  const std::string why = reasons(g, kReaches);
+  EXPECT_THAT(why, HasSubstr("in worlds/trap.toml, seed 58: the controller failed"));
+  EXPECT_THAT(why, HasSubstr("going round one obstacle took more than 30 s"));
+  EXPECT_THAT(why, Not(HasSubstr("field.toml")));
+  EXPECT_THAT(reasons(g, kHidden), HasSubstr("hidden world 4"));
+  EXPECT_THAT(reasons(g, kHidden), HasSubstr("the controller failed"));
+}
+
+// Example 06 pasted onto the starter (goal corrected): the paper's BUG goes all the way round every
+// obstacle and on to the closest point. In the trap field it circles a neighbour for ever; in the
+// open field it arrives, late and far past the BUG1 bound. Of the hidden fields it passes one.
+TEST(BugAssignment, ThePapersBugCirclesForeverAndDrivesPastTheBound) {
+  course::Grade g = gradeFile(wrongSubmission(kAssignment, "circles_forever.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1}}));
+  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 58: never came within 0.30 m of goal"));
+  EXPECT_THAT(reasons(g, kBound), HasSubstr("in worlds/field.toml, seed 19: drove 42.44 m to goal; the BUG1 bound is 33.59 m"));
+  const std::string hidden = reasons(g, kHidden);
+  EXPECT_THAT(hidden, HasSubstr("hidden world 1"));
+  EXPECT_THAT(hidden, HasSubstr("the BUG1 bound is"));
+  EXPECT_THAT(hidden, HasSubstr("never came within 0.30 m of goal"));
+  EXPECT_THAT(hidden, Not(HasSubstr("hidden world 2")));
+}
+
+// Course example 6 copied as it is drives to the reference world's goal (13, 13), not the
+// generated fields' (13.5, 13.5): it gets nothing.
+TEST(BugAssignment, CopiedExampleSixGetsNothing) {
+  course::Grade g = gradeFile(example("06_bug.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}}));
+  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 19: never came within 0.30 m of goal (closest 0.84 m"));
+  EXPECT_THAT(reasons(g, kBound), HasSubstr("so its path cannot be measured"));
+}
+
+// Example 6 with its goal corrected to (13.5, 13.5) is still not an answer: it never gets out of
+// the trap field in time, exceeds the BUG1 bound in the open field, and fails every hidden field.
+TEST(BugAssignment, ExampleSixWithTheGoalCorrectedDoesNotPass) {
+  std::string source = readFile(example("06_bug.cpp"));
+  const std::string goal = "Point2 goal{13, 13};";
+  const std::size_t at = source.find(goal);
+  ASSERT_NE(at, std::string::npos) << "example 06 no longer sets its goal with '" << goal << "'";
+  source.replace(at, goal.size(), "Point2 goal{13.5, 13.5};");
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "bug_test_example06";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "example06_goal_corrected.cpp") << source;
+
+  course::Grade g = gradeFile(dir / "example06_goal_corrected.cpp");
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 0}}));
+  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 58: never came within 0.30 m of goal"));
+  EXPECT_THAT(reasons(g, kBound), HasSubstr("drove 43.49 m to goal; the BUG1 bound is 33.59 m"));
+  for (const char* world : {"hidden world 1", "hidden world 2", "hidden world 3", "hidden world 4"}) {
+    EXPECT_THAT(reasons(g, kHidden), HasSubstr(world));
+  }
+}
+
+}  // namespace
+}  // namespace frob::testing

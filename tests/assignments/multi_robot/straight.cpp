@@ -1,0 +1,89 @@
+// A typical wrong submission for "multi_robot": every robot drives straight at its (correct) goal
+// and never looks out for the others, so they meet in the middle. Otherwise the reference solution.
+
+#include <frob/frob.hpp>
+
+#include <utility>
+
+using namespace frob;
+using namespace frob::literals;
+
+constexpr double kSpeed = 0.5;       // m/s, a little under the top speed, so that turns stay tight
+constexpr double kLookout = 1.0;     // m: anyone nearer than this ahead makes us give way
+
+// ---- Step 1. The goal --------------------------------------------------------------------------
+//
+// A controller never sees the world file, so the goal must come from what the robot knows: where
+// it started. Odometry reports world coordinates, starting at the true start pose, without drift
+// here. The point opposite `start` through the centre c is c + (c - start).
+const Point2 kCentre{5.0, 5.0};
+Point2 oppositeOf(Point2 start) { return kCentre + (kCentre - start); }
+
+// ---- Step 2. Sensing ---------------------------------------------------------------------------
+//
+// The nearest echo among the five sonars that look ahead (0 = front, 1-2 left, 14-15 right).
+// Other robots are round, so some ray always meets them head-on: they echo from every side.
+Behavior<double> frontArc(const Robot& r) {
+  return min(min(min(sonar(r, 14), sonar(r, 15)), min(sonar(r, 0), sonar(r, 1))), sonar(r, 2));
+}
+
+// ---- Step 3. driveTo, giving up when someone is in the way --------------------------------------
+
+// Turn on the spot to face `goal`.
+Task<Wheels> faceGoal(Point2 goal) {
+  return mkTask([goal](const TaskState& ts) {
+    const Robot& r = ts.robot();
+    Behavior<double> error = wrapAngle(heading(goal - place(r)) - orientation(r));
+    return std::pair{wheels(0, clamp(2.0 * error, -1.0, 1.0)), predicate(abs(error) < 10_deg)};
+  });
+}
+
+// Head for `goal`: true when there; false when someone is less than kLookout ahead and nearer
+// than the goal (someone standing beyond our goal is not in our way).
+Task<Wheels, bool> driveTo(Point2 goal) {
+  co_await faceGoal(goal);
+  co_return co_await mkTask([goal](const TaskState& ts) {
+    const Robot& r = ts.robot();
+    Behavior<double> error = wrapAngle(heading(goal - place(r)) - orientation(r));
+    Behavior<double> left = distance(place(r), goal);
+    Behavior<double> ahead = frontArc(r);
+    auto forward = min(kSpeed, left) * max(cos(error), 0.0);  // slow down at the end
+    Event<bool> there = predicate(left < 10_cm).map([] { return true; });
+    (void)ahead;  // THE MISTAKE: nobody looks out for anyone; every robot drives straight at its goal
+    return std::pair{wheels(forward, clamp(2.0 * error, -1.0, 1.0)), there};
+  });
+}
+
+// ---- Step 4. Giving way ------------------------------------------------------------------------
+
+// Keep right: turn 45 degrees to the right on the spot, then drive on for 2 s, slowing down for
+// anyone ahead and turning further right while someone is close.
+Task<Wheels> keepRight() {
+  // 1 rad/s for 45_deg (0.79) seconds: about 45 degrees.
+  co_await mkTask([](const TaskState&) { return std::pair{wheels(0.0, -1.0), after(45_deg)}; });
+  co_await mkTask([](const TaskState& ts) {
+    const Robot& r = ts.robot();
+    Behavior<double> ahead = frontArc(r);
+    auto forward = kSpeed * clamp((ahead - 30_cm) / 50_cm, 0.0, 1.0);
+    auto turn = lift([](double a) { return a < 0.8 ? -0.8 : 0.0; }, ahead);
+    return std::pair{wheels(forward, turn), after(2_s)};
+  });
+}
+
+// ---- Step 5. The controller --------------------------------------------------------------------
+
+// Drive at `goal`, giving way whenever someone is in the way, until there.
+Task<Wheels> crossTo(Point2 goal) {
+  while (!co_await driveTo(goal)) co_await keepRight();
+}
+
+// Work out the goal from where this task began (the robot's start), then cross to it, with the
+// goal drawn. Ending the task stops the robot.
+Task<Wheels> crossArena() {
+  TaskState ts = co_await getTaskState();
+  Point2 goal = oppositeOf(ts.initialPlace());
+  co_await withPicture(paintAt(goal, withColor(red, circle(15_cm))), crossTo(goal));
+}
+
+FROB_CONTROLLER(crossArena, .world = "assignments/multi_robot/worlds/corners.toml", .seconds = 35,
+                .summary = "every robot crosses to the point opposite its start, keeping right of the others")
