@@ -7,9 +7,10 @@
 //   "format_errors"; the file must stay under 1 MB.
 // - JUnit XML: the Jenkins/Surefire schema junit-10.xsd (<testsuite> needs name, tests, failures, errors;
 //   time with at most three decimals); XML 1.0 forbids most control characters, even escaped.
-// - CSV: RFC 4180 (fields with a comma, quote, CR or LF quoted, quotes doubled, records ended by CRLF).
 
 #include "frob/course/grade_report.hpp"
+
+#include "grade_files.hpp"
 
 #include "frob/render/output_file.hpp"
 
@@ -27,6 +28,10 @@
 #include <string_view>
 
 namespace frob::course {
+
+using detail::number;
+using detail::readWhole;
+using detail::writeWhole;
 
 namespace {
 
@@ -65,11 +70,6 @@ double rounded(double points) {
   return r == 0.0 ? 0.0 : r;  // no "-0"
 }
 
-// `points` rounded, in the shortest text that reads back as the same double ("2", "0.5", "0.6667").
-std::string number(double points) {
-  char buf[32];
-  return {buf, std::to_chars(buf, buf + sizeof buf, rounded(points)).ptr};
-}
 
 // The lines of `text`, without their "\n" or "\r\n"; "" gives none.
 std::vector<std::string> linesOf(const std::string& text) {
@@ -254,111 +254,11 @@ std::string base64(std::string_view bytes) {
 
 // ---- Files -------------------------------------------------------------------------------------
 
-// Writes `bytes` to `<path>.partial` and renames it to `path`; `what` names the file in messages.
-Status writeWhole(const fs::path& path, const std::string& what, const std::string& bytes) {
-  const std::string name = path.string();
-  if (Status s = render::checkWritable(name, what); !s) return s;
-  const std::string partial = render::partialPath(name);
-  {
-    std::ofstream out(partial, std::ios::binary | std::ios::trunc);
-    if (!out) return Status::failure(what + ": cannot write '" + partial + "': " + std::strerror(errno));
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) {
-      const std::string why = std::strerror(errno);
-      render::discardPartial(name);
-      return Status::failure(what + ": cannot write '" + partial + "': " + why);
-    }
-  }
-  return render::commitPartial(name, what);
-}
 
-Result<std::string> readWhole(const fs::path& path, const std::string& what) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Status::failure(what + ": cannot read '" + path.string() + "': " + std::strerror(errno));
-  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) return Status::failure(what + ": cannot read '" + path.string() + "': " + std::strerror(errno));
-  return bytes;
-}
 
 std::string dump(const Json& doc) {
   // Malformed UTF-8 (a compiler quoting a Latin-1 source) becomes U+FFFD instead of an exception.
   return doc.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
-}
-
-// ---- CSV ---------------------------------------------------------------------------------------
-
-void appendCsvField(std::string& line, std::string_view text) {
-  if (text.find_first_of(",\"\r\n") == std::string_view::npos) {
-    line += text;
-    return;
-  }
-  line += '"';
-  for (char c : text) {
-    if (c == '"') line += '"';
-    line += c;
-  }
-  line += '"';
-}
-
-std::string csvRecord(const std::vector<std::string>& fields) {
-  std::string line;
-  for (std::size_t i = 0; i < fields.size(); ++i) {
-    if (i > 0) line += ',';
-    appendCsvField(line, fields[i]);
-  }
-  return line + "\r\n";
-}
-
-struct CsvRow {
-  std::vector<std::string> fields;
-  int line = 0;  // where it starts
-};
-
-// Reads RFC 4180 text (records ended by CRLF or LF; quoted fields may hold both).
-Result<std::vector<CsvRow>> parseCsv(std::string_view text, const std::string& file) {
-  const auto endsRecord = [&](std::size_t k) {
-    return text[k] == '\n' || (text[k] == '\r' && k + 1 < text.size() && text[k + 1] == '\n');
-  };
-  const auto error = [&](int at, const std::string& what) {
-    return Status::failure("gradebook: " + file + ":" + std::to_string(at) + ": " + what);
-  };
-  std::vector<CsvRow> rows;
-  std::size_t i = 0;
-  int line = 1;
-  while (i < text.size()) {
-    CsvRow& row = rows.emplace_back(CsvRow{.fields = {}, .line = line});
-    for (;;) {  // one field
-      std::string& field = row.fields.emplace_back();
-      if (i < text.size() && text[i] == '"') {
-        const int opened = line;
-        for (++i;; ++i) {
-          if (i >= text.size()) return error(opened, "a quoted field is not closed");
-          if (text[i] == '"' && (i + 1 >= text.size() || text[i + 1] != '"')) break;  // the closing quote
-          if (text[i] == '"') ++i;                                                    // "" is one quote
-          if (text[i] == '\n') ++line;
-          field += text[i];
-        }
-        ++i;
-        if (i < text.size() && text[i] != ',' && !endsRecord(i)) return error(line, "text after a closing quote");
-      } else {
-        for (; i < text.size() && text[i] != ',' && !endsRecord(i); ++i) {
-          if (text[i] == '"') return error(line, "a quote inside an unquoted field");
-          field += text[i];
-        }
-      }
-      if (i < text.size() && text[i] == ',') {
-        ++i;
-        continue;
-      }
-      if (i < text.size()) {  // the end of the record
-        i += text[i] == '\r' ? 2 : 1;
-        ++line;
-      }
-      break;
-    }
-  }
-  return rows;
 }
 
 // ---- PrairieLearn ------------------------------------------------------------------------------
@@ -430,6 +330,43 @@ Json prairieLearnResults(const Grade& g, std::size_t limit) {
 }
 
 }  // namespace
+
+namespace detail {
+
+// `points` rounded, in the shortest text that reads back as the same double ("2", "0.5", "0.6667").
+std::string number(double points) {
+  char buf[32];
+  return {buf, std::to_chars(buf, buf + sizeof buf, rounded(points)).ptr};
+}
+
+// Writes `bytes` to `<path>.partial` and renames it to `path`; `what` names the file in messages.
+Status writeWhole(const fs::path& path, const std::string& what, const std::string& bytes) {
+  const std::string name = path.string();
+  if (Status s = render::checkWritable(name, what); !s) return s;
+  const std::string partial = render::partialPath(name);
+  {
+    std::ofstream out(partial, std::ios::binary | std::ios::trunc);
+    if (!out) return Status::failure(what + ": cannot write '" + partial + "': " + std::strerror(errno));
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out) {
+      const std::string why = std::strerror(errno);
+      render::discardPartial(name);
+      return Status::failure(what + ": cannot write '" + partial + "': " + why);
+    }
+  }
+  return render::commitPartial(name, what);
+}
+
+Result<std::string> readWhole(const fs::path& path, const std::string& what) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Status::failure(what + ": cannot read '" + path.string() + "': " + std::strerror(errno));
+  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) return Status::failure(what + ": cannot read '" + path.string() + "': " + std::strerror(errno));
+  return bytes;
+}
+
+}  // namespace detail
 
 std::string scoreTable(const Grade& g) {
   struct Row {
@@ -564,89 +501,6 @@ Status writeJUnit(const Grade& g, const fs::path& path) {
   }
   xml += "</testsuite>\n";
   return writeWhole(path, "junit report", xml);
-}
-
-Status writeGradebook(const std::vector<Grade>& grades, const fs::path& path) {
-  std::vector<const Grade*> sorted;
-  for (const Grade& g : grades) sorted.push_back(&g);
-  std::stable_sort(sorted.begin(), sorted.end(), [](const Grade* a, const Grade* b) { return a->submission < b->submission; });
-  for (std::size_t i = 1; i < sorted.size(); ++i) {
-    if (sorted[i]->submission == sorted[i - 1]->submission) {
-      return Status::failure("gradebook: cannot write '" + path.string() + "': submission '" + sorted[i]->submission +
-                             "' is graded twice");
-    }
-  }
-  // The checks' columns: every check of every grade, in the order they first appear.
-  std::vector<std::string> header{"submission", "score", "max_score"};
-  std::set<std::string> known;
-  for (const Grade* g : sorted) {
-    for (const CheckGrade& c : g->checks) {
-      if (known.insert(c.name).second) header.push_back(c.name);
-    }
-  }
-  std::string csv = csvRecord(header);
-  for (const Grade* g : sorted) {
-    std::vector<std::string> row{g->submission, number(g->score()), number(g->maxScore())};
-    for (std::size_t k = 3; k < header.size(); ++k) {
-      const auto c = std::find_if(g->checks.begin(), g->checks.end(), [&](const CheckGrade& x) { return x.name == header[k]; });
-      row.push_back(c == g->checks.end() ? std::string() : number(c->score));  // empty: not graded
-    }
-    csv += csvRecord(row);
-  }
-  return writeWhole(path, "gradebook", csv);
-}
-
-Result<std::vector<std::string>> mergeGradebooks(const std::vector<fs::path>& shards, const fs::path& out) {
-  if (shards.empty()) return Status::failure("gradebook: no gradebooks to merge into '" + out.string() + "'");
-  std::vector<std::string> header;
-  fs::path headerFile;
-  struct Source {
-    std::vector<std::string> fields;
-    std::string where;  // file:line
-  };
-  std::map<std::string, Source> rows;  // by submission, sorted
-  for (const fs::path& shard : shards) {
-    Result<std::string> text = readWhole(shard, "gradebook");
-    if (!text) return text.status();
-    Result<std::vector<CsvRow>> parsed = parseCsv(text.value(), shard.string());
-    if (!parsed) return parsed.status();
-    const std::vector<CsvRow>& records = parsed.value();
-    if (records.empty()) return Status::failure("gradebook: " + shard.string() + " is empty (no header)");
-    if (records[0].fields.size() < 3 || records[0].fields[0] != "submission") {
-      return Status::failure("gradebook: " + shard.string() +
-                             ":1: not a gradebook (the header must start with submission,score,max_score)");
-    }
-    if (header.empty()) {
-      header = records[0].fields;
-      headerFile = shard;
-    } else if (records[0].fields != header) {
-      std::string got = csvRecord(records[0].fields), want = csvRecord(header);
-      got.resize(got.size() - 2);
-      want.resize(want.size() - 2);
-      return Status::failure("gradebook: " + shard.string() + ":1: its header \"" + got + "\" differs from \"" + want + "\" of " +
-                             headerFile.string() + " (gradebooks of different rubrics?)");
-    }
-    for (std::size_t i = 1; i < records.size(); ++i) {
-      const CsvRow& r = records[i];
-      const std::string where = shard.string() + ":" + std::to_string(r.line);
-      if (r.fields.size() != header.size()) {
-        return Status::failure("gradebook: " + where + ": " + std::to_string(r.fields.size()) + " fields where the header has " +
-                               std::to_string(header.size()));
-      }
-      const auto [it, added] = rows.try_emplace(r.fields[0], Source{.fields = r.fields, .where = where});
-      if (!added) {
-        return Status::failure("gradebook: submission '" + r.fields[0] + "' is in " + it->second.where + " and in " + where);
-      }
-    }
-  }
-  std::string csv = csvRecord(header);
-  std::vector<std::string> submissions;
-  for (const auto& [submission, source] : rows) {
-    csv += csvRecord(source.fields);
-    submissions.push_back(submission);
-  }
-  if (Status s = writeWhole(out, "gradebook", csv); !s) return s;
-  return submissions;
 }
 
 Status writeHtmlReport(const Grade& g, const HtmlMedia& media, const fs::path& path) {
