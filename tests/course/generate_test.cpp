@@ -56,11 +56,25 @@ bool reachable(const worlds::WorldDef& w, const Point2& a, const Point2& b) {
   return false;
 }
 
-// The gap between two walls: the least, over a 2 cm grid, of the sum of the distances to both.
-double gap(const WallDef& a, const WallDef& b, const Vec2& size) {
+// A wall's bounding box.
+std::pair<Point2, Point2> boxOf(const WallDef& w) {
+  Point2 lo = w.points[0], hi = lo;
+  for (const Point2& p : w.points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return {lo - Vec2(w.radius, w.radius), hi + Vec2(w.radius, w.radius)};
+}
+
+// The gap between two walls: the least, over a 2 cm grid, of the sum of the distances to both. It
+// is reached between them, so the grid covers their joint bounding box only; walls whose boxes are
+// `enough` apart are at least that far apart and are not sampled.
+double gap(const WallDef& a, const WallDef& b, double enough) {
+  const auto [loA, hiA] = boxOf(a);
+  const auto [loB, hiB] = boxOf(b);
+  const Vec2 apart = (loB - hiA).cwiseMax(loA - hiB).cwiseMax(Vec2::Zero());
+  if (apart.norm() > enough) return apart.norm();
+  const Point2 lo = loA.cwiseMin(loB), hi = hiA.cwiseMax(hiB);
   double best = INFINITY;
-  for (double x = 0; x <= size.x(); x += 0.02) {
-    for (double y = 0; y <= size.y(); y += 0.02) best = std::min(best, worlds::distanceToWall({x, y}, a) + worlds::distanceToWall({x, y}, b));
+  for (double x = lo.x(); x <= hi.x(); x += 0.02) {
+    for (double y = lo.y(); y <= hi.y(); y += 0.02) best = std::min(best, worlds::distanceToWall({x, y}, a) + worlds::distanceToWall({x, y}, b));
   }
   return best;
 }
@@ -107,7 +121,7 @@ TEST(Generate, ObstaclesAreMoreThanTheRobotsDiameterApart) {
     ASSERT_GE(w.walls.size(), 8u);
     for (std::size_t i = 0; i < w.walls.size(); ++i) {
       for (std::size_t j = i + 1; j < w.walls.size(); ++j) {
-        EXPECT_GT(gap(w.walls[i], w.walls[j], w.size), 2 * kRadius + 0.1 - 0.03) << "seed " << seed << ": " << i << ", " << j;  // 2 cm grid
+        EXPECT_GT(gap(w.walls[i], w.walls[j], 1.0), 2 * kRadius + 0.1 - 0.03) << "seed " << seed << ": " << i << ", " << j;  // 2 cm grid
       }
     }
   }
