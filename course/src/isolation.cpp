@@ -241,7 +241,9 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
   if constexpr (kSanitizedBuild) {
     // Memory is watched by its size instead of limited (see kSanitizedBuild); crashes are left to
     // the kernel so that they read as the signals they are.
-    jail.env = {"ASAN_OPTIONS=detect_leaks=0:handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_abort=0:symbolize=0"};
+    // Real stacks (no fake ones for use-after-return), so that an overflow faults next to the stack.
+    jail.env = {"ASAN_OPTIONS=detect_leaks=0:handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_abort=0:symbolize=0:"
+                "detect_stack_use_after_return=0"};
     jail.files.read.push_back("/proc");
   }
   impl->memoryLimited = !kSanitizedBuild;
