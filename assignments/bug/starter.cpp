@@ -190,5 +190,5 @@ Task<Wheels> bugToGoal() {
   co_await withPicture(paintAt(kGoal, withColor(red, disc(10_cm) + text("goal"))), driveTo(kGoal));
 }
 
-FROB_CONTROLLER(bugToGoal, .world = "assignments/bug/worlds/trap.toml", .seconds = 90,
+FROB_CONTROLLER(bugToGoal, .world = "assignments/bug/worlds/trap.toml", .seconds = 120,
                 .summary = "the bug assignment's starter: drive at the goal, stop at the first obstacle")

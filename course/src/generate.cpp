@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <optional>
 
 namespace frob::course {
 
@@ -16,6 +17,7 @@ namespace {
 
 constexpr double kRadius = 0.23;     // the Nomad's body, which the promises are kept for
 constexpr double kClearance = 0.1;   // around the body at the start and the goal
+constexpr double kTrapClearance = 1.5;  // round an obstacle field's L trap: more than a wall follower's reach
 
 // SplitMix64, with reals from the top 53 bits: the same numbers from every standard library.
 class Random {
@@ -95,12 +97,14 @@ double gapBetween(const WallDef& a, const WallDef& b) {
 WorldDef obstacles(Random& r, std::uint64_t seed) {
   WorldDef w = base("Generated obstacle field: blocks, pillars and a trap between the start and the goal", {15, 15}, seed,
                     {1.5, 1.5}, 45, {13.5, 13.5});
-  const double apart = 2 * kRadius + 0.1;  // BUG can go round each obstacle on its own
+  const double apart = 2 * kRadius + 0.3;  // a wall follower passes between two obstacles without touching either
   std::vector<WallDef> placed;
+  std::optional<WallDef> trapArea;  // the square an L spans: the trap stands alone, with nothing in it or near it
   if (r.next() % 2 == 0) {  // an L whose inside corner faces the start: the trap BUG must leave
     const Point2 c = Point2(r.uniform(5.5, 9.5), r.uniform(5.5, 9.5));
     const double s = r.uniform(1.2, 1.8);
     placed.push_back(worlds::polylineWall({c + Point2(-s, s), c + Point2(s, s), c + Point2(s, -s)}));
+    trapArea = worlds::rectangleWall(Point2(c - Vec2(s, s)), Point2(c + Vec2(s, s)));
   }
   const int count = r.integer(8, 14);
   for (int attempt = 0; static_cast<int>(placed.size()) < count && attempt < 500; ++attempt) {
@@ -113,7 +117,9 @@ WorldDef obstacles(Random& r, std::uint64_t seed) {
       o = worlds::rectangleWall(Point2(c - half), Point2(c + half));
     }
     const bool clearOfEnds = worlds::distanceToWall(w.robots[0].start.position, o) > 1.0 && worlds::distanceToWall(w.points[0].position, o) > 1.0;
-    const bool clearOfOthers = std::all_of(placed.begin(), placed.end(), [&](const WallDef& p) { return gapBetween(o, p) > apart && gapBetween(p, o) > apart; });
+    const auto clearOf = [&](const WallDef& p, double gap) { return gapBetween(o, p) > gap && gapBetween(p, o) > gap; };
+    const bool clearOfOthers = std::all_of(placed.begin(), placed.end(), [&](const WallDef& p) { return clearOf(p, apart); }) &&
+                               (!trapArea || clearOf(*trapArea, kTrapClearance));
     if (clearOfEnds && clearOfOthers) placed.push_back(o);
   }
   w.walls = placed;

@@ -65,7 +65,7 @@ TEST(BugAssignment, RubricHasTheChecksTheHandoutDescribes) {
 // --seed N` writes them (plus one comment line saying so), so the handout's promises hold for them:
 // start (1.5, 1.5), goal (13.5, 13.5), a way between.
 TEST(BugAssignment, VisibleWorldsAreGeneratedFields) {
-  for (const auto& [file, seed] : {std::pair{"worlds/trap.toml", 58}, std::pair{"worlds/field.toml", 19}}) {
+  for (const auto& [file, seed] : {std::pair{"worlds/trap.toml", 70}, std::pair{"worlds/field.toml", 19}}) {
     course::Result<worlds::WorldDef> made = course::generateWorld(course::WorldKind::Obstacles, seed);
     ASSERT_TRUE(made.ok()) << made.error();
     std::string text = readFile(assignmentFile(kAssignment, file));
@@ -90,21 +90,20 @@ TEST(BugAssignment, SolutionGetsFullMarksOnEveryCheck) {
 TEST(BugAssignment, StarterScoresNothing) {
   course::Grade g = gradeFile(assignmentFile(kAssignment, "starter.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}}));
-  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 58: never came within 0.30 m of goal"));
+  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 70: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 19: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kBound), HasSubstr("so its path cannot be measured"));
   EXPECT_THAT(reasons(g, kHidden), HasSubstr("never came within 0.30 m of goal"));
 }
 
 // Without taskCatch, the first error ends the controller. In the trap field (and in one hidden
-// field) the robot loses the obstacle it met (it follows a neighbour whose circle never passes
-// where it started), its 30 s limit for going round runs out, and nothing restarts BUG; in the
-// other fields no leg fails and it does as well as the solution.
+// field) going round takes longer than its 30 s limit, and nothing restarts BUG; in the other
+// fields no leg fails and it does as well as the solution.
 TEST(BugAssignment, ForgettingTaskCatchStopsAtTheFirstError) {
   course::Grade g = gradeFile(wrongSubmission(kAssignment, "no_task_catch.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 3}, {kHidden, 3}}));
   const std::string why = reasons(g, kReaches);
-  EXPECT_THAT(why, HasSubstr("in worlds/trap.toml, seed 58: the controller failed"));
+  EXPECT_THAT(why, HasSubstr("in worlds/trap.toml, seed 70: the controller failed"));
   EXPECT_THAT(why, HasSubstr("going round one obstacle took more than 30 s"));
   EXPECT_THAT(why, Not(HasSubstr("field.toml")));
   EXPECT_THAT(reasons(g, kHidden), HasSubstr("hidden world 4"));
@@ -112,17 +111,16 @@ TEST(BugAssignment, ForgettingTaskCatchStopsAtTheFirstError) {
 }
 
 // Example 06 pasted onto the starter (goal corrected): the paper's BUG goes all the way round every
-// obstacle and on to the closest point. In the trap field it circles a neighbour for ever; in the
-// open field it arrives, late and far past the BUG1 bound. Of the hidden fields it passes one.
+// obstacle and on to the closest point. In the trap field that takes longer than the run; in the
+// open field and three hidden ones it arrives, late and far past the BUG1 bound.
 TEST(BugAssignment, ThePapersBugCirclesForeverAndDrivesPastTheBound) {
   course::Grade g = gradeFile(wrongSubmission(kAssignment, "circles_forever.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1}}));
-  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 58: never came within 0.30 m of goal"));
+  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 70: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kBound), HasSubstr("in worlds/field.toml, seed 19: drove 42.44 m to goal; the BUG1 bound is 33.59 m"));
   const std::string hidden = reasons(g, kHidden);
   EXPECT_THAT(hidden, HasSubstr("hidden world 1"));
   EXPECT_THAT(hidden, HasSubstr("the BUG1 bound is"));
-  EXPECT_THAT(hidden, HasSubstr("never came within 0.30 m of goal"));
   EXPECT_THAT(hidden, Not(HasSubstr("hidden world 2")));
 }
 
@@ -149,7 +147,7 @@ TEST(BugAssignment, ExampleSixWithTheGoalCorrectedDoesNotPass) {
 
   course::Grade g = gradeFile(dir / "example06_goal_corrected.cpp");
   EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 0}}));
-  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 58: never came within 0.30 m of goal"));
+  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 70: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kBound), HasSubstr("drove 43.49 m to goal; the BUG1 bound is 33.59 m"));
   for (const char* world : {"hidden world 1", "hidden world 2", "hidden world 3", "hidden world 4"}) {
     EXPECT_THAT(reasons(g, kHidden), HasSubstr(world));

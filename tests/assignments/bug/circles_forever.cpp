@@ -216,4 +216,4 @@ Task<Wheels> bug(Point2 g) {
 
 Task<Wheels> bugToGoal() { co_await bug(kGoal); }
 
-FROB_CONTROLLER(bugToGoal, .world = "assignments/bug/worlds/trap.toml", .seconds = 90)
+FROB_CONTROLLER(bugToGoal, .world = "assignments/bug/worlds/trap.toml", .seconds = 120)

@@ -262,5 +262,5 @@ Task<Wheels> bugToGoal() {
   co_await withPicture(paintAt(kGoal, withColor(red, disc(10_cm) + text("goal"))), bug(kGoal));
 }
 
-FROB_CONTROLLER(bugToGoal, .world = "assignments/bug/worlds/trap.toml", .seconds = 90,
+FROB_CONTROLLER(bugToGoal, .world = "assignments/bug/worlds/trap.toml", .seconds = 120,
                 .summary = "BUG with a leave rule, time limits and taskCatch in a random obstacle field")
