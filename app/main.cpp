@@ -209,6 +209,10 @@ int listCommand() {
 
 }  // namespace
 
+// Where a student looks for the world format: the help of every command that takes a world.
+constexpr const char* kWorldHelp =
+    "Reference world name (frob list), or a world file: TOML, its format in worlds/data/README.md";
+
 }  // namespace frob::app
 
 int main(int argc, char** argv) {
@@ -221,7 +225,7 @@ int main(int argc, char** argv) {
   CLI::App* runCmd = cli.add_subcommand("run", "Run controllers in a world; with none, the BUG demo");
   runCmd->footer(frob::app::kExamples);
   runCmd->add_option("controllers", run.controllers, "Controller files (.cpp), or example names; one for all robots or one per robot");
-  runCmd->add_option("--world", run.world, "Reference world name or world file (default: the controller's)");
+  runCmd->add_option("--world", run.world, std::string(frob::app::kWorldHelp) + " (default: the controller's)");
   runCmd->add_option("--seconds", run.seconds, "Simulated seconds at most (default: the controller's)")->check(CLI::PositiveNumber);
   runCmd->add_option("--seed", run.seed, "Random seed (default: the world's)");
   runCmd->add_option("--dt", run.dt, "Simulation step, seconds")->capture_default_str()->check(CLI::Range(1e-4, 0.1));
@@ -242,7 +246,7 @@ int main(int argc, char** argv) {
 
   std::string renderWorld, renderOut, renderSize = "960x720";
   CLI::App* renderCmd = cli.add_subcommand("render", "Draw a world with its robots at their starts to a PNG");
-  renderCmd->add_option("world", renderWorld, "Reference world name or world file")->required();
+  renderCmd->add_option("world", renderWorld, frob::app::kWorldHelp)->required();
   renderCmd->add_option("--out", renderOut, "PNG file to write")->required();
   renderCmd->add_option("--size", renderSize, "Image size, WIDTHxHEIGHT")->capture_default_str();
 

@@ -97,6 +97,7 @@ bool Summary::failed() const {
 
 Status validate(const RunDef& def) {
   const std::size_t robots = def.world.robots.size();
+  if (std::string e = worlds::checkRunnable(def.world); !e.empty()) return Status::failure(def.worldName + ": " + e);
   if (def.controllers.empty()) return Status::failure("no controller given");
   if (def.controllers.size() != 1 && def.controllers.size() != robots) {
     return Status::failure("the world '" + def.worldName + "' has " + std::to_string(robots) +

@@ -224,6 +224,25 @@ TEST(FrobRun, MalformedWorldFileNamesFileLineAndField) {
   EXPECT_NE(r.err.find("w.toml:3: wall[0].from"), std::string::npos) << r.err;
 }
 
+TEST(FrobRun, AWorldWithNoRobotIsRefused) {
+  const fs::path dir = freshFolder("no_robot");
+  write(dir, "slow.cpp", controller("0.1"));
+  write(dir, "w.toml", "size = [5.0, 5.0]\n");
+  const FrobResult r = runFrob(dir, {"run", "slow.cpp", "--world", "w.toml", "--quiet"});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(lines(r.err), std::vector<std::string>{"frob: w.toml: the world has no robot to drive: add one, e.g. a [[robot]] table "
+                                                   "with start = [1, 1] (the world format: worlds/data/README.md)"});
+}
+
+// A student who guesses at a world file is told its format and where it is described.
+TEST(FrobRun, HelpSaysWhereTheWorldFormatIs) {
+  for (const char* command : {"run", "render"}) {
+    const FrobResult r = runFrob(freshFolder("help"), {command, "--help"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("a world file: TOML, its format in worlds/data/README.md"), std::string::npos) << command << ":\n" << r.out;
+  }
+}
+
 TEST(FrobRender, WritesAPictureOfTheWorld) {
   const fs::path dir = freshFolder("render");
   const FrobResult r = runFrob(dir, {"render", "maze", "--out", "maze.png", "--size", "320x240"});

@@ -154,5 +154,16 @@ TEST(Rubric, AMissingFileIsNamed) {
   EXPECT_EQ(r.error(), "/no/such/rubric.toml: cannot open the rubric");
 }
 
+// A rubric's world with no robot is refused when it is loaded, naming it as reports do.
+TEST(Rubric, AWorldWithNoRobotIsRefused) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "rubric_test" / "no_robot";
+  fs::create_directories(dir);
+  std::ofstream(dir / "empty.toml") << "size = [4.0, 4.0]\n";
+  Result<worlds::WorldDef> w = loadWorldRef({.name = "worlds/empty.toml", .file = dir / "empty.toml"});
+  ASSERT_FALSE(w.ok());
+  EXPECT_EQ(w.error(), "worlds/empty.toml: the world has no robot to drive: add one, e.g. a [[robot]] table with start = [1, 1] "
+                       "(the world format: worlds/data/README.md)");
+}
+
 }  // namespace
 }  // namespace frob::course

@@ -146,5 +146,14 @@ TEST(Session, ValidateNamesTheProblem) {
   EXPECT_EQ(validate(def).error(), "--seconds must be a positive number of seconds");
 }
 
+// A world with no robot would run for one step and say nothing: it is refused, saying how to add one.
+TEST(Session, AWorldWithNoRobotIsRefused) {
+  RunDef def{.world = *worlds::parseWorld("size = [6.0, 3.0]\n", "empty.toml"), .worldName = "empty.toml",
+             .controllers = {inlineController(nullptr)}, .seconds = 1};
+  EXPECT_EQ(validate(def).error(),
+            "empty.toml: the world has no robot to drive: add one, e.g. a [[robot]] table with start = [1, 1] "
+            "(the world format: worlds/data/README.md)");
+}
+
 }  // namespace
 }  // namespace frob::course

@@ -42,6 +42,12 @@ std::optional<Point2> findPoint(const WorldDef& w, const std::string& name) {
 
 std::string checkWorld(const WorldDef& w) { return detail::checkWorld(w, detail::SourceLines{}); }
 
+std::string checkRunnable(const WorldDef& w) {
+  if (!w.robots.empty()) return "";
+  return "the world has no robot to drive: add one, e.g. a [[robot]] table with start = [1, 1] "
+         "(the world format: worlds/data/README.md)";
+}
+
 double distanceToWall(const Point2& p, const WallDef& wall) {
   const auto& v = wall.points;
   switch (wall.shape) {

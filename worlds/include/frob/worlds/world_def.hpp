@@ -116,5 +116,8 @@ struct WorldDef {
 /// Checks a world built in code for contradictions (robot inside a wall, outside the world, bad
 /// sizes). Returns an empty string when it is valid, else a readable message naming the field.
 [[nodiscard]] std::string checkWorld(const WorldDef& w);
+/// Checks that `w` has something to run: at least one robot. Empty when it has, else a message
+/// that says how to add one. A world with no robot is fine to draw, not to run or grade.
+[[nodiscard]] std::string checkRunnable(const WorldDef& w);
 
 }  // namespace frob::worlds
