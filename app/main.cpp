@@ -65,7 +65,10 @@ Result<course::CompiledController> compileController(const std::string& name, bo
   if (path.extension() == ".so") return course::CompiledController{.module = path, .source = name};
   if (path.extension() == ".cpp" || fs::exists(path)) {
     const auto start = std::chrono::steady_clock::now();
+    ProgressBar status(stderr, !quiet && ::isatty(STDERR_FILENO) == 1, "");
+    status.say("frob: compiling " + name + " (unless it is unchanged since its last run)...");
     Result<course::CompiledController> c = course::compileControllerFile(path);
+    status.finish();
     if (c && c.value().compiled && !quiet) std::fprintf(stderr, "frob: compiled %s in %.1f s\n", name.c_str(), secondsSince(start));
     return c;
   }
@@ -136,6 +139,7 @@ int runCommand(RunArgs a) {
     std::snprintf(detail, sizeof detail, "%.1f / %.1f s", done * def.seconds, def.seconds);
     bar.show(done, detail);
   };
+  bar.show(0.0, "starting the controller");  // until the first step is done
   const auto start = std::chrono::steady_clock::now();
   Result<course::Summary> summary = course::runSession(def);
   const double wall = secondsSince(start);

@@ -22,9 +22,16 @@ class ProgressBar {
     shown_ = percent;
     constexpr int kWidth = 30;
     const int filled = percent * kWidth / 100;
-    std::fprintf(out_, "\r%s [%s%s] %3d%% %s", label_.c_str(), std::string(static_cast<std::size_t>(filled), '#').c_str(),
+    std::fprintf(out_, "\r%s [%s%s] %3d%% %s\033[K", label_.c_str(), std::string(static_cast<std::size_t>(filled), '#').c_str(),
                  std::string(static_cast<std::size_t>(kWidth - filled), '.').c_str(), percent, detail);
     std::fflush(out_);
+  }
+  // Says what is happening before there is progress to show, until the bar or finish() replaces it.
+  void say(const std::string& what) {
+    if (!on_) return;
+    std::fprintf(out_, "\r%s\033[K", what.c_str());
+    std::fflush(out_);
+    shown_ = 101;  // drawn: the next show() redraws, finish() erases
   }
   // Erases the bar.
   void finish() {

@@ -138,9 +138,22 @@ Result<CompiledController> compileControllerFile(const fs::path& source, const C
   std::snprintf(name, sizeof name, "%016llx", static_cast<unsigned long long>(key.value()));
   const fs::path module = setup.cacheDir / (source.stem().string() + "-" + name + ".so");
   const CompiledController compiled{.module = module, .source = source.string(), .compiled = true};
+  // The compiler's warnings are kept beside the module and shown again on every cached run.
+  const fs::path warnings = fs::path(module).replace_extension(".warnings");
+  const auto show = [&](const std::string& text) {
+    if (messages != nullptr) {
+      *messages = text;
+    } else {
+      std::fwrite(text.data(), 1, text.size(), stderr);
+    }
+  };
   // One compile of a module at a time in this process: a class of identical files compiles once.
   const std::unique_lock<std::mutex> once = lockModule(module);
-  if (fs::exists(module)) return CompiledController{.module = module, .source = source.string()};
+  if (fs::exists(module)) {
+    std::ifstream kept(warnings, std::ios::binary);
+    show(std::string{std::istreambuf_iterator<char>(kept), std::istreambuf_iterator<char>()});
+    return CompiledController{.module = module, .source = source.string()};
+  }
 
   // A build folder of its own: the only place the compiler may write.
   std::error_code ec;
@@ -165,11 +178,7 @@ Result<CompiledController> compileControllerFile(const fs::path& source, const C
   Result<JailedRun> run = runJailed(std::move(jail), setup.seconds, 1 << 20);
   const auto cleanUp = [&] { fs::remove_all(build, ec); };
   if (!run) return cleanUp(), run.status();
-  if (messages != nullptr) {
-    *messages = run.value().output;
-  } else {
-    std::fwrite(run.value().output.data(), 1, run.value().output.size(), stderr);
-  }
+  show(run.value().output);
   if (run.value().timedOut) {
     cleanUp();
     return Status::failure("compiling '" + source.string() + "' took longer than " + std::to_string(static_cast<int>(setup.seconds)) +
@@ -181,6 +190,10 @@ Result<CompiledController> compileControllerFile(const fs::path& source, const C
     const bool limited = WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL);
     return Status::failure("could not compile '" + source.string() + "' " +
                            (limited ? "within the compiler's limits of time and memory" : "(the compiler's messages are above)"));
+  }
+  if (!run.value().output.empty()) {  // first, so that a module in the cache always has its warnings
+    std::ofstream(fs::path(build) / "module.warnings", std::ios::binary) << run.value().output;
+    fs::rename(fs::path(build) / "module.warnings", warnings, ec);
   }
   fs::rename(partial, module, ec);  // atomic: a concurrent run sees the whole module or none
   cleanUp();

@@ -51,6 +51,23 @@ TEST(ControllerFile, CompilesWithHeadersFromItsOwnFolderAndCachesTheModule) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir / "cache"), fs::directory_iterator()), 1);
 }
 
+// A cached run shows the compiler's warnings again: a student who reruns still sees them.
+TEST(ControllerFile, ACachedModuleShowsItsWarningsAgain) {
+  const fs::path dir = freshFolder("warnings");
+  writeFile(dir / "go.cpp", R"(#include <frob/frob.hpp>
+frob::Behavior<frob::Wheels> go(const frob::Robot&) { int unused = 3; return frob::Wheels{0.1, 0.0}; }
+FROB_CONTROLLER(go)
+)");
+  std::string first, second;
+  Result<CompiledController> c = compileControllerFile(dir / "go.cpp", setupIn(dir), &first);
+  ASSERT_TRUE(c.ok()) << c.error() << first;
+  EXPECT_NE(first.find("go.cpp:2:59: warning: unused variable 'unused'"), std::string::npos) << first;
+  Result<CompiledController> again = compileControllerFile(dir / "go.cpp", setupIn(dir), &second);
+  ASSERT_TRUE(again.ok());
+  EXPECT_FALSE(again.value().compiled);
+  EXPECT_EQ(second, first);
+}
+
 TEST(ControllerFile, AnIncludeOutsideItsFolderCannotBeReadAndNoLineOfItIsShown) {
   const fs::path dir = freshFolder("secret");
   fs::create_directories(dir / "submission");
