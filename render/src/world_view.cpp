@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 namespace frob::render::detail {
 
@@ -67,16 +68,60 @@ void drawGrid(Canvas& c, const FontAtlas& fonts, const Bounds& b, const Mapping&
   (void)text;
 }
 
-void drawSonar(Canvas& c, const RenderDef& def, const RobotView& r, const Mapping& m, Color col) {
+// How far a ray from `o` along the unit vector `d` goes before it meets a wall, a block or a pillar
+// of `scene`, at most `limit` metres.
+double firstHit(const FrameScene& scene, const Point2& o, const Vec2& d, double limit) {
+  double best = limit;
+  const auto segment = [&](const Point2& a, const Point2& b) {
+    const Vec2 e = b - a, w = a - o;
+    const double den = d.x() * e.y() - d.y() * e.x();
+    if (std::abs(den) < 1e-12) return;
+    const double t = (w.x() * e.y() - w.y() * e.x()) / den, u = (w.x() * d.y() - w.y() * d.x()) / den;
+    if (t >= 0.0 && u >= 0.0 && u <= 1.0) best = std::min(best, t);
+  };
+  for (const Wall& w : scene.walls) segment(w.a, w.b);
+  for (const Block& b : scene.blocks) {
+    const Vec2 u(std::cos(b.angle), std::sin(b.angle)), v(-u.y(), u.x());
+    const Vec2 hx = u * b.halfExtents.x(), hy = v * b.halfExtents.y();
+    const Point2 corners[] = {b.center - hx - hy, b.center + hx - hy, b.center + hx + hy, b.center - hx + hy};
+    for (int k = 0; k < 4; ++k) segment(corners[k], corners[(k + 1) % 4]);
+  }
+  for (const Pillar& p : scene.pillars) {
+    const Vec2 w = o - p.center;
+    const double b = w.dot(d), disc = b * b - (w.squaredNorm() - p.radius * p.radius);
+    if (disc >= 0.0 && -b + std::sqrt(disc) >= 0.0) best = std::min(best, std::max(0.0, -b - std::sqrt(disc)));
+  }
+  return best;
+}
+
+// Each sonar's cone, from its place on the rim out to its reading and never through a wall: an
+// echo ends in a solid arc; a sonar that heard nothing is fainter and ends in a dashed edge.
+void drawSonar(Canvas& c, const FrameScene& scene, const RenderDef& def, const RobotView& r, const Mapping& m, Color col) {
+  constexpr int kRays = 8;  // rays across a cone, each stopped by the first wall it meets
   const std::size_t n = std::min(r.sonar.size(), r.spec.sonarAngles.size());
-  const Vec2 centre = m.map(r.pose.position);
   for (std::size_t i = 0; i < n; ++i) {
     const double range = std::clamp(r.sonar[i], 0.0, r.spec.sonarMaxRange);
     const bool echo = r.sonar[i] < r.spec.sonarMaxRange;
     const double a = r.pose.heading + r.spec.sonarAngles[i];
-    const double a0 = a - def.sonarHalfAngle, a1 = a + def.sonarHalfAngle;
-    c.sector(centre, range * m.scale, a0, a1, rgba8(col, echo ? 0.16 : 0.05));
-    if (echo) c.arc(centre, range * m.scale, a0, a1, 2 * m.pixel, rgba8(darker(col), 0.85));
+    const Point2 origin = r.pose.position + r.spec.radius * Vec2(std::cos(a), std::sin(a));
+    const Vec2 o = m.map(origin);
+    std::vector<Vec2> ends, edge;  // every ray's end; the run of ends that reach the reading
+    const Rgba8 fill = rgba8(col, echo ? 0.16 : 0.06), rim = echo ? rgba8(darker(col), 0.85) : rgba8(col, 0.6);
+    const auto drawEdge = [&] {
+      if (echo) c.polyline(edge, 2 * m.pixel, rim);
+      else c.dashed(edge, 1.5 * m.pixel, 4 * m.pixel, 4 * m.pixel, rim);
+      edge.clear();
+    };
+    for (int k = 0; k <= kRays; ++k) {
+      const double ak = a - def.sonarHalfAngle + 2.0 * def.sonarHalfAngle * k / kRays;
+      const Vec2 dir(std::cos(ak), std::sin(ak));
+      const double reach = firstHit(scene, origin, dir, range);
+      ends.push_back(m.map(origin + dir * reach));
+      if (reach < range) drawEdge();
+      else edge.push_back(ends.back());
+      if (k > 0) c.triangle(o, ends[k - 1], ends[k], fill);
+    }
+    drawEdge();
   }
 }
 
@@ -205,7 +250,7 @@ void drawGround(Canvas& c, const FontAtlas& fonts, const RenderDef& def, const F
     }
   }
   if (def.sonar) {
-    for (std::size_t i = 0; i < scene.robots.size(); ++i) drawSonar(c, def, scene.robots[i], m, palette::robot(scene.robots[i], i));
+    for (std::size_t i = 0; i < scene.robots.size(); ++i) drawSonar(c, scene, def, scene.robots[i], m, palette::robot(scene.robots[i], i));
   }
   if (bodies) {
     for (std::size_t i = 0; i < scene.robots.size(); ++i) drawRobot(c, scene.robots[i], m, palette::robot(scene.robots[i], i));
