@@ -272,7 +272,9 @@ Result<Summary> runSession(const RunDef& def) {
     summary.written.push_back(out.timeline);
   }
   if (!out.plot.empty()) {
-    if (Status s = render::writePng(out.plot, renderer->renderPlots(view->plots())); !s) return s;
+    render::PlotSet plots = view->plots();
+    plots.tEnd = summary.simulatedSeconds;  // the time axis ends where the run ended
+    if (Status s = render::writePng(out.plot, renderer->renderPlots(plots)); !s) return s;
     summary.written.push_back(out.plot);
   }
   return summary;

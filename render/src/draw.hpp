@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 
 namespace frob::render::detail {
 
@@ -67,5 +68,10 @@ void drawPicture(Canvas& canvas, const Picture& picture, const Mapping& m, const
 void drawHud(Canvas& canvas, const FontAtlas& fonts, const FrameScene& scene, const Viewport& vp);
 // The plot panel: charts stacked in `vp`, samples up to `now`, task switches, a cursor at `now`.
 void drawPlots(Canvas& canvas, const FontAtlas& fonts, const PlotSet& plots, double now, const Viewport& vp);
+// A short number for an axis label: three significant digits, and 0 for what rounds to it.
+[[nodiscard]] std::string tick(double v);
+// A plot's value range widened to numbers of two significant digits (0.915 -> 0.92, 16.3 -> 17),
+// with rounding noise near 0 taken as 0, so that its axis labels read as numbers.
+[[nodiscard]] std::pair<double, double> niceRange(double lo, double hi);
 
 }  // namespace frob::render::detail

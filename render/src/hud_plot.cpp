@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 namespace frob::render::detail {
 
@@ -18,10 +19,17 @@ std::string format(const char* fmt, A... args) {
   return buf;
 }
 
-// A short number for axis labels.
+}  // namespace
+
 std::string tick(double v) { return format("%.3g", std::abs(v) < 1e-12 ? 0.0 : v); }
 
-}  // namespace
+std::pair<double, double> niceRange(double lo, double hi) {
+  const double span = hi - lo;
+  if (!(span > 0.0) || !std::isfinite(span)) return {lo, hi};
+  const auto nearZero = [&](double v) { return std::abs(v) < 1e-3 * span ? 0.0 : v; };  // rounding noise round 0
+  const double step = std::pow(10.0, std::floor(std::log10(span)) - 1.0);  // two significant digits of the span
+  return {std::floor(nearZero(lo) / step) * step, std::ceil(nearZero(hi) / step) * step};
+}
 
 Color palette::series(const Series& s, std::size_t index) {
   return s.color.value_or(kSeriesColors[index % std::size(kSeriesColors)]);
@@ -100,6 +108,7 @@ void drawPlots(Canvas& c, const FontAtlas& fonts, const PlotSet& plots, double n
     if (plot.yMin) lo = *plot.yMin;
     if (plot.yMax) hi = *plot.yMax;
     if (!(hi > lo)) lo = (lo > 1e299 ? 0.0 : lo) - 1.0, hi = lo + 2.0;
+    if (!plot.yMin && !plot.yMax) std::tie(lo, hi) = niceRange(lo, hi);
     auto yOf = [&](double v) { return y1 - (std::clamp(v, lo, hi) - lo) / (hi - lo) * (y1 - y0); };
     c.rect(left, y0, right, y1, rgba8({0.98f, 0.98f, 0.98f}));
     if (lo < 0 && hi > 0) c.line({left, yOf(0)}, {right, yOf(0)}, 1, faint, false);

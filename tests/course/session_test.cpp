@@ -2,6 +2,7 @@
 // trace holds exactly the recorded values. (The files' atomicity is tested end to end in tests/app.)
 #include "frob/course/session.hpp"
 #include "frob/frob.hpp"
+#include "frob/render/image.hpp"
 #include "frob/worlds/world_file.hpp"
 
 #include <gtest/gtest.h>
@@ -54,6 +55,27 @@ TEST(Session, EndsWhenTheControllerTaskReturns) {
   EXPECT_EQ(s.value().steps, 151);  // steps 0..150: the task returns at the instant of step 150
   ASSERT_EQ(r.lastTasks.size(), 1u);
   EXPECT_EQ(r.lastTasks[0].how, TaskEnd::Returned);
+}
+
+// The plot's time axis ends where the run ended (1.5 s), not at the run's limit (10 s): the forward
+// speed, drawn in blue, reaches the right end of its chart.
+TEST(Session, ThePlotEndsWhereTheRunEnded) {
+  const fs::path plot = tempPath("session_plot_end.png");
+  Result<Summary> s = runSession({.world = room(), .worldName = "room",
+                                  .controllers = {inlineController(makeController([] { return forwardFor(1.5); }))},
+                                  .seconds = 10, .outputs = {.plot = plot.string()}});
+  ASSERT_TRUE(s.ok()) << s.error();
+  Result<render::Image> img = render::readPng(plot.string());
+  ASSERT_TRUE(img.ok()) << img.error();
+  const render::Image& im = img.value();
+  int rightmostBlue = 0;
+  for (int y = im.height / 2; y < im.height; ++y) {  // the lower chart: wheels
+    for (int x = 0; x < im.width; ++x) {
+      const std::uint8_t* p = im.pixel(x, y);
+      if (p[2] > p[0] + 80 && p[2] > p[1] + 40) rightmostBlue = std::max(rightmostBlue, x);
+    }
+  }
+  EXPECT_GT(rightmostBlue, im.width * 9 / 10);
 }
 
 TEST(Session, DistanceAndGoal) {
