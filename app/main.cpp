@@ -236,6 +236,10 @@ int main(int argc, char** argv) {
   runCmd->add_option("--video", run.outputs.video, "Write an MP4 video of the run");
   runCmd->add_option("--frames", run.outputs.frames, "Write one PNG per video frame into this folder");
   runCmd->add_option("--plot", run.outputs.plot, "Write plots of the run (sonar, goal distance, wheels, tasks) as PNG");
+  runCmd->add_option("--plot-signals", run.outputs.plotSignals,
+                     "More charts in --plot and --video: s0 to s15 for a sonar, or the name of a value a task "
+                     "publishes with withPlot (default: every published value), e.g. s4,left")
+      ->delimiter(',');
   runCmd->add_option("--trace", run.outputs.trace, "Write a CSV row per robot per step");
   runCmd->add_option("--timeline", run.outputs.timeline, "Write the task timeline as JSON for ui.perfetto.dev or chrome://tracing");
   runCmd->add_option("--fps", run.fps, "Frames per second of video and frames")->capture_default_str()->check(CLI::Range(1, 240));

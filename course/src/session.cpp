@@ -95,6 +95,12 @@ bool Summary::failed() const {
   return false;
 }
 
+// "s4" names sonar 4.
+std::optional<std::size_t> sonarSignal(const std::string& name) {
+  if (name.size() < 2 || name[0] != 's' || !std::all_of(name.begin() + 1, name.end(), ::isdigit) || name.size() > 4) return std::nullopt;
+  return static_cast<std::size_t>(std::stoul(name.substr(1)));
+}
+
 Status validate(const RunDef& def) {
   const std::size_t robots = def.world.robots.size();
   if (std::string e = worlds::checkRunnable(def.world); !e.empty()) return Status::failure(def.worldName + ": " + e);
@@ -120,6 +126,13 @@ Status validate(const RunDef& def) {
                                                          : render::checkWritable(out.frames, "frames");
     if (!s) return s;
   }
+  for (const std::string& name : out.plotSignals) {
+    const std::size_t ring = def.world.robots.empty() ? 0 : worlds::robotSpec(def.world.robots.front()).sonarAngles.size();
+    if (const std::optional<std::size_t> k = sonarSignal(name); k && *k >= ring) {
+      return Status::failure("--plot-signals: there is no sonar " + name + ": the ring has " + std::to_string(ring) + " (s0 to s" +
+                             std::to_string(ring - 1) + ")");
+    }
+  }
   for (const auto& [path, what] : {std::pair{out.plot, "plot"}, {out.trace, "trace"}, {out.timeline, "timeline"}}) {
     if (path.empty()) continue;
     if (Status s = render::checkWritable(path, what); !s) return s;
@@ -132,18 +145,33 @@ Status validate(const RunDef& def) {
   return {};
 }
 
+// The plots of a run: the front sonar, the goal and the wheels, then the signals asked for.
+render::RunViewDef viewDef(const RunDef& def) {
+  render::RunViewDef view{.plotSeconds = def.seconds};
+  if (def.outputs.plotSignals.empty()) return view;
+  view.published.emplace();
+  for (const std::string& name : def.outputs.plotSignals) {
+    if (const std::optional<std::size_t> k = sonarSignal(name)) {
+      view.signals.push_back({"sonar " + std::to_string(*k) + " (m)", [k = *k](const worlds::StepRecord& rec) { return rec.robots[0].sonar[k]; }});
+    } else {
+      view.published->push_back(name);
+    }
+  }
+  return view;
+}
+
 Result<Summary> runSession(const RunDef& def) {
   if (Status s = validate(def); !s) return s;
   const RunOutputs& out = def.outputs;
   const bool drawFrames = !out.video.empty() || !out.frames.empty();
   std::shared_ptr<ControllerHost> host;
-  worlds::Run run(def.world, def.options, driverFor(def, host, drawFrames));
+  worlds::Run run(def.world, def.options, driverFor(def, host, drawFrames || !out.plot.empty()));
   const worlds::Simulation& sim = run.simulation();
   const std::size_t n = sim.robotCount();
 
   // Outputs, opened before the first step so that a bad path fails at once.
   std::optional<render::RunView> view;
-  if (drawFrames || !out.plot.empty()) view.emplace(run, render::RunViewDef{.plotSeconds = def.seconds});
+  if (drawFrames || !out.plot.empty()) view.emplace(run, viewDef(def));
   std::optional<render::Renderer> renderer;
   if (drawFrames || !out.plot.empty()) {
     Result<render::Renderer> r = render::Renderer::create(def.view);
@@ -234,6 +262,14 @@ Result<Summary> runSession(const RunDef& def) {
   Summary summary{.world = def.worldName, .seed = sim.seed(), .dt = sim.dt(), .simulatedSeconds = sim.time(),
                   .steps = sim.stepCount(), .trajectoryHash = run.recorder().trajectoryHash()};
   if (host) summary.notes = host->notes(), summary.sandbox = host->layers();
+  if (view) {
+    for (const std::string& name : def.outputs.plotSignals) {
+      const std::vector<std::string>& seen = view->publishedNames();
+      if (!sonarSignal(name) && std::find(seen.begin(), seen.end(), name) == seen.end()) {
+        summary.notes.push_back("--plot-signals: no task published '" + name + "' (withPlot(\"" + name + "\", behavior, task))");
+      }
+    }
+  }
   for (std::size_t i = 0; i < n; ++i) {
     RobotWatch& w = watch[i];
     w.summary.lastTasks.assign(w.lastEnded.begin(), w.lastEnded.end());

@@ -29,6 +29,10 @@ Picture text(std::string s) {
   return single({.kind = Shape::Kind::Text, .points = {Point2::Zero()}, .text = std::move(s)});
 }
 
+Picture plotValue(std::string name, double v) {
+  return single({.kind = Shape::Kind::Value, .text = std::move(name), .value = v});
+}
+
 Picture withColor(const Color& c, Picture p) {
   std::vector<Shape> shapes = p.shapes();
   for (Shape& s : shapes) {

@@ -195,6 +195,7 @@ void drawPicture(Canvas& c, const Picture& picture, const Mapping& m, const Text
         if (pts.size() >= 2) c.arrow(pts[0], pts[1], 2 * m.pixel, 10 * m.pixel, ink);
         break;
       case Shape::Kind::Text: text(s.points[0], s.text, col); break;
+      case Shape::Kind::Value: break;  // plotted, not drawn
     }
   }
 }

@@ -159,6 +159,23 @@ TEST(Isolation, ItsOwnScratchFolderCanBeWrittenAndReadBack) {
   EXPECT_EQ(o.lastWheels, (Wheels{0.25, 0.0}));
 }
 
+// A value a task plots (withPlot) crosses from the host with the pictures, as it is in this process.
+TEST(Isolation, PlottedValuesComeBackWithThePictures) {
+  const worlds::WorldDef world = *worlds::loadReferenceWorld("corridor");
+  const fs::path module = testing::hostileModule("plots_a_value");
+  std::shared_ptr<ControllerHost> host = startHost({module});
+  ASSERT_NE(host, nullptr);
+  worlds::Run there(world, {}, host->driver({0}, true));
+  worlds::Run here(world, {}, {inProcess(module)});
+  there.runUntil(0.5), here.runUntil(0.5);
+  const Picture& plotted = there.recorder().steps().back().robots[0].picture;
+  ASSERT_EQ(plotted.shapes().size(), 1u);
+  EXPECT_EQ(plotted.shapes()[0].kind, Shape::Kind::Value);
+  EXPECT_EQ(plotted.shapes()[0].text, "left");
+  EXPECT_EQ(plotted.shapes()[0].value, there.recorder().steps().back().robots[0].sonar[4]);
+  EXPECT_EQ(plotted, here.recorder().steps().back().robots[0].picture);
+}
+
 TEST(Isolation, ThreadsAreAllowed) {
   const Outcome o = runHostile({"starts_thread"});
   EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;

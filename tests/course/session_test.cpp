@@ -78,6 +78,56 @@ TEST(Session, ThePlotEndsWhereTheRunEnded) {
   EXPECT_GT(rightmostBlue, im.width * 9 / 10);
 }
 
+// Drives forward for 1 s publishing "left" (sonar 4) in orange: a colour no default chart uses, so
+// orange pixels in the plot are the published value's chart.
+Task<Wheels> publishesLeftInOrange() {
+  TaskState ts = co_await getTaskState();
+  co_await withPicture(lift([](double v) { return withColor(orange, plotValue("left", v)); }, sonar(ts.robot(), 4)), forwardFor(1.0));
+}
+
+// Drives forward for 1 s plotting its sonar 4 as "left".
+Task<Wheels> plotsLeft() {
+  TaskState ts = co_await getTaskState();
+  co_await withPlot("left", sonar(ts.robot(), 4), forwardFor(1.0));
+}
+
+int orangePixels(const fs::path& png) {
+  Result<render::Image> img = render::readPng(png.string());
+  EXPECT_TRUE(img.ok()) << img.error();
+  int n = 0;
+  for (int y = 0; y < img.value().height; ++y) {
+    for (int x = 0; x < img.value().width; ++x) {
+      const std::uint8_t* p = img.value().pixel(x, y);
+      n += p[0] > 200 && p[1] > 100 && p[1] < 170 && p[2] < 80 ? 1 : 0;
+    }
+  }
+  return n;
+}
+
+TEST(Session, ThePlotChartsTheValuesTasksPublish) {
+  const fs::path all = tempPath("session_plot_published.png"), others = tempPath("session_plot_not_published.png");
+  for (const auto& [png, signals] : {std::pair{all, std::vector<std::string>{}}, {others, std::vector<std::string>{"s4"}}}) {
+    Result<Summary> s = runSession({.world = room(), .worldName = "room",
+                                    .controllers = {inlineController(makeController([] { return publishesLeftInOrange(); }))},
+                                    .seconds = 10, .outputs = {.plot = png.string(), .plotSignals = signals}});
+    ASSERT_TRUE(s.ok()) << s.error();
+  }
+  EXPECT_GT(orangePixels(all), 200);  // the chart of "left": a line across it and its legend
+  EXPECT_EQ(orangePixels(others), 0);  // not asked for: --plot-signals s4 names sonar 4 only
+}
+
+TEST(Session, PlotSignalsNameSonarsInTheRingAndValuesThatWerePublished) {
+  RunDef def{.world = room(), .worldName = "room", .controllers = {inlineController(nullptr)}, .seconds = 1,
+             .outputs = {.plotSignals = {"s16"}}};
+  EXPECT_EQ(validate(def).error(), "--plot-signals: there is no sonar s16: the ring has 16 (s0 to s15)");
+
+  Result<Summary> s = runSession({.world = room(), .worldName = "room",
+                                  .controllers = {inlineController(makeController([] { return plotsLeft(); }))},
+                                  .seconds = 10, .outputs = {.plot = tempPath("session_plot_names.png").string(), .plotSignals = {"s4", "left", "right"}}});
+  ASSERT_TRUE(s.ok()) << s.error();
+  EXPECT_EQ(s.value().notes, std::vector<std::string>{"--plot-signals: no task published 'right' (withPlot(\"right\", behavior, task))"});
+}
+
 TEST(Session, DistanceAndGoal) {
   Result<Summary> s = runSession({.world = room(), .worldName = "room",
                                   .controllers = {inlineController([](const Robot&) { return wheels(0.5, 0.0); })},

@@ -81,6 +81,7 @@ void write(Writer& w, const Picture& p) {
     writeList(w, s.points, [&](const Point2& q) { write(w, q); });
     w.put(s.radius);
     w.put(s.text);
+    w.put(s.value);
     w.put(static_cast<std::uint8_t>(s.color.has_value()));
     if (s.color) w.put(*s.color);
   });
@@ -90,10 +91,10 @@ bool read(Reader& r, Picture& p) {
   std::vector<Shape> shapes;
   const bool ok = readList(r, shapes, [&](Shape& s) {
     std::uint8_t kind = 0, colored = 0;
-    if (!r.get(kind) || kind > static_cast<std::uint8_t>(Shape::Kind::Text)) return r.fail();
+    if (!r.get(kind) || kind > static_cast<std::uint8_t>(Shape::Kind::Value)) return r.fail();
     s.kind = static_cast<Shape::Kind>(kind);
     if (!readList(r, s.points, [&](Point2& q) { return read(r, q); }) || !r.get(s.radius) || !r.get(s.text) ||
-        !r.get(colored)) {
+        !r.get(s.value) || !r.get(colored)) {
       return false;
     }
     if (colored != 0) s.color.emplace();

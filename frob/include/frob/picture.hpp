@@ -27,11 +27,12 @@ inline constexpr Color gray{0.5f, 0.5f, 0.5f};
 
 /// One drawable element of a picture, in world coordinates (metres).
 struct Shape {
-  enum class Kind { Circle, Disc, Polyline, Polygon, Arrow, Text };
+  enum class Kind { Circle, Disc, Polyline, Polygon, Arrow, Text, Value };
   Kind kind = Kind::Polyline;
   std::vector<Point2> points;   ///< centre (Circle, Disc, Text), vertices (Polyline, Polygon), tail and tip (Arrow)
   double radius = 0.0;          ///< Circle and Disc radius, metres
-  std::string text;             ///< Text content
+  std::string text;             ///< Text content; a Value's name
+  double value = 0.0;           ///< a Value: a number to plot, not drawn (plotValue, withPlot)
   std::optional<Color> color;   ///< unset until a withColor reaches it; renderers pick a default
   friend bool operator==(const Shape&, const Shape&) = default;
 };
@@ -69,6 +70,8 @@ class Picture {
 [[nodiscard]] Picture arrow(const Point2& tail, const Point2& tip);
 /// Text anchored at the origin.
 [[nodiscard]] Picture text(std::string s);
+/// A named number for the plots (`frob run --plot`), not drawn: `name` is the chart's title.
+[[nodiscard]] Picture plotValue(std::string name, double v);
 /// `p` with colour `c` given to every shape that has none yet (inner colours win).
 [[nodiscard]] Picture withColor(const Color& c, Picture p);
 /// `p` moved so that its origin lies at `at`.

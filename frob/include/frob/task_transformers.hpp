@@ -230,4 +230,12 @@ template <class A, class B>
       .named(std::move(name));
 }
 
+/// Plots `b` under `name` while `t` runs: `frob run --plot` charts it beside the front sonar and
+/// the wheels (e.g. withPlot("left", sonar(r, 4), followWall())).
+template <class A, class B>
+[[nodiscard]] Task<A, B> withPlot(std::string name, Behavior<double> b, Task<A, B> t,
+                                  std::source_location loc = std::source_location::current()) {
+  return withPicture(lift([name = std::move(name)](double v) { return plotValue(name, v); }, std::move(b)), std::move(t), loc);
+}
+
 }  // namespace frob

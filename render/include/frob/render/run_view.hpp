@@ -35,6 +35,9 @@ struct RunViewDef {
   std::string goal = "goal";       ///< chart "range": distance to this named point, m; empty or absent: none
   bool wheels = true;              ///< chart "wheels": forward (m/s) and turn (rad/s) commands
   std::vector<RunSignal> signals;  ///< more signals, one chart each
+  /// Values the plotted robot's tasks publish (withPlot) to chart, by name, one chart each as they
+  /// first appear; unset: every one.
+  std::optional<std::vector<std::string>> published;
   double sampleSeconds = 0.05;     ///< least simulated time between plot samples, s (a chart is a few hundred pixels wide)
   double pathSpacing = 0.05;       ///< least distance between kept path points, m (the newest position is always kept)
   double plotSeconds = 0.0;        ///< right end of the plots' time axis, s (e.g. the run's length); 0: the latest sample
@@ -61,6 +64,8 @@ class RunView {
   [[nodiscard]] const FrameScene& scene() const { return scene_; }
   /// The plots up to the latest instant, with the task switches of the plotted robot.
   [[nodiscard]] const PlotSet& plots() const { return plots_; }
+  /// The names of the values the plotted robot's tasks published, charted or not, in order of appearance.
+  [[nodiscard]] const std::vector<std::string>& publishedNames() const { return publishedNames_; }
   /// Instants taken in so far.
   [[nodiscard]] std::int64_t instants() const { return next_; }
 
@@ -84,6 +89,8 @@ class RunView {
   };
   Slot sonarSlot_{}, goalSlot_{}, forwardSlot_{}, turnSlot_{};
   std::vector<Slot> signalSlots_;
+  std::vector<std::string> publishedNames_;
+  std::vector<std::size_t> publishedPlots_;  // per published name: its chart, or npos when not charted
 };
 
 }  // namespace frob::render
