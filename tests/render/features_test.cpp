@@ -129,6 +129,8 @@ TEST(Features, RobotBodyHeadingTickAndBumperMarkers) {
   EXPECT_TRUE(paints(img, along(0.5 + pi, 0.5 * rad), rgba8(body))) << "body, behind the centre";
   EXPECT_TRUE(paints(img, along(0.5, 0.6 * rad), rgba8(white))) << "heading tick";
   EXPECT_TRUE(paints(img, along(0.5 - pi / 2, 0.5 * rad), rgba8(body))) << "no tick sideways";
+  EXPECT_TRUE(paints(img, along(0.5 - pi / 2, rad), rgba8({body.r * 0.6f, body.g * 0.6f, body.b * 0.6f})))
+      << "the body's darker rim";
   EXPECT_TRUE(paints(img, along(0.5 + 2.0, rad), rgba8(palette::bump))) << "bumper marker where it was hit";
   EXPECT_TRUE(paints(img, along(0.5 - 2.0, rad + 0.02), kFloor)) << "and nowhere else";
 }
@@ -253,7 +255,7 @@ PlotSet onePlot() {
   PlotSet p;
   Series line{"level", {}, red};
   for (int i = 0; i <= 100; ++i) line.samples.push_back({i * 0.1, 1.0});
-  p.plots = {{"", {line}, 0.0, 2.0}};
+  p.plots = {{"chart", {line}, 0.0, 2.0}};
   p.tEnd = 10.0;
   return p;
 }
@@ -298,6 +300,9 @@ TEST(Features, PlotAxesAndLabels) {
   EXPECT_GE(left, 15) << "value labels";
   EXPECT_GE(below, 15) << "time labels";
   EXPECT_GE(countNear(img, 40, 0, 50, 199, rgba8(gray)), 100) << "value axis";
+  // The chart's first line: its title in black, then the legend in each series' colour.
+  EXPECT_GE(countNear(img, 45, 0, 319, 40, rgba8(black)), 10) << "title";
+  EXPECT_GE(countNear(img, 45, 0, 319, 40, rgba8(red)), 10) << "legend";
 }
 
 }  // namespace
