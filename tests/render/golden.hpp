@@ -5,7 +5,7 @@
 // by the CPU rasterizer, the chase golden by Mesa 22.3 (llvmpipe, LP_NUM_THREADS=0). How far an
 // image may stray from its golden depends on what drew it (see Tolerance); the goldens see a whole
 // image, the probes in features_test.cpp see each drawn feature.
-// To regenerate them: FROB_UPDATE_GOLDENS=1 ctest -R MatchesGolden; every rewritten golden fails
+// To regenerate them: FROB_UPDATE_GOLDENS=1 ctest -R 'Match(es)?Golden'; every rewritten golden fails
 // its test with "golden rewritten, review and commit it", then look at them before committing.
 // On a mismatch the actual image and a difference map are written to the build directory.
 
