@@ -47,6 +47,7 @@ inline constexpr Color obstacle{0.42f, 0.45f, 0.50f};
 inline constexpr Color point{0.10f, 0.55f, 0.35f};
 inline constexpr Color picture{0.85f, 0.10f, 0.60f};  // Picture shapes with no colour of their own
 inline constexpr Color bump{0.95f, 0.10f, 0.10f};
+inline constexpr Color chart{0.98f, 0.98f, 0.98f};  // a plot's background
 [[nodiscard]] Color robot(const RobotView& r, std::size_t index);
 [[nodiscard]] Color series(const Series& s, std::size_t index);
 }  // namespace palette

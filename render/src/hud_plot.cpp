@@ -84,6 +84,10 @@ void drawPlots(Canvas& c, const FontAtlas& fonts, const PlotSet& plots, double n
   if (ph < 10 || right - left < 10) return;
   auto xOf = [&](double t) { return left + (t - t0) / (t1 - t0) * (right - left); };
   const Rgba8 axis = rgba8(gray), ink = rgba8(black), faint = rgba8(palette::grid);
+  auto chartTop = [&](std::size_t pi) { return top + static_cast<double>(pi) * (ph + gap); };
+
+  // Chart backgrounds first: the task-switch lines go over them, and the series over both.
+  for (std::size_t pi = 0; pi < n; ++pi) c.rect(left, chartTop(pi), right, chartTop(pi) + ph, rgba8(palette::chart));
 
   // Task switches: dashed vertical lines through all charts, names staggered on two rows above.
   double lastRight = -1e9;
@@ -99,7 +103,7 @@ void drawPlots(Canvas& c, const FontAtlas& fonts, const PlotSet& plots, double n
 
   for (std::size_t pi = 0; pi < n; ++pi) {
     const Plot& plot = plots.plots[pi];
-    const double y0 = top + static_cast<double>(pi) * (ph + gap), y1 = y0 + ph;
+    const double y0 = chartTop(pi), y1 = y0 + ph;
     // Value range from the whole data (not just up to now) so axes stay still during a video.
     double lo = 1e300, hi = -1e300;
     for (const Series& s : plot.series)
@@ -110,7 +114,6 @@ void drawPlots(Canvas& c, const FontAtlas& fonts, const PlotSet& plots, double n
     if (!(hi > lo)) lo = (lo > 1e299 ? 0.0 : lo) - 1.0, hi = lo + 2.0;
     if (!plot.yMin && !plot.yMax) std::tie(lo, hi) = niceRange(lo, hi);
     auto yOf = [&](double v) { return y1 - (std::clamp(v, lo, hi) - lo) / (hi - lo) * (y1 - y0); };
-    c.rect(left, y0, right, y1, rgba8({0.98f, 0.98f, 0.98f}));
     if (lo < 0 && hi > 0) c.line({left, yOf(0)}, {right, yOf(0)}, 1, faint, false);
     c.polyline(std::vector<Vec2>{{left, y0}, {left, y1}, {right, y1}}, 1, axis);
     fonts.draw(c, Font::Sans, {vp.x + 4, y0 + asc}, tick(hi), ink);

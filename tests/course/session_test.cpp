@@ -189,6 +189,27 @@ TEST(Session, TraceHoldsTheRecordedValuesExactly) {
   }
   ASSERT_EQ(tasks.size(), rows.size() - 1);  // the task runs until the last instant, which has none
   EXPECT_EQ(tasks.front(), "forwardFor");
+
+  // The run above gives the bits; these say, independently of the recorder, that each column holds
+  // the quantity it names. The room: robot at (1, 1.5) heading 0, 0.23 m radius, the far wall at
+  // x = 6; forwardFor(0.5) commands 0.5 m/s straight, reached at 1 m/s^2.
+  ASSERT_EQ(rows.size(), 51u);  // instants 0, 0.01, ..., 0.5
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const std::vector<double>& row = rows[k];
+    const double t = 0.01 * static_cast<double>(k);
+    EXPECT_NEAR(row[0], t, 1e-12) << "time, row " << k;
+    EXPECT_EQ(row[1], 0) << "robot, row " << k;
+    // Accelerating for the whole half second (it reaches 0.5 m/s just as the task ends): x = t^2 / 2,
+    // give or take a step of lag (0.01 m at most).
+    EXPECT_NEAR(row[2], 1.0 + 0.5 * t * t, 0.01) << "true x, row " << k;
+    EXPECT_NEAR(row[3], 1.5, 1e-9) << "true y, row " << k;
+    EXPECT_NEAR(row[4], 0.0, 1e-9) << "true heading, row " << k;
+    EXPECT_NEAR(row[5], row[2], 0.01) << "odometry x, row " << k;  // odometry drifts, but not in half a second
+    EXPECT_NEAR(row[6], 1.5, 0.01) << "odometry y, row " << k;
+    if (k < 50) EXPECT_EQ(std::vector<double>(row.begin() + 8, row.begin() + 10), (std::vector<double>{0.5, 0.0})) << "wheels, row " << k;
+    // The sonar's noise is 1% of the range, about 0.05 m here: 0.25 m is five standard deviations.
+    EXPECT_NEAR(row[10], 6.0 - row[2] - 0.23, 0.25) << "front sonar, row " << k;
+  }
 }
 
 TEST(Session, FailingControllerWritesNothing) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
@@ -194,6 +195,13 @@ TEST(Behavior, RepeatedRunsAreBitIdentical) {
   std::vector<double> b = sample(build(), 0.01, 1000);
   ASSERT_EQ(a.size(), b.size());
   EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
+  // And both are what the same arithmetic in plain C++ gives, bit for bit (-ffp-contract=off), so
+  // that a wrong but repeatable graph fails too. Sample k is at t = k * 0.01, as Clock computes it.
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const double t = static_cast<double>(k) * 0.01;
+    const double expected = std::sin(t * 3.7) * std::exp(-t) + std::sqrt(t + 1.0) / (1.0 + t * t);
+    ASSERT_EQ(std::memcmp(&a[k], &expected, sizeof(double)), 0) << "sample " << k << ": " << a[k] << " vs " << expected;
+  }
 }
 
 TEST(Behavior, ThePapersRerrorReadsLikeThePaper) {

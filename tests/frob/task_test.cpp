@@ -348,6 +348,11 @@ TEST(Task, SameInputsGiveTheSameOutputsAndTimelineBitForBit) {
   EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(Wheels)), 0);
   EXPECT_EQ(ta, tb);
   EXPECT_GT(ta.size(), 10u);
+  // Repeats agree, and agree with pinned values, so that a change in what the run does (not only a
+  // nondeterminism) shows: 30 tasks end, the first at step 661, the last at step 5999.
+  EXPECT_EQ(ta.size(), 30u);
+  EXPECT_EQ(ta.front(), 661 * 0.01);
+  EXPECT_EQ(ta.back(), 5999 * 0.01);
 }
 
 TEST(Task, RunTaskFollowsTheFinalBehaviorAfterTheTaskEnds) {

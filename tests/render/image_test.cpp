@@ -1,9 +1,11 @@
 // PNG frames: a round trip keeps pixels, and bad output paths fail with the path named.
 #include "frob/render/image.hpp"
 
-#include <gtest/gtest.h>
-#include <unistd.h>
+#include "golden.hpp"
 
+#include <gtest/gtest.h>
+
+#include <cstdlib>
 #include <filesystem>
 
 namespace frob::render {
@@ -59,13 +61,16 @@ TEST(Png, ParentThatIsAFileIsRejected) {
 }
 
 TEST(Png, ReadOnlyDirectoryIsRejectedUpFront) {
-  const fs::path dir = scratch("read_only");
-  fs::permissions(dir, fs::perms::owner_read | fs::perms::owner_exec);
-  if (::access(dir.c_str(), W_OK) == 0) GTEST_SKIP() << "running as root: permissions are not enforced";
-  const Status s = validateOutputDirectory(dir.string());
-  fs::permissions(dir, fs::perms::owner_all);
+  // CI runs as root, for whom a directory's mode bits do not forbid writing. /proc/sys is not
+  // writable by anyone, capabilities or not (Linux, fs/proc/proc_sysctl.c), so it refuses root too.
+  const std::string dir = "/proc/sys";
+  ASSERT_TRUE(fs::is_directory(dir)) << "this test needs Linux's /proc mounted";
+  const Status s = validateOutputDirectory(dir);
   ASSERT_FALSE(s.ok());
-  EXPECT_NE(s.error().find("is not writable"), std::string::npos) << s.error();
+  EXPECT_NE(s.error().find("directory '/proc/sys' is not writable"), std::string::npos) << s.error();
+  const Status w = writePng(dir + "/frame.png", gradient(2, 2));
+  ASSERT_FALSE(w.ok());
+  EXPECT_NE(w.error().find("is not writable"), std::string::npos) << w.error();
 }
 
 TEST(Png, EmptyImageIsRefused) {
@@ -80,6 +85,39 @@ TEST(Png, UnreadableFileIsNamed) {
   Result<Image> r = readPng("/nonexistent/golden.png");
   ASSERT_FALSE(r.ok());
   EXPECT_NE(r.error().find("png: cannot read '/nonexistent/golden.png'"), std::string::npos) << r.error();
+}
+
+// The golden comparison itself: it fails beyond its tolerance, and always fails when it rewrites.
+TEST(Golden, RewritingAGoldenFailsAndSaysSo) {
+  const fs::path dir = scratch("golden_update");
+  const std::string golden = (dir / "g.png").string();
+  const Image img = gradient(16, 8);
+  ASSERT_EQ(::setenv("FROB_UPDATE_GOLDENS", "1", 1), 0);
+  const ::testing::AssertionResult rewritten = testing::matchesGoldenFile(img, golden, (dir / "actual").string(), testing::kCpuRaster);
+  ASSERT_EQ(::unsetenv("FROB_UPDATE_GOLDENS"), 0);
+  EXPECT_FALSE(rewritten);
+  EXPECT_NE(std::string(rewritten.message()).find("golden rewritten, review and commit it"), std::string::npos)
+      << rewritten.message();
+  Result<Image> back = readPng(golden);
+  ASSERT_TRUE(back.ok()) << back.error();
+  EXPECT_EQ(back.value().rgba, img.rgba);
+  EXPECT_TRUE(testing::matchesGoldenFile(img, golden, (dir / "actual").string(), testing::kCpuRaster));
+}
+
+TEST(Golden, MorePixelsBeyondTheChannelToleranceThanAllowedFail) {
+  const fs::path dir = scratch("golden_tolerance");
+  const std::string golden = (dir / "g.png").string();
+  const Image img = gradient(16, 8);
+  ASSERT_TRUE(writePng(golden, img).ok());
+  constexpr testing::Tolerance tol{.channel = 24, .pixels = 3};
+  auto changed = [&](long pixels, int by) {
+    Image c = img;
+    for (long k = 0; k < pixels; ++k) c.rgba[static_cast<std::size_t>(k) * 4 + 2] ^= static_cast<std::uint8_t>(by);
+    return testing::matchesGoldenFile(c, golden, (dir / "actual").string(), tol);
+  };
+  EXPECT_TRUE(changed(100, 16));  // within the channel tolerance: never counted (x ^ 16 moves x by 16)
+  EXPECT_TRUE(changed(3, 64));    // beyond it, as many pixels as allowed
+  EXPECT_FALSE(changed(4, 64));   // one more
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include "frob/render/renderer.hpp"
 #include "frob/render/video.hpp"
 
+#include "decode.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -58,6 +60,7 @@ TEST(Pipeline, RunToMp4FramesAndPlot) {
   plots.tEnd = static_cast<double>(steps) * dt;
   std::vector<Point2> path;
   Image frame;
+  std::vector<Image> pngFrames;  // what went to the PNGs, to check the files against
   long pngs = 0;
   for (std::int64_t step = 0; step < steps; ++step) {
     const FrameScene scene = sceneAt(step, dt, path);
@@ -70,21 +73,41 @@ TEST(Pipeline, RunToMp4FramesAndPlot) {
     if (step % 25 == 0) {
       renderer.value().renderInto(scene, plots, frame);
       ASSERT_TRUE(writePng(framePath((dir / "frames").string(), pngs++), frame).ok());
+      pngFrames.push_back(frame);
     }
   }
 
   // 4. Close: the encoder is flushed and run.mp4 appears under its name.
   ASSERT_TRUE(mp4.value().close().ok());
   EXPECT_EQ(mp4.value().frameCount(), 30);
-  EXPECT_TRUE(fs::exists(video.path));
   EXPECT_FALSE(fs::exists(video.path + ".partial"));
-  EXPECT_TRUE(fs::exists(dir / "frames" / "frame_000003.png"));
 
   // 5. The plots alone, over the whole run, as a PNG of their own.
   Result<Renderer> plotter = Renderer::create({.width = 400, .height = 200});
   ASSERT_TRUE(plotter.ok());
-  ASSERT_TRUE(writePng((dir / "plots.png").string(), plotter.value().renderPlots(plots)).ok());
-  EXPECT_TRUE(fs::exists(dir / "plots.png"));
+  const Image plotImage = plotter.value().renderPlots(plots);
+  ASSERT_TRUE(writePng((dir / "plots.png").string(), plotImage).ok());
+
+  // What the files hold: each PNG frame is the frame rendered at its step; the video decodes to 30
+  // frames of the look's size, and where a video frame and a PNG frame show the same step (steps
+  // 0 and 50: video frames 0 and 15) they agree within the codec's loss; the plot PNG is the plots.
+  for (long i = 0; i < pngs; ++i) {
+    Result<Image> png = readPng(framePath((dir / "frames").string(), i));
+    ASSERT_TRUE(png.ok()) << png.error();
+    EXPECT_EQ(png.value().rgba, pngFrames[static_cast<std::size_t>(i)].rgba) << "frame " << i;
+  }
+  EXPECT_FALSE(fs::exists(framePath((dir / "frames").string(), pngs)));
+  const testing::Decoded d = testing::decode(video.path, true);
+  ASSERT_EQ(d.frames, 30);
+  EXPECT_EQ(d.width, look.width);
+  EXPECT_EQ(d.height, look.height);
+  EXPECT_LE(testing::lumaOutliers(d.images[0], pngFrames[0]), testing::kCodecLumaOutliers);
+  EXPECT_LE(testing::lumaOutliers(d.images[15], pngFrames[2]), testing::kCodecLumaOutliers);
+  EXPECT_GT(testing::lumaOutliers(d.images[15], pngFrames[0]), testing::kCodecLumaOutliers) << "the run moves";
+  Result<Image> plotPng = readPng((dir / "plots.png").string());
+  ASSERT_TRUE(plotPng.ok()) << plotPng.error();
+  EXPECT_EQ(plotPng.value().rgba, plotImage.rgba);
+  EXPECT_NE(plotImage.rgba, plotter.value().renderPlots(PlotSet{}).rgba) << "the plots are drawn";
 }
 
 }  // namespace

@@ -75,7 +75,7 @@ TEST(Renderer, StandalonePlotsMatchGolden) {
 TEST(Renderer, ChaseViewMatchesGolden) {
   Renderer r = make({.width = 320, .height = 240, .view = ViewMode::Chase});
   const Image img = r.render(roomScene());
-  EXPECT_TRUE(matchesGolden(img, "chase"));
+  EXPECT_TRUE(matchesGolden(img, "chase", testing::kLlvmpipe));
 }
 
 TEST(Renderer, SameSceneGivesIdenticalPixels) {

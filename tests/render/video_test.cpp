@@ -1,7 +1,9 @@
 // MP4 output decodes to what was written; bad setups fail before any frame; no partial files remain.
+#include "frob/render/renderer.hpp"
 #include "frob/render/video.hpp"
 
 #include "decode.hpp"
+#include "scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,24 +29,56 @@ Image solid(int w, int h, std::uint8_t shade) {
 
 using testing::decode;
 using testing::Decoded;
+using testing::kCodecLumaOutliers;
+using testing::lumaOutliers;
+
+// Frames of the test room with the robot driving across it: each frame differs from the others.
+std::vector<Image> drivingFrames(int count) {
+  Result<Renderer> r = Renderer::create({.width = 320, .height = 240, .hud = true});
+  EXPECT_TRUE(r.ok()) << r.error();
+  std::vector<Image> frames;
+  for (int i = 0; i < count; ++i) {
+    FrameScene s = testing::roomScene();
+    s.time = i / 30.0;
+    s.robots[0].pose = {Point2(0.5 + 0.06 * i, 1.0 + 0.02 * i), 0.05 * i};
+    frames.push_back(r.value().render(s));
+  }
+  return frames;
+}
 
 TEST(Video, DecodesToTheFramesWritten) {
   const fs::path dir = scratch("decode");
   const std::string path = (dir / "run.mp4").string();
-  Result<VideoWriter> v = VideoWriter::open({.path = path, .width = 160, .height = 96, .fps = 30});
+  Result<VideoWriter> v = VideoWriter::open({.path = path, .width = 320, .height = 240, .fps = 30});
   ASSERT_TRUE(v.ok()) << v.error();
   EXPECT_FALSE(fs::exists(path)) << "the video must not appear under its name before close()";
   EXPECT_TRUE(fs::exists(path + ".partial"));
-  for (int i = 0; i < 45; ++i) ASSERT_TRUE(v.value().write(solid(160, 96, static_cast<std::uint8_t>(i * 5))).ok());
+  // Each frame goes to the video and, as `frob run --frames` would write it, to a PNG.
+  const std::vector<Image> frames = drivingFrames(45);
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    ASSERT_TRUE(v.value().write(frames[i]).ok());
+    ASSERT_TRUE(writePng(framePath(dir.string(), static_cast<long>(i)), frames[i]).ok());
+  }
   EXPECT_EQ(v.value().frameCount(), 45);
   const Status closed = v.value().close();
   ASSERT_TRUE(closed.ok()) << closed.error();
   EXPECT_FALSE(fs::exists(path + ".partial"));
-  const Decoded d = decode(path);
+  const Decoded d = decode(path, true);
   EXPECT_EQ(d.codec, "h264");
   EXPECT_EQ(d.frames, 45);
-  EXPECT_EQ(d.width, 160);
-  EXPECT_EQ(d.height, 96);
+  EXPECT_EQ(d.width, 320);
+  EXPECT_EQ(d.height, 240);
+  ASSERT_EQ(d.images.size(), frames.size());
+  std::vector<Image> pngs;
+  for (std::size_t i = 0; i < frames.size(); ++i) pngs.push_back(readPng(framePath(dir.string(), static_cast<long>(i))).value());
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    // Within the codec's loss of the PNG of the same frame (kCodecLumaOutliers), and nearer to it than to
+    // the PNG of any other frame: no frame dropped, repeated, reordered or mangled.
+    const long own = lumaOutliers(d.images[i], pngs[i]);
+    EXPECT_LE(own, kCodecLumaOutliers) << "frame " << i;
+    for (std::size_t j = 0; j < frames.size(); ++j)
+      if (j != i) EXPECT_LT(own, lumaOutliers(d.images[i], pngs[j])) << "frame " << i << " looks like frame " << j;
+  }
 }
 
 TEST(Video, OddFrameSizeIsRejectedBeforeAnyFileExists) {

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string_view>
+
 namespace frob::worlds {
 namespace {
 
@@ -34,11 +36,14 @@ TEST(Recorder, KeepsEveryRobotAtEveryStep) {
 }
 
 TEST(Recorder, HashIsFnv1aOverThePoseBytesAndKeepsOnlyTheHashWhenAsked) {
-  // FNV-1a of no bytes is the offset basis; one pose of zeros folds 24 zero bytes.
-  std::uint64_t expected = kFnvOffset;
-  for (int b = 0; b < 24; ++b) expected *= 0x100000001b3ULL;
-  EXPECT_EQ(hashPose(kFnvOffset, Pose2{}), expected);
-  EXPECT_NE(hashPose(kFnvOffset, Pose2{.heading = 1e-300}), expected);
+  // Expected values from outside this code: FNV-1a's published test vectors ("a", "foobar"), and
+  // the hash of the 24 little-endian bytes of (1.5, -2.25, 0.5) as three doubles, computed in Python:
+  //   h = 0xcbf29ce484222325; for c in struct.pack('<ddd', 1.5, -2.25, 0.5): h = ((h ^ c) * 0x100000001b3) % 2**64
+  EXPECT_EQ(Fnv1a().add(std::string_view("a")).value(), 0xaf63dc4c8601ec8cULL);
+  EXPECT_EQ(Fnv1a().add(std::string_view("foobar")).value(), 0x85944171f73967e8ULL);
+  const Pose2 pose{Point2(1.5, -2.25), 0.5};
+  EXPECT_EQ(hashPose(0xcbf29ce484222325ULL, pose), 0x3b66d60d1679445bULL);
+  EXPECT_EQ(hashPose(hashPose(0xcbf29ce484222325ULL, pose), Pose2{}), 0x4c04a4ad94c1147bULL);  // then 24 zero bytes
 
   Simulation sim(testing::scene("size = [4, 4]\n[[robot]]\nstart = [1, 1]\n"));
   Recorder full, hashOnly({.keepSteps = false});
