@@ -27,8 +27,6 @@ namespace frob::app {
 namespace {
 
 namespace fs = std::filesystem;
-using course::Result;
-using course::Status;
 
 constexpr const char* kExamples = R"(Examples:
   frob run                                  the demo: BUG in the obstacle field, written to bug.mp4
@@ -54,8 +52,8 @@ Result<worlds::WorldDef> loadWorldNamed(const std::string& name) {
   if (worlds::findWorld(name) == nullptr && !fs::exists(name)) {
     return Status::failure("unknown world '" + name + "': not a reference world (see frob list) and no such file");
   }
-  worlds::Loaded<worlds::WorldDef> w = worlds::findWorld(name) != nullptr ? worlds::loadReferenceWorld(name) : worlds::loadWorld(name);
-  if (!w) return Status::failure(w.error);
+  Result<worlds::WorldDef> w = worlds::findWorld(name) != nullptr ? worlds::loadReferenceWorld(name) : worlds::loadWorld(name);
+  if (!w) return Status::failure(w.error());
   return *w;
 }
 

@@ -13,7 +13,6 @@
 namespace frob::course {
 
 namespace fs = std::filesystem;
-using render::Status;
 
 namespace {
 

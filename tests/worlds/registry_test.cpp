@@ -21,8 +21,8 @@ TEST(Registry, EveryReferenceWorldLoadsAndHasARobot) {
   ASSERT_GE(referenceWorlds().size(), 7u);
   for (const WorldEntry& e : referenceWorlds()) {
     EXPECT_TRUE(worldPath(e).is_absolute()) << e.name;
-    Loaded<WorldDef> w = loadWorld(worldPath(e));
-    ASSERT_TRUE(w.ok()) << e.name << ": " << w.error;
+    Result<WorldDef> w = loadWorld(worldPath(e));
+    ASSERT_TRUE(w.ok()) << e.name << ": " << w.error();
     EXPECT_FALSE(w->robots.empty()) << e.name;
     EXPECT_EQ(w->description, e.description) << e.name;  // the file and the registry agree
   }
@@ -32,7 +32,7 @@ TEST(Registry, FindsWorldsByName) {
   ASSERT_NE(findWorld("maze"), nullptr);
   EXPECT_EQ(findWorld("maze")->file, "maze.toml");
   EXPECT_EQ(findWorld("no such world"), nullptr);
-  EXPECT_EQ(loadReferenceWorld("nowhere").error, "no reference world called 'nowhere'");
+  EXPECT_EQ(loadReferenceWorld("nowhere").error(), "no reference world called 'nowhere'");
   EXPECT_TRUE(loadReferenceWorld("empty").ok());
 }
 

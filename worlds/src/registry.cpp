@@ -34,9 +34,9 @@ std::filesystem::path worldDataDir() { return std::filesystem::path(FROB_WORLDS_
 
 std::filesystem::path worldPath(const WorldEntry& entry) { return worldDataDir() / entry.file; }
 
-Loaded<WorldDef> loadReferenceWorld(std::string_view name) {
+Result<WorldDef> loadReferenceWorld(std::string_view name) {
   const WorldEntry* e = findWorld(name);
-  if (!e) return {.error = "no reference world called '" + std::string(name) + "'"};
+  if (!e) return Status::failure("no reference world called '" + std::string(name) + "'");
   return loadWorld(worldPath(*e));
 }
 

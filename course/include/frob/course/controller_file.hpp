@@ -4,7 +4,7 @@
 /// controller host (isolation.hpp) or, for trusted code, loaded into this process.
 
 #include "frob/controller.hpp"
-#include "frob/render/result.hpp"
+#include "frob/base/result.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -12,9 +12,6 @@
 #include <vector>
 
 namespace frob::course {
-
-using render::Result;
-using render::Status;
 
 /// How controller files are compiled. compilerSetup() gives the one the project was built with.
 struct CompilerSetup {

@@ -5,7 +5,7 @@
 #include "frob/geometry.hpp"
 #include "frob/render/image.hpp"
 #include "frob/render/plot.hpp"
-#include "frob/render/result.hpp"
+#include "frob/base/result.hpp"
 #include "frob/render/scene.hpp"
 
 #include <memory>
