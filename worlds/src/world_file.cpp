@@ -140,7 +140,7 @@ class Parser : TomlReader {
     auto t = table(*n, "points");
     if (!t) return false;
     for (auto&& [k, v] : *t) {
-      NamedPoint p{.name = std::string(k.str())};
+      Landmark p{.name = std::string(k.str())};
       if (!point(v, "points." + p.name, p.position)) return false;
       world_.points.push_back(std::move(p));
       lines_.points.push_back(line(v.source()));
