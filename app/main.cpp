@@ -1,4 +1,6 @@
 // The frob command line: thin, it parses arguments and calls the libraries.
+#include "frob/base/layout.hpp"
+#include "frob/course/controller_file.hpp"
 #include "frob/course/examples.hpp"
 #include "frob/course/generate.hpp"
 #include "frob/course/grade.hpp"
@@ -211,7 +213,11 @@ int listCommand() {
 
 int main(int argc, char** argv) {
   CLI::App cli{"Frob Sandbox: functional reactive robot controllers, simulated headlessly", "frob"};
-  cli.set_version_flag("--version", FROB_VERSION);
+  cli.set_version_flag("--version", [] {
+    const frob::Layout& files = frob::layout();
+    return std::string("frob ") + frob::version() + "\ncompiles controllers with " + frob::course::compilerDescription() +
+           "\nfiles in " + files.prefix.string() + (files.installed ? " (installed)" : " (the source tree; a build, not installed)");
+  });
   cli.footer(frob::app::kExamples);
   cli.require_subcommand(0, 1);
 

@@ -1,5 +1,6 @@
 #include "frob/render/renderer.hpp"
 
+#include "frob/base/layout.hpp"
 #include "frob/worlds/fnv.hpp"
 
 #include "chase_view.hpp"
@@ -23,7 +24,7 @@ namespace {
 RenderDef withDefaults(RenderDef def) {
   if (def.fontFile.empty()) def.fontFile = FROB_FONT_FILE;
   if (def.monoFontFile.empty()) def.monoFontFile = FROB_MONO_FONT_FILE;
-  if (def.robotModelFile.empty()) def.robotModelFile = FROB_ROBOT_MODEL_FILE;
+  if (def.robotModelFile.empty()) def.robotModelFile = (layout().models / "robot.obj").string();
   return def;
 }
 
