@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# Installs to a temporary prefix, moves it, and from another folder runs an example, a student file
+# and a student file that breaks out of its sandbox, with no path into the source or build tree.
+# Usage: relocated_test.sh CMAKE BUILD_DIR VERSION
+cmake=$1 build=$2 version=$3
+source "$(dirname "$0")/common.sh"
+
+"$cmake" --install "$build" --prefix "$work/installed" > "$work/install.log"
+mv "$work/installed" "$work/moved"  # a prefix that moved: nothing may name where it was installed
+prefix="$work/moved"
+frob="$prefix/bin/frob"
+mkdir "$work/elsewhere" && cd "$work/elsewhere"
+chmod 777 .  # writable by anyone, so that only the sandbox keeps a controller from writing here
+
+# The version, the compiler, and the files of the moved prefix, not of the build.
+"$frob" --version > version.txt
+contains version.txt "frob $version"
+contains version.txt "compiles controllers with "
+contains version.txt "files in $prefix (installed)"
+
+# The worlds, examples and assignments of the prefix.
+"$frob" list > list.txt
+contains list.txt "arena"
+contains list.txt "06_bug"
+contains list.txt "go_to_goal"
+lacks list.txt "cannot"
+
+# An example by name (prebuilt), and one as a file compiled like a student's.
+"$frob" run run_around --seconds 1 --json > example.json || fail "frob run run_around"
+contains example.json '"trajectory_hash"'
+"$frob" run "$prefix/share/frob/examples/02_wall_follower.cpp" --seconds 1 > example_file.txt 2>&1 || { cat example_file.txt; fail "an example file"; }
+
+# A student's file, in this folder, against the installed headers and precompiled header.
+cat > student.cpp <<'CPP'
+#include <frob/frob.hpp>
+using namespace frob;
+Behavior<Wheels> forward(const Robot&) { return wheels(0.2, 0.1); }
+FROB_CONTROLLER(forward, .world = "empty", .seconds = 2)
+CPP
+"$frob" run student.cpp --video student.mp4 --json > student.json 2> student.err || { cat student.err; fail "frob run student.cpp"; }
+contains student.json '"trajectory_hash"'
+# It ran in the installed controller host, confined by the installed frob-jail.
+contains student.json '"landlock"'
+contains student.json '"seccomp"'
+[ -s student.mp4 ] || fail "no video"
+
+# Isolation from the installed host: a controller writing outside its scratch folder is stopped and
+# writes nothing.
+cat > escapes.cpp <<CPP
+#include <frob/frob.hpp>
+#include <cstdio>
+using namespace frob;
+Behavior<Wheels> escapes(const Robot&) {
+  return toBehavior(lift([](double t) {
+    if (t > 0.5) if (std::FILE* f = std::fopen("$work/elsewhere/escaped", "w")) std::fclose(f);
+    return Wheels{0.1, 0.0};
+  }, time()));
+}
+FROB_CONTROLLER(escapes)
+CPP
+if "$frob" run escapes.cpp --seconds 2 --quiet > escapes.out 2> escapes.err; then fail "a controller writing outside its sandbox ran to the end"; fi
+contains escapes.err "tried to write $work/elsewhere/escaped (not allowed)"
+[ ! -e escaped ] || fail "the controller wrote outside its sandbox"
+echo "the moved prefix $prefix runs examples and student files, isolated"
