@@ -195,14 +195,17 @@ int generateCommand(const std::string& kindName, std::uint64_t seed, const std::
 int listCommand() {
   std::cout << "Worlds (frob run --world NAME, frob render NAME):\n";
   for (const worlds::WorldEntry& w : worlds::referenceWorlds()) std::printf("  %-10s %s\n", std::string(w.name).c_str(), std::string(w.description).c_str());
-  std::cout << "\nExamples (frob run NAME, or frob run course/examples/NAME.cpp):\n";
+  // Where the examples and handouts are: in the source tree, or in an installed prefix's share/frob.
+  const frob::Layout& files = frob::layout();
+  const auto shown = [&](const fs::path& dir) { return (files.installed ? dir : fs::relative(dir, files.sourceTree)).string(); };
+  std::cout << "\nExamples (frob run NAME, or frob run " << shown(files.examples) << "/NAME.cpp):\n";
   for (const course::Example& e : course::examples()) {
     Result<course::CompiledController> compiled = course::compileExample(e);
     Result<course::LoadedController> c = compiled ? course::loadInProcess(compiled.value()) : Result<course::LoadedController>(compiled.status());
     const std::string about = c ? c.value().entry.options.summary + " [" + c.value().entry.options.world + "]" : c.error();
     std::printf("  %-16s %s\n", e.name.c_str(), about.c_str());
   }
-  std::cout << "\nAssignments (frob grade NAME my.cpp --visible-only; handouts in assignments/NAME/handout.md):\n";
+  std::cout << "\nAssignments (frob grade NAME my.cpp --visible-only; handouts in " << shown(files.assignments) << "/NAME/handout.md):\n";
   for (const course::Assignment& a : course::assignments()) std::printf("  %-16s %s\n", a.name.c_str(), a.title.c_str());
   return 0;
 }

@@ -23,7 +23,12 @@ contains version.txt "files in $prefix (installed)"
 contains list.txt "arena"
 contains list.txt "06_bug"
 contains list.txt "go_to_goal"
+contains list.txt "frob run $prefix/share/frob/examples/NAME.cpp"
 lacks list.txt "cannot"
+
+# An assignment of the prefix graded (its starter scores, visible checks only).
+"$frob" grade go_to_goal "$prefix/share/frob/assignments/go_to_goal/starter.cpp" --visible-only > grade.txt 2>&1 || { cat grade.txt; fail "frob grade"; }
+contains grade.txt "Total"
 
 # An example by name (prebuilt), and one as a file compiled like a student's.
 "$frob" run run_around --seconds 1 --json > example.json || fail "frob run run_around"
