@@ -3,6 +3,7 @@
 # Usage: deb_test.sh CPACK BUILD_DIR VERSION
 cpack=$1 build=$2 version=$3
 source "$(dirname "$0")/common.sh"
+make_work
 
 "$cpack" -G DEB --config "$build/CPackConfig.cmake" -B "$work/package" > "$work/cpack.log" 2>&1 || { cat "$work/cpack.log"; fail "cpack"; }
 deb=$(ls "$work"/package/*.deb)

@@ -1,12 +1,31 @@
 #!/usr/bin/env bash
 # Installs to a temporary prefix, moves it, and from another folder runs an example, a student file
-# and a student file that breaks out of its sandbox, with no path into the source or build tree.
-# Usage: relocated_test.sh CMAKE BUILD_DIR VERSION
-cmake=$1 build=$2 version=$3
+# and a student file that breaks out of its sandbox; where the system allows (root), with the source
+# and build trees hidden under empty folders, so that nothing can come from them.
+# Usage: relocated_test.sh CMAKE SOURCE_DIR BUILD_DIR VERSION
 source "$(dirname "$0")/common.sh"
 
-"$cmake" --install "$build" --prefix "$work/installed" > "$work/install.log"
-mv "$work/installed" "$work/moved"  # a prefix that moved: nothing may name where it was installed
+if [ "$1" != --inner ]; then
+  cmake=$1 source=$2 build=$3 version=$4
+  make_work
+  "$cmake" --install "$build" --prefix "$work/installed" > "$work/install.log"
+  mv "$work/installed" "$work/moved"  # a prefix that moved: nothing may name where it was installed
+  mkdir "$work/scripts" && cp "$0" "$(dirname "$0")/common.sh" "$work/scripts/"  # these come from the source tree
+  inner=("$work/scripts/$(basename "$0")" --inner "$work" "$version")
+  if unshare --mount --propagation private true 2> /dev/null; then
+    # The build tree first: it may lie inside the source tree.
+    unshare --mount --propagation private bash -c 'mount -t tmpfs none "$1" && mount -t tmpfs none "$2" && shift 2 && bash "$@"' \
+      hide "$build" "$source" "${inner[@]}"
+    echo "(the source tree $source and the build tree $build were hidden)"
+  else
+    bash "${inner[@]}"
+    echo "(no mount namespace here: the source and build trees were not hidden)"
+  fi
+  exit 0
+fi
+
+work=$2 version=$3
+export FROB_CACHE_DIR="$work/cache"
 prefix="$work/moved"
 frob="$prefix/bin/frob"
 mkdir "$work/elsewhere" && cd "$work/elsewhere"

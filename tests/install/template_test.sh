@@ -4,6 +4,7 @@
 # Usage: template_test.sh CMAKE CTEST BUILD_DIR CXX MAKE_PROGRAM
 cmake=$1 ctest=$2 build=$3 cxx=$4 make_program=$5
 source "$(dirname "$0")/common.sh"
+make_work
 
 "$cmake" --install "$build" --prefix "$work/installed" > "$work/install.log"
 mv "$work/installed" "$work/moved"
