@@ -207,6 +207,7 @@ int listCommand() {
   }
   std::cout << "\nAssignments (frob grade NAME my.cpp --visible-only; handouts in " << shown(files.assignments) << "/NAME/handout.md):\n";
   for (const course::Assignment& a : course::assignments()) std::printf("  %-16s %s\n", a.name.c_str(), a.title.c_str());
+  std::cout << "\nA project of your own, with GoogleTest tests of its tasks: copy " << shown(files.studentTemplate) << " (see its README.md)\n";
   return 0;
 }
 
