@@ -19,8 +19,6 @@ namespace frob::app {
 namespace {
 
 namespace fs = std::filesystem;
-using course::Result;
-using course::Status;
 
 int fail(const std::string& message, int status = 1) {
   std::cerr << "frob: " << message << "\n";

@@ -1,4 +1,6 @@
 // The frob command line: thin, it parses arguments and calls the libraries.
+#include "frob/base/layout.hpp"
+#include "frob/course/controller_file.hpp"
 #include "frob/course/examples.hpp"
 #include "frob/course/generate.hpp"
 #include "frob/course/grade.hpp"
@@ -27,8 +29,6 @@ namespace frob::app {
 namespace {
 
 namespace fs = std::filesystem;
-using course::Result;
-using course::Status;
 
 constexpr const char* kExamples = R"(Examples:
   frob run                                  the demo: BUG in the obstacle field, written to bug.mp4
@@ -54,8 +54,8 @@ Result<worlds::WorldDef> loadWorldNamed(const std::string& name) {
   if (worlds::findWorld(name) == nullptr && !fs::exists(name)) {
     return Status::failure("unknown world '" + name + "': not a reference world (see frob list) and no such file");
   }
-  worlds::Loaded<worlds::WorldDef> w = worlds::findWorld(name) != nullptr ? worlds::loadReferenceWorld(name) : worlds::loadWorld(name);
-  if (!w) return Status::failure(w.error);
+  Result<worlds::WorldDef> w = worlds::findWorld(name) != nullptr ? worlds::loadReferenceWorld(name) : worlds::loadWorld(name);
+  if (!w) return Status::failure(w.error());
   return *w;
 }
 
@@ -199,15 +199,19 @@ int generateCommand(const std::string& kindName, std::uint64_t seed, const std::
 int listCommand() {
   std::cout << "Worlds (frob run --world NAME, frob render NAME):\n";
   for (const worlds::WorldEntry& w : worlds::referenceWorlds()) std::printf("  %-10s %s\n", std::string(w.name).c_str(), std::string(w.description).c_str());
-  std::cout << "\nExamples (frob run NAME, or frob run course/examples/NAME.cpp):\n";
+  // Where the examples and handouts are: in the source tree, or in an installed prefix's share/frob.
+  const frob::Layout& files = frob::layout();
+  const auto shown = [&](const fs::path& dir) { return (files.installed ? dir : fs::relative(dir, files.sourceTree)).string(); };
+  std::cout << "\nExamples (frob run NAME, or frob run " << shown(files.examples) << "/NAME.cpp):\n";
   for (const course::Example& e : course::examples()) {
     Result<course::CompiledController> compiled = course::compileExample(e);
     Result<course::LoadedController> c = compiled ? course::loadInProcess(compiled.value()) : Result<course::LoadedController>(compiled.status());
     const std::string about = c ? c.value().entry.options.summary + " [" + c.value().entry.options.world + "]" : c.error();
     std::printf("  %-16s %s\n", e.name.c_str(), about.c_str());
   }
-  std::cout << "\nAssignments (frob grade NAME my.cpp --visible-only; handouts in assignments/NAME/handout.md):\n";
+  std::cout << "\nAssignments (frob grade NAME my.cpp --visible-only; handouts in " << shown(files.assignments) << "/NAME/handout.md):\n";
   for (const course::Assignment& a : course::assignments()) std::printf("  %-16s %s\n", a.name.c_str(), a.title.c_str());
+  std::cout << "\nA project of your own, with GoogleTest tests of its tasks: copy " << shown(files.studentTemplate) << " (see its README.md)\n";
   return 0;
 }
 
@@ -221,7 +225,11 @@ constexpr const char* kWorldHelp =
 
 int main(int argc, char** argv) {
   CLI::App cli{"Frob Sandbox: functional reactive robot controllers, simulated headlessly", "frob"};
-  cli.set_version_flag("--version", FROB_VERSION);
+  cli.set_version_flag("--version", [] {
+    const frob::Layout& files = frob::layout();
+    return std::string("frob ") + frob::version() + "\ncompiles controllers with " + frob::course::compilerDescription() +
+           "\nfiles in " + files.prefix.string() + (files.installed ? " (installed)" : " (the source tree; a build, not installed)");
+  });
   cli.footer(frob::app::kExamples);
   cli.require_subcommand(0, 1);
 

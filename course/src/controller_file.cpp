@@ -1,6 +1,7 @@
 #include "frob/course/controller_file.hpp"
 
 #include "controller_setup.inc"
+#include "frob/base/layout.hpp"
 #include "frob/worlds/fnv.hpp"
 #include "jail.hpp"
 #include "load_error.hpp"
@@ -61,6 +62,7 @@ std::vector<std::string> compilerReads(const CompilerSetup& setup, bool pch) {
   for (const std::string& f : setup.flags) {
     if (f.rfind("-I", 0) == 0 && f.size() > 2) read.push_back(f.substr(2));
   }
+  read.insert(read.end(), setup.reads.begin(), setup.reads.end());
   if (pch) read.push_back(setup.precompiledHeader);
   return read;
 }
@@ -89,12 +91,18 @@ std::string onPath(const std::string& program) {
 
 }  // namespace
 
+std::string compilerDescription() { return std::string(FROB_CONTROLLER_COMPILER) + " (" + FROB_CONTROLLER_COMPILER_VERSION + ")"; }
+
 CompilerSetup compilerSetup() {
-  CompilerSetup s{.compiler = FROB_CONTROLLER_COMPILER, .precompiledHeader = FROB_CONTROLLER_PCH};
+  const Layout& files = layout();
+  CompilerSetup s{.compiler = FROB_CONTROLLER_COMPILER, .precompiledHeader = files.precompiledHeader.string()};
   std::stringstream flags(FROB_CONTROLLER_FLAGS);
   for (std::string f; std::getline(flags, f);) {
     if (!f.empty()) s.flags.push_back(f);
   }
+  // frob's headers, seen where the precompiled header saw them (see course/CMakeLists.txt).
+  s.flags.insert(s.flags.end(), {"-ivfsoverlay", files.headerOverlay.string(), std::string("-I") + kSdkIncludeDir});
+  s.reads = {files.headerOverlay.string(), files.includeDir.string()};
   if (const char* dir = std::getenv("FROB_CACHE_DIR"); dir != nullptr && *dir != '\0') {
     s.cacheDir = dir;
   } else if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg != '\0') {

@@ -1,6 +1,6 @@
 #include "frob/course/examples.hpp"
 
-#include "controller_setup.inc"
+#include "frob/base/layout.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -12,11 +12,11 @@ namespace fs = std::filesystem;
 std::vector<Example> examples() {
   std::vector<Example> list;
   std::error_code ec;
-  for (const fs::directory_entry& e : fs::directory_iterator(FROB_EXAMPLES_SOURCE_DIR, ec)) {
+  for (const fs::directory_entry& e : fs::directory_iterator(layout().examples, ec)) {
     const std::string stem = e.path().stem().string();
     if (e.path().extension() != ".cpp" || stem.size() < 4 || !std::isdigit(static_cast<unsigned char>(stem[0])) ||
         !std::isdigit(static_cast<unsigned char>(stem[1]))) continue;
-    list.push_back({stem, e.path(), fs::path(FROB_EXAMPLES_MODULE_DIR) / (stem + ".so")});
+    list.push_back({stem, e.path(), layout().exampleModules / (stem + ".so")});
   }
   std::sort(list.begin(), list.end(), [](const Example& a, const Example& b) { return a.name < b.name; });
   return list;

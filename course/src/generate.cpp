@@ -41,7 +41,7 @@ double mm(double v) { return std::round(v * 1000.0) / 1000.0; }
 void snap(Point2& p) { p = {mm(p.x()), mm(p.y())}; }
 void snap(WorldDef& w) {
   snap(w.size);
-  for (worlds::NamedPoint& p : w.points) snap(p.position);
+  for (worlds::Landmark& p : w.points) snap(p.position);
   for (worlds::RobotDef& r : w.robots) snap(r.start.position);
   for (WallDef& wall : w.walls) {
     for (Point2& p : wall.points) snap(p);
@@ -253,7 +253,7 @@ std::string toToml(const WorldDef& w) {
   std::string t = "# Made by frob world generate; the loader reads it back as it was made.\n";
   t += "description = \"" + w.description + "\"\nsize = " + point(w.size) + "\nenclosed = " + (w.enclosed ? "true" : "false") +
        "\nseed = " + std::to_string(w.seed) + "\n\n[points]\n";
-  for (const worlds::NamedPoint& p : w.points) t += p.name + " = " + point(p.position) + "\n";
+  for (const worlds::Landmark& p : w.points) t += p.name + " = " + point(p.position) + "\n";
   for (const worlds::RobotDef& r : w.robots) {
     t += "\n[[robot]]\nname = \"" + r.name + "\"\nstart = " + point(r.start.position) + "\nheading_deg = " + number(r.start.heading * 180.0 / pi) + "\n";
   }

@@ -2,7 +2,7 @@
 // report needs around one grade (its assignment's rubric, a film of a run).
 #include "frob/course/grade.hpp"
 
-#include "controller_setup.inc"
+#include "frob/base/layout.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/world_file.hpp"
 
@@ -63,7 +63,7 @@ std::vector<fs::path> shardOf(const std::vector<fs::path>& all, int i, int n) {
 std::vector<Assignment> assignments() {
   std::vector<Assignment> all;
   std::error_code ec;
-  for (const fs::directory_entry& e : fs::directory_iterator(FROB_ASSIGNMENTS_DIR, ec)) {
+  for (const fs::directory_entry& e : fs::directory_iterator(layout().assignments, ec)) {
     if (!fs::is_regular_file(e.path() / "rubric.toml")) continue;
     Result<Rubric> r = loadRubric(e.path() / "rubric.toml");
     all.push_back({e.path().filename().string(), r ? r.value().title : r.error(), e.path() / "rubric.toml"});
@@ -73,7 +73,7 @@ std::vector<Assignment> assignments() {
 }
 
 Result<fs::path> findRubric(const std::string& name) {
-  for (const fs::path& candidate : {fs::path(name), fs::path(name) / "rubric.toml", fs::path(FROB_ASSIGNMENTS_DIR) / name / "rubric.toml"}) {
+  for (const fs::path& candidate : {fs::path(name), fs::path(name) / "rubric.toml", layout().assignments / name / "rubric.toml"}) {
     if (fs::is_regular_file(candidate)) return candidate;
   }
   return Status::failure("unknown assignment '" + name + "': not a folder of assignments/ (see frob list), and no rubric.toml there");

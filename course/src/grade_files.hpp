@@ -1,15 +1,12 @@
 #pragma once
 // Private: what the grade's writers share (grade_report.cpp, gradebook.cpp): whole files, and
 // points as text.
-#include "frob/render/result.hpp"
+#include "frob/base/result.hpp"
 
 #include <filesystem>
 #include <string>
 
 namespace frob::course::detail {
-
-using render::Result;
-using render::Status;
 
 /// Writes `bytes` to `<path>.partial` and renames it to `path`; `what` names the file in messages.
 [[nodiscard]] Status writeWhole(const std::filesystem::path& path, const std::string& what, const std::string& bytes);

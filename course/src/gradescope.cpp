@@ -1,6 +1,6 @@
 #include "frob/course/gradescope.hpp"
 
-#include "controller_setup.inc"
+#include "frob/base/layout.hpp"
 #include "frob/render/output_file.hpp"
 
 #include <zip.h>
@@ -13,7 +13,6 @@
 namespace frob::course {
 
 namespace fs = std::filesystem;
-using render::Status;
 
 namespace {
 
@@ -104,6 +103,8 @@ class Zip {
 }  // namespace
 
 Status writeGradescopeZip(const GradescopeZipDef& def, const fs::path& out) {
+  const fs::path source = layout().sourceTree;
+  if (source.empty()) return Status::failure("the Gradescope autograder is built from Frob Sandbox's source tree, and this frob is installed without one");
   if (Status s = render::checkWritable(out.string(), "zip"); !s) return s;
   const std::string partial = render::partialPath(out.string());
   Zip zip(partial);
@@ -113,7 +114,6 @@ Status writeGradescopeZip(const GradescopeZipDef& def, const fs::path& out) {
   bool ok = zip.addText("setup.sh", kSetup, true) && zip.addText("run_autograder", run, true);
   if (!def.secret.empty()) ok = ok && zip.addText("secret.txt", def.secret + "\n", false);
   std::error_code ec;
-  const fs::path source(FROB_SOURCE_DIR);
   for (auto it = fs::recursive_directory_iterator(source, ec); ok && it != fs::recursive_directory_iterator(); it.increment(ec)) {
     const fs::path relative = fs::relative(it->path(), source);
     if (it->is_directory() && !wanted(relative)) it.disable_recursion_pending();

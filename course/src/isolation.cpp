@@ -1,6 +1,6 @@
 #include "frob/course/isolation.hpp"
 
-#include "controller_setup.inc"
+#include "frob/base/layout.hpp"
 #include "frob/sandbox/channel.hpp"
 #include "frob/sandbox/wire.hpp"
 #include "jail.hpp"
@@ -214,7 +214,7 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
   if (::mkdtemp(scratch.data()) == nullptr) return failure("cannot make a scratch folder in " + fs::temp_directory_path(ec).string());
   impl->scratch = scratch;
   const bool root = ::geteuid() == 0;
-  std::vector<std::string> command{FROB_HOST_PATH};
+  std::vector<std::string> command{layout().controllerHost.string()};
   for (std::size_t m = 0; m < modules.size(); ++m) {
     const fs::path copy = impl->scratch / ("m" + std::to_string(m) + ".so");
     if (!fs::copy_file(modules[m], copy, ec)) return failure("cannot copy " + modules[m].string() + ": " + ec.message());

@@ -1,6 +1,6 @@
 #include "jail.hpp"
 
-#include "controller_setup.inc"
+#include "frob/base/layout.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -22,7 +22,7 @@ Result<Jailed> Jailed::start(const JailDef& def) {
   int report[2];
   if (::pipe2(report, O_CLOEXEC) != 0) return Status::failure(std::string("cannot start the sandbox: ") + std::strerror(errno));
   const int keep = static_cast<int>(def.fds.size());
-  std::vector<std::string> args{FROB_JAIL_PATH, "--keep-fds", std::to_string(keep), "--report-fd", std::to_string(keep),
+  std::vector<std::string> args{layout().jail.string(), "--keep-fds", std::to_string(keep), "--report-fd", std::to_string(keep),
                                 "--parent", std::to_string(::getpid()), "--cwd", def.cwd};
   const auto add = [&](const char* flag, auto value) {
     if (value != 0) args.insert(args.end(), {flag, std::to_string(value)});
@@ -64,7 +64,7 @@ Result<Jailed> Jailed::start(const JailDef& def) {
   if (err != 0) {
     ::close(report[0]);
     j.pid_ = 0;
-    return Status::failure(std::string("cannot start the sandbox " FROB_JAIL_PATH ": ") + std::strerror(err));
+    return Status::failure("cannot start the sandbox " + layout().jail.string() + ": " + std::strerror(err));
   }
   j.pidfd_ = static_cast<int>(::syscall(SYS_pidfd_open, j.pid_, 0));
   // The report ends when frob-jail closes it, just before it runs the program (or dies).
@@ -83,7 +83,7 @@ Result<Jailed> Jailed::start(const JailDef& def) {
     const std::string flags = line.substr(a + 1, b - a - 1);  // applied, then required
     j.layers_.push_back({line.substr(0, a), flags.starts_with("1"), flags.ends_with("1"), line.substr(b + 1)});
   }
-  if (j.layers_.empty()) return Status::failure("the sandbox " FROB_JAIL_PATH " did not start: status " + std::to_string(j.wait()));
+  if (j.layers_.empty()) return Status::failure("the sandbox " + layout().jail.string() + " did not start: status " + std::to_string(j.wait()));
   return j;
 }
 

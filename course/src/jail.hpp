@@ -2,7 +2,7 @@
 // Starting a program under frob-jail, which confines itself and then runs it; shared by the
 // sandboxed compile and the controller host.
 
-#include "frob/render/result.hpp"
+#include "frob/base/result.hpp"
 #include "frob/sandbox/confine.hpp"
 
 #include <sys/types.h>
@@ -17,9 +17,6 @@
 #endif
 
 namespace frob::course {
-
-using render::Result;
-using render::Status;
 
 /// Whether this build runs under AddressSanitizer, which reserves terabytes of address space: then
 /// no address-space limit can be set on frob-jail or what it runs, and memory is watched instead.
@@ -79,7 +76,6 @@ struct JailedRun {
 /// Runs `def` to its end with its stdout and stderr captured (def.fds[1], [2] are set here), killed
 /// after `seconds` of wall-clock time; keeps the first `outputBytes` of what it printed.
 [[nodiscard]] Result<JailedRun> runJailed(JailDef def, double seconds, std::size_t outputBytes);
-
 
 
 }  // namespace frob::course

@@ -66,7 +66,7 @@ std::string resolved(std::string name, const Track& t) {
 
 // The named point `name`, if the world has it.
 std::optional<Point2> pointNamed(const RunRecord& run, const std::string& name) {
-  for (const worlds::NamedPoint& p : run.points) {
+  for (const worlds::Landmark& p : run.points) {
     if (p.name == name) return p.position;
   }
   return std::nullopt;

@@ -276,8 +276,8 @@ std::vector<WorldRef> worldsOf(const Check& check, const std::string& secret) {
 
 Result<worlds::WorldDef> loadWorldRef(const WorldRef& w) {
   if (w.generated) return generateWorld(*w.generated, w.worldSeed);
-  worlds::Loaded<worlds::WorldDef> loaded = w.file.empty() ? worlds::loadReferenceWorld(w.name) : worlds::loadWorld(w.file);
-  if (!loaded) return Status::failure(loaded.error);
+  Result<worlds::WorldDef> loaded = w.file.empty() ? worlds::loadReferenceWorld(w.name) : worlds::loadWorld(w.file);
+  if (!loaded) return Status::failure(loaded.error());
   if (std::string e = worlds::checkRunnable(*loaded); !e.empty()) return Status::failure(w.name + ": " + e);
   return *loaded;
 }

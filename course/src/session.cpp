@@ -67,8 +67,8 @@ std::size_t frontSonarOf(const RobotSpec& spec) {
   return best;
 }
 
-const worlds::NamedPoint* findGoal(const worlds::WorldDef& world) {
-  for (const worlds::NamedPoint& p : world.points) {
+const worlds::Landmark* findGoal(const worlds::WorldDef& world) {
+  for (const worlds::Landmark& p : world.points) {
     if (p.name == "goal") return &p;
   }
   return nullptr;
@@ -203,7 +203,7 @@ Result<Summary> runSession(const RunDef& def) {
     if (frames) frames->discard();
   };
 
-  const worlds::NamedPoint* goal = findGoal(sim.world());
+  const worlds::Landmark* goal = findGoal(sim.world());
   Diagnosis diagnosis(sim.walls(), sim.world().size, sim.dt());
   std::vector<RobotWatch> watch(n);
   for (std::size_t i = 0; i < n; ++i) {

@@ -4,7 +4,7 @@
 
 #include "frob/debug.hpp"
 #include "frob/render/image.hpp"
-#include "frob/render/result.hpp"
+#include "frob/base/result.hpp"
 #include "frob/worlds/recorder.hpp"
 
 #include <cstdio>
@@ -12,9 +12,6 @@
 #include <vector>
 
 namespace frob::course {
-
-using render::Result;
-using render::Status;
 
 // One CSV row per robot per step: time, robot, true pose, odometry, wheels, sonars, bumper, task.
 class TraceFile {

@@ -1,8 +1,8 @@
 #include "frob/detail/node.hpp"
+#include "frob/errors.hpp"
 #include "frob/event.hpp"
 #include "frob/instant.hpp"
 
-#include <cassert>
 #include <algorithm>
 #include <vector>
 
@@ -82,7 +82,7 @@ std::vector<PlanStep> planFor(const NodeBase& root) {
 long liveNodeCount() { return detail::liveNodes.load(std::memory_order_relaxed); }
 
 Clock::Clock(double dt) {
-  assert(dt > 0 && "Clock: dt must be positive");
+  FROB_ASSERT(dt > 0, "Clock: dt must be positive");
   now_ = Instant{.id = nextInstantId.fetch_add(1, std::memory_order_relaxed), .step = 0, .time = 0.0, .dt = dt};
 }
 

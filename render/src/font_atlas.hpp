@@ -2,7 +2,7 @@
 // Text through FreeType: printable ASCII of two fonts rasterized once into one alpha texture.
 
 #include "canvas.hpp"
-#include "frob/render/result.hpp"
+#include "frob/base/result.hpp"
 
 #include <array>
 #include <cstdint>

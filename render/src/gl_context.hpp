@@ -1,7 +1,7 @@
 #pragma once
 // An OSMesa (llvmpipe) offscreen OpenGL context of fixed size, drawing into a caller's buffer.
 
-#include "frob/render/result.hpp"
+#include "frob/base/result.hpp"
 
 #include <cstdint>
 #include <memory>

@@ -2,7 +2,7 @@
 // A robot mesh loaded with assimp: flat triangles with a colour each.
 
 #include "frob/picture.hpp"
-#include "frob/render/result.hpp"
+#include "frob/base/result.hpp"
 
 #include <Eigen/Core>
 

@@ -1,5 +1,6 @@
 #include "frob/render/renderer.hpp"
 
+#include "frob/base/layout.hpp"
 #include "frob/worlds/fnv.hpp"
 
 #include "chase_view.hpp"
@@ -23,7 +24,7 @@ namespace {
 RenderDef withDefaults(RenderDef def) {
   if (def.fontFile.empty()) def.fontFile = FROB_FONT_FILE;
   if (def.monoFontFile.empty()) def.monoFontFile = FROB_MONO_FONT_FILE;
-  if (def.robotModelFile.empty()) def.robotModelFile = FROB_ROBOT_MODEL_FILE;
+  if (def.robotModelFile.empty()) def.robotModelFile = (layout().models / "robot.obj").string();
   return def;
 }
 
@@ -180,7 +181,7 @@ std::uint64_t staticKeyOf(const FrameScene& s) {
   for (const Wall& w : s.walls) k.add(w.a), k.add(w.b), k.add(w.thickness);
   for (const Block& b : s.blocks) k.add(b.center), k.add(b.halfExtents.x()), k.add(b.halfExtents.y()), k.add(b.angle);
   for (const Pillar& p : s.pillars) k.add(p.center), k.add(p.radius);
-  for (const NamedPoint& p : s.points) {
+  for (const Marker& p : s.points) {
     k.add(p.at);
     const Color c = p.color.value_or(Color{-1, -1, -1, -1});
     k.add(c.r), k.add(c.g), k.add(c.b), k.add(c.a);

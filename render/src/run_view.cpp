@@ -11,25 +11,13 @@ namespace {
 constexpr double kWallThickness = 0.05;  // thin walls are Box2D segments; drawn this wide, metres
 
 void addWall(FrameScene& s, const worlds::WallDef& w) {
-  using worlds::WallShape;
-  switch (w.shape) {
-    case WallShape::Segment:
-      if (w.points.size() >= 2) s.walls.push_back({w.points[0], w.points[1], kWallThickness});
-      break;
-    case WallShape::Polyline:
-      for (std::size_t i = 0; i + 1 < w.points.size(); ++i) s.walls.push_back({w.points[i], w.points[i + 1], kWallThickness});
-      if (w.closed && w.points.size() > 2) s.walls.push_back({w.points.back(), w.points.front(), kWallThickness});
-      break;
-    case WallShape::Rectangle:
-      if (w.points.size() >= 2) {
-        const Point2 lo = w.points[0].cwiseMin(w.points[1]), hi = w.points[0].cwiseMax(w.points[1]);
+  worlds::forEachEdge(
+      w, [&](const Point2& a, const Point2& b) { s.walls.push_back({a, b, kWallThickness}); },
+      [&](const Point2& p, const Point2& q) {
+        const Point2 lo = p.cwiseMin(q), hi = p.cwiseMax(q);
         s.blocks.push_back({(lo + hi) / 2, (hi - lo) / 2, 0.0});
-      }
-      break;
-    case WallShape::Circle:
-      if (!w.points.empty()) s.pillars.push_back({w.points[0], w.radius});
-      break;
-  }
+      },
+      [&](const Point2& centre, double radius) { s.pillars.push_back({centre, radius}); });
 }
 
 // Appends `p` to a path that keeps points at least `spacing` apart, plus the newest position as a
@@ -53,7 +41,7 @@ FrameScene staticScene(const worlds::Simulation& sim) {
   const worlds::WorldDef& world = sim.world();
   s.bounds = {Point2(0, 0), Point2(world.size.x(), world.size.y())};
   for (const worlds::WallDef& w : sim.walls()) addWall(s, w);
-  for (const worlds::NamedPoint& p : world.points) s.points.push_back({p.name, p.position, {}});
+  for (const worlds::Landmark& p : world.points) s.points.push_back({p.name, p.position, {}});
   return s;
 }
 

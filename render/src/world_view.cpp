@@ -231,7 +231,7 @@ void drawGround(Canvas& c, const FontAtlas& fonts, const RenderDef& def, const F
   for (const Wall& w : scene.walls) c.line(m.map(w.a), m.map(w.b), std::max(w.thickness * m.scale, 2 * m.pixel), wallInk);
 
   // Named points: a diamond and a label.
-  for (const NamedPoint& p : scene.points) {
+  for (const Marker& p : scene.points) {
     const Color col = p.color.value_or(palette::point);
     const Vec2 q = m.map(p.at);
     const double s = 5 * m.pixel;

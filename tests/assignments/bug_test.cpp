@@ -48,7 +48,7 @@ std::string readFile(const std::filesystem::path& file) {
 }
 
 TEST(BugAssignment, RubricHasTheChecksTheHandoutDescribes) {
-  course::Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
+  Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
   ASSERT_TRUE(rubric.ok()) << rubric.error();
   Scores points;
   for (const course::Check& c : rubric.value().checks) points[c.name] = c.points;
@@ -66,7 +66,7 @@ TEST(BugAssignment, RubricHasTheChecksTheHandoutDescribes) {
 // start (1.5, 1.5), goal (13.5, 13.5), a way between.
 TEST(BugAssignment, VisibleWorldsAreGeneratedFields) {
   for (const auto& [file, seed] : {std::pair{"worlds/trap.toml", 70}, std::pair{"worlds/field.toml", 19}}) {
-    course::Result<worlds::WorldDef> made = course::generateWorld(course::WorldKind::Obstacles, seed);
+    Result<worlds::WorldDef> made = course::generateWorld(course::WorldKind::Obstacles, seed);
     ASSERT_TRUE(made.ok()) << made.error();
     std::string text = readFile(assignmentFile(kAssignment, file));
     const std::string note = "# frob world generate obstacles --seed " + std::to_string(seed) +

@@ -37,7 +37,7 @@ course::Grade gradeFile(const std::filesystem::path& file) {
 }
 
 TEST(GoToGoalAssignment, RubricHasTheChecksTheHandoutDescribes) {
-  course::Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
+  Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
   ASSERT_TRUE(rubric.ok()) << rubric.error();
   Scores points;
   for (const course::Check& c : rubric.value().checks) points[c.name] = c.points;
@@ -52,8 +52,8 @@ TEST(GoToGoalAssignment, RubricHasTheChecksTheHandoutDescribes) {
 TEST(GoToGoalAssignment, EveryWorldHasTheHandoutsWaypointsAndStart) {
   const std::map<std::string, Point2> handout = {{"wp1", {3.0, 2.5}}, {"wp2", {3.5, 7.5}}, {"wp3", {9.0, 7.0}}, {"wp4", {8.5, 2.5}}};
   for (const char* file : {"worlds/lounge.toml", "hidden_worlds/study.toml", "hidden_worlds/workshop.toml"}) {
-    worlds::Loaded<worlds::WorldDef> world = worlds::loadWorld(assignmentFile(kAssignment, file));
-    ASSERT_TRUE(world) << world.error;
+    Result<worlds::WorldDef> world = worlds::loadWorld(assignmentFile(kAssignment, file));
+    ASSERT_TRUE(world) << world.error();
     for (const auto& [name, at] : handout) {
       std::optional<Point2> p = worlds::findPoint(*world, name);
       ASSERT_TRUE(p.has_value()) << file << " has no " << name;

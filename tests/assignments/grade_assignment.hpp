@@ -14,7 +14,7 @@ namespace frob::testing {
 inline constexpr const char* kTestSecret = "ci-test-secret";
 
 inline course::Grade gradeAssignment(const std::string& assignment, const std::filesystem::path& submission) {
-  course::Result<course::Rubric> rubric = course::loadRubric(std::filesystem::path(FROB_ASSIGNMENTS_DIR) / assignment / "rubric.toml");
+  Result<course::Rubric> rubric = course::loadRubric(std::filesystem::path(FROB_ASSIGNMENTS_DIR) / assignment / "rubric.toml");
   EXPECT_TRUE(rubric.ok()) << rubric.error();
   course::GradeDef def{.rubric = rubric.value(), .assignment = assignment, .secret = kTestSecret};
   def.compiler.cacheDir = FROB_TEST_CACHE_DIR;

@@ -37,7 +37,7 @@ course::Grade gradeFile(const std::filesystem::path& file) {
 }
 
 TEST(MultiRobotAssignment, RubricHasTheChecksTheHandoutDescribes) {
-  course::Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
+  Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
   ASSERT_TRUE(rubric.ok()) << rubric.error();
   Scores points;
   for (const course::Check& c : rubric.value().checks) points[c.name] = c.points;
@@ -57,8 +57,8 @@ TEST(MultiRobotAssignment, EveryGoalIsOppositeItsRobotsStart) {
   const Point2 centre(5.0, 5.0);
   for (const char* file : {"worlds/swap.toml", "worlds/corners.toml", "hidden_worlds/three.toml", "hidden_worlds/plus.toml",
                            "hidden_worlds/crossing.toml", "hidden_worlds/scattered.toml"}) {
-    worlds::Loaded<worlds::WorldDef> world = worlds::loadWorld(assignmentFile(kAssignment, file));
-    ASSERT_TRUE(world) << world.error;
+    Result<worlds::WorldDef> world = worlds::loadWorld(assignmentFile(kAssignment, file));
+    ASSERT_TRUE(world) << world.error();
     EXPECT_EQ(world->size, Vec2(10.0, 10.0)) << file;
     EXPECT_GE(world->robots.size(), 2u) << file;
     EXPECT_LE(world->robots.size(), 4u) << file;

@@ -41,7 +41,7 @@ course::Grade gradeFile(const std::filesystem::path& file) {
 const char* const kStillMoving = "was still moving at 0.60 m/s at the end; it should stop";
 
 TEST(ParallelAssignment, RubricHasTheChecksTheHandoutDescribes) {
-  course::Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
+  Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
   ASSERT_TRUE(rubric.ok()) << rubric.error();
   Scores points;
   int hidden = 0;
@@ -61,8 +61,8 @@ TEST(ParallelAssignment, EveryWorldHasTheHandoutsRouteAndStart) {
   const std::map<std::string, Point2> handout = {{"p1", {1.5, 1.5}}, {"p2", {6.5, 1.5}}, {"p3", {6.5, 4.5}}, {"p4", {1.5, 4.5}}};
   for (const char* file : {"worlds/warehouse.toml", "worlds/warehouse_key.toml", "worlds/warehouse_box.toml",
                            "hidden_worlds/warehouse_keys.toml", "hidden_worlds/warehouse_box2.toml"}) {
-    worlds::Loaded<worlds::WorldDef> world = worlds::loadWorld(assignmentFile(kAssignment, file));
-    ASSERT_TRUE(world) << world.error;
+    Result<worlds::WorldDef> world = worlds::loadWorld(assignmentFile(kAssignment, file));
+    ASSERT_TRUE(world) << world.error();
     for (const auto& [name, at] : handout) {
       std::optional<Point2> p = worlds::findPoint(*world, name);
       ASSERT_TRUE(p.has_value()) << file << " has no " << name;

@@ -40,7 +40,7 @@ course::Grade gradeFile(const std::filesystem::path& file) {
 }
 
 TEST(WallFollowAssignment, RubricHasTheChecksTheHandoutDescribes) {
-  course::Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
+  Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
   ASSERT_TRUE(rubric.ok()) << rubric.error();
   Scores points;
   for (const course::Check& c : rubric.value().checks) {
@@ -56,8 +56,8 @@ TEST(WallFollowAssignment, RubricHasTheChecksTheHandoutDescribes) {
 // on its right.
 TEST(WallFollowAssignment, WaypointsLieOnTheFollowersPath) {
   for (const char* file : {"worlds/l_room.toml", "worlds/notched_block.toml", "hidden_worlds/z_corridor.toml", "hidden_worlds/alcove_room.toml"}) {
-    worlds::Loaded<worlds::WorldDef> world = worlds::loadWorld(assignmentFile(kAssignment, file));
-    ASSERT_TRUE(world) << world.error;
+    Result<worlds::WorldDef> world = worlds::loadWorld(assignmentFile(kAssignment, file));
+    ASSERT_TRUE(world) << world.error();
     auto nearestWall = [&](const Point2& p) {
       double d = 1e9;
       for (const worlds::WallDef& w : world->walls) d = std::min(d, worlds::distanceToWall(p, w));

@@ -39,7 +39,7 @@ course::Grade gradeFile(const std::filesystem::path& file) {
 }
 
 TEST(WanderAssignment, RubricHasTheChecksTheHandoutDescribes) {
-  course::Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
+  Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
   ASSERT_TRUE(rubric.ok()) << rubric.error();
   Scores points;
   for (const course::Check& c : rubric.value().checks) points[c.name] = c.points;
@@ -54,8 +54,8 @@ TEST(WanderAssignment, RubricHasTheChecksTheHandoutDescribes) {
 // the room that "gets out of the hall" asks for.
 TEST(WanderAssignment, EveryWorldHasOneRobotAndTheRoomPoint) {
   for (const char* file : {"worlds/living_room.toml", "worlds/bedroom.toml", "hidden_worlds/kitchen.toml", "hidden_worlds/study.toml"}) {
-    worlds::Loaded<worlds::WorldDef> world = worlds::loadWorld(assignmentFile(kAssignment, file));
-    ASSERT_TRUE(world) << world.error;
+    Result<worlds::WorldDef> world = worlds::loadWorld(assignmentFile(kAssignment, file));
+    ASSERT_TRUE(world) << world.error();
     ASSERT_EQ(world->robots.size(), 1u) << file;
     std::optional<Point2> room = worlds::findPoint(*world, "room");
     ASSERT_TRUE(room.has_value()) << file;

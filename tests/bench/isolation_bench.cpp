@@ -40,7 +40,7 @@ void InProcess(benchmark::State& state) {
 
 void Isolated(benchmark::State& state) {
   course::IsolationDef def{.spinNanoseconds = static_cast<std::uint64_t>(state.range(1)) * 1000};
-  course::Result<std::shared_ptr<course::ControllerHost>> host = course::ControllerHost::start({kModule}, {"run_around"}, def);
+  Result<std::shared_ptr<course::ControllerHost>> host = course::ControllerHost::start({kModule}, {"run_around"}, def);
   if (!host) return state.SkipWithError(host.error().c_str());
   worlds::Run run(world(static_cast<int>(state.range(0))), {}, host.value()->driver({0}, false), {.keepSteps = false});
   perStep(state, run);
@@ -48,7 +48,7 @@ void Isolated(benchmark::State& state) {
 
 void HostStart(benchmark::State& state) {
   for (auto _ : state) {
-    course::Result<std::shared_ptr<course::ControllerHost>> host = course::ControllerHost::start({kModule}, {"run_around"});
+    Result<std::shared_ptr<course::ControllerHost>> host = course::ControllerHost::start({kModule}, {"run_around"});
     if (!host) return state.SkipWithError(host.error().c_str());
   }
 }

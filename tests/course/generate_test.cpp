@@ -98,8 +98,8 @@ TEST_P(EveryKind, KeepsItsPromisesForManySeeds) {
 
 TEST_P(EveryKind, WritesAFileThatLoadsBackToTheSameWorld) {
   const worlds::WorldDef made = generateWorld(GetParam(), 7).value();
-  worlds::Loaded<worlds::WorldDef> back = worlds::parseWorld(toToml(made), "made.toml");
-  ASSERT_TRUE(back.ok()) << back.error;
+  Result<worlds::WorldDef> back = worlds::parseWorld(toToml(made), "made.toml");
+  ASSERT_TRUE(back.ok()) << back.error();
   ASSERT_EQ(back->walls.size(), made.walls.size());
   for (std::size_t i = 0; i < made.walls.size(); ++i) {
     EXPECT_EQ(back->walls[i].shape, made.walls[i].shape) << i;

@@ -30,8 +30,8 @@ Behavior<Wheels> wanderer(const Robot& r) {
 }
 
 worlds::WorldDef world(std::string_view name) {
-  worlds::Loaded<worlds::WorldDef> w = worlds::loadReferenceWorld(name);
-  EXPECT_TRUE(w.ok()) << w.error;
+  Result<worlds::WorldDef> w = worlds::loadReferenceWorld(name);
+  EXPECT_TRUE(w.ok()) << w.error();
   return w.ok() ? *w : worlds::WorldDef{};
 }
 

@@ -35,8 +35,8 @@ TEST(BitmapMap, MergesDarkPixelsIntoFewRectangles) {
                                             "#..##....#",
                                             "##########",
                                         });
-  Loaded<std::vector<WallDef>> walls = wallsFromBitmap(png, {.scale = 0.5, .origin = Point2(1, 2)});
-  ASSERT_TRUE(walls.ok()) << walls.error;
+  Result<std::vector<WallDef>> walls = wallsFromBitmap(png, {.scale = 0.5, .origin = Point2(1, 2)});
+  ASSERT_TRUE(walls.ok()) << walls.error();
   // Top row; left and right columns below it; the block, which grows down into the bottom row;
   // the bottom row's two remaining runs.
   EXPECT_EQ(walls->size(), 6u);
@@ -58,12 +58,12 @@ TEST(BitmapMap, ThresholdDecidesWhatIsDark) {
 }
 
 TEST(BitmapMap, BadFilesGiveMessages) {
-  EXPECT_EQ(wallsFromBitmap("/nonexistent/x.png", {}).error, "x.png: no such bitmap file");
+  EXPECT_EQ(wallsFromBitmap("/nonexistent/x.png", {}).error(), "x.png: no such bitmap file");
   const auto notPng = std::filesystem::path(::testing::TempDir()) / "not.png";
   std::ofstream(notPng) << "this is not a png";
-  Loaded<std::vector<WallDef>> w = wallsFromBitmap(notPng, {});
+  Result<std::vector<WallDef>> w = wallsFromBitmap(notPng, {});
   ASSERT_FALSE(w.ok());
-  EXPECT_TRUE(w.error.starts_with("not.png: not a readable PNG")) << w.error;
+  EXPECT_TRUE(w.error().starts_with("not.png: not a readable PNG")) << w.error();
 }
 
 }  // namespace

@@ -15,10 +15,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace frob::worlds;
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   // Map paths resolve against the reference worlds' folder, so seeds that name office.png load it.
-  const Loaded<WorldDef> w = parseWorld(text, "fuzz.toml", worldDataDir());
+  const frob::Result<WorldDef> w = parseWorld(text, "fuzz.toml", worldDataDir());
   if (!w.ok()) {
-    if (w.error.rfind("fuzz.toml", 0) != 0) {  // every message starts with the file name
-      std::fprintf(stderr, "message without the file name: %s\n", w.error.c_str());
+    if (w.error().rfind("fuzz.toml", 0) != 0) {  // every message starts with the file name
+      std::fprintf(stderr, "message without the file name: %s\n", w.error().c_str());
       std::abort();
     }
     return 0;

@@ -28,8 +28,8 @@ double perimeter(const std::vector<WallDef>& walls) {
 }
 
 TEST(MeshMap, SlicesABoxIntoItsOutline) {
-  Loaded<std::vector<WallDef>> walls = wallsFromMesh(writeBox("box.obj"), {.height = 0.3, .origin = Point2(1, 1)});
-  ASSERT_TRUE(walls.ok()) << walls.error;
+  Result<std::vector<WallDef>> walls = wallsFromMesh(writeBox("box.obj"), {.height = 0.3, .origin = Point2(1, 1)});
+  ASSERT_TRUE(walls.ok()) << walls.error();
   EXPECT_EQ(walls->size(), 8u);  // two triangles per side, each cut once
   EXPECT_NEAR(perimeter(*walls), 6.0, 1e-6);
   for (const WallDef& w : *walls)
@@ -40,19 +40,19 @@ TEST(MeshMap, SlicesABoxIntoItsOutline) {
 }
 
 TEST(MeshMap, ScaleAndUpAxisAreApplied) {
-  Loaded<std::vector<WallDef>> walls = wallsFromMesh(writeBox("box_y.obj", true), {.height = 0.6, .scale = 2.0, .yUp = true});
-  ASSERT_TRUE(walls.ok()) << walls.error;
+  Result<std::vector<WallDef>> walls = wallsFromMesh(writeBox("box_y.obj", true), {.height = 0.6, .scale = 2.0, .yUp = true});
+  ASSERT_TRUE(walls.ok()) << walls.error();
   EXPECT_NEAR(perimeter(*walls), 12.0, 1e-6);
 }
 
 TEST(MeshMap, NoGeometryAtSonarHeightIsAnError) {
-  Loaded<std::vector<WallDef>> walls = wallsFromMesh(writeBox("low.obj"), {.height = 1.5});
+  Result<std::vector<WallDef>> walls = wallsFromMesh(writeBox("low.obj"), {.height = 1.5});
   ASSERT_FALSE(walls.ok());
-  EXPECT_EQ(walls.error, "low.obj: no geometry at height 1.5 m (the mesh spans heights 0 to 1 m)");
+  EXPECT_EQ(walls.error(), "low.obj: no geometry at height 1.5 m (the mesh spans heights 0 to 1 m)");
 }
 
 TEST(MeshMap, BadFilesGiveMessages) {
-  EXPECT_EQ(wallsFromMesh("/nonexistent/m.obj", {}).error, "m.obj: no such mesh file");
+  EXPECT_EQ(wallsFromMesh("/nonexistent/m.obj", {}).error(), "m.obj: no such mesh file");
   const auto junk = std::filesystem::path(::testing::TempDir()) / "junk.stl";
   std::ofstream(junk) << "\x01\x02 not a mesh";
   EXPECT_FALSE(wallsFromMesh(junk, {}).ok());
@@ -60,10 +60,10 @@ TEST(MeshMap, BadFilesGiveMessages) {
 
 TEST(MeshMap, WorldFileNamesTheFieldWhenTheSliceIsEmpty) {
   writeBox("room.obj");
-  Loaded<WorldDef> w =
+  Result<WorldDef> w =
       parseWorld("size = [4, 4]\n[mesh]\nfile = \"room.obj\"\nheight = 2.0\n", "m.toml", ::testing::TempDir());
   ASSERT_FALSE(w.ok());
-  EXPECT_EQ(w.error, "m.toml:3: mesh.file: room.obj: no geometry at height 2 m (the mesh spans heights 0 to 1 m)");
+  EXPECT_EQ(w.error(), "m.toml:3: mesh.file: room.obj: no geometry at height 2 m (the mesh spans heights 0 to 1 m)");
 }
 
 }  // namespace

@@ -33,8 +33,8 @@ using support::runAround;
 Behavior<Wheels> wanderer(const Robot& r) { return runTask(r, withPicture(circle(0.3), runAround())); }
 
 TEST(Run, ThePapersRunAroundWandersTheEmptyRoomWithoutTouchingAWall) {
-  Loaded<WorldDef> world = loadReferenceWorld("empty");
-  ASSERT_TRUE(world.ok()) << world.error;
+  Result<WorldDef> world = loadReferenceWorld("empty");
+  ASSERT_TRUE(world.ok()) << world.error();
   worlds::Run run(*world, {}, {wanderer});
   run.runUntil(60.0);
   EXPECT_TRUE(run.failures().empty());
@@ -104,7 +104,7 @@ TEST(Run, ATaskErrorNamesTheTask) {
 
 TEST(Run, ControllerDrivenRunsAreBitIdentical) {
   auto hash = [] {
-    Loaded<WorldDef> world = loadReferenceWorld("arena");
+    Result<WorldDef> world = loadReferenceWorld("arena");
     worlds::Run run(*world, {}, {wanderer});
     run.runUntil(20.0);
     return run.recorder().trajectoryHash();

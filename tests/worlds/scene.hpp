@@ -13,8 +13,8 @@ namespace frob::worlds::testing {
 
 // The world described by `toml`; fails the calling test (and returns an empty world) on an error.
 inline WorldDef scene(std::string_view toml) {
-  Loaded<WorldDef> w = parseWorld(toml, "scene.toml");
-  EXPECT_TRUE(w.ok()) << w.error;
+  Result<WorldDef> w = parseWorld(toml, "scene.toml");
+  EXPECT_TRUE(w.ok()) << w.error();
   return w.ok() ? *w : WorldDef{};
 }
 

@@ -1,6 +1,7 @@
 // The simulation: driving, walls that stop robots, bumpers, odometry, keys, several robots, threads.
 #include "frob/worlds/simulation.hpp"
 
+#include "frob/errors.hpp"
 #include "scene.hpp"
 
 #include <gtest/gtest.h>
@@ -20,6 +21,15 @@ TEST(Simulation, TimeIsStepsTimesDt) {
   drive(sim, 50, {});
   EXPECT_EQ(sim.stepCount(), 50);
   EXPECT_DOUBLE_EQ(sim.time(), 50 * 0.02);
+}
+
+// A programmer's mistakes are caught in every build, release too (FROB_ASSERT, not assert).
+TEST(Simulation, ANonPositiveStepOrAWheelCountOtherThanTheRobotsIsAUsageError) {
+  const WorldDef world = scene("size = [4, 4]\n[[robot]]\nstart = [2, 2]\n");
+  EXPECT_THROW(Simulation(world, {.dt = 0.0}), UsageError);
+  Simulation sim(world);
+  const std::vector<Wheels> two(2);
+  EXPECT_THROW(sim.step(two), UsageError);
 }
 
 TEST(Simulation, RobotNamesTellRobotsApart) {

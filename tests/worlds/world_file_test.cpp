@@ -14,7 +14,7 @@ namespace {
 using namespace frob::literals;
 
 TEST(WorldFile, ReadsEveryPartOfAWorld) {
-  Loaded<WorldDef> w = parseWorld(R"(
+  Result<WorldDef> w = parseWorld(R"(
     description = "test room"
     size = [8, 6.5]
     enclosed = false
@@ -49,7 +49,7 @@ TEST(WorldFile, ReadsEveryPartOfAWorld) {
     key = "q"
     robot = 1
   )", "room.toml");
-  ASSERT_TRUE(w.ok()) << w.error;
+  ASSERT_TRUE(w.ok()) << w.error();
   EXPECT_EQ(w->description, "test room");
   EXPECT_EQ(w->size, Vec2(8, 6.5));
   EXPECT_FALSE(w->enclosed);
@@ -77,8 +77,8 @@ TEST(WorldFile, ReadsEveryPartOfAWorld) {
 }
 
 TEST(WorldFile, DefaultsAreANomad200) {
-  Loaded<WorldDef> w = parseWorld("size = [4, 4]\n[[robot]]\nstart = [2, 2]\n", "x.toml");
-  ASSERT_TRUE(w.ok()) << w.error;
+  Result<WorldDef> w = parseWorld("size = [4, 4]\n[[robot]]\nstart = [2, 2]\n", "x.toml");
+  ASSERT_TRUE(w.ok()) << w.error();
   const RobotSpec spec = robotSpec(w->robots[0]);
   EXPECT_EQ(spec.radius, 0.23);
   ASSERT_EQ(spec.sonarAngles.size(), 16u);
@@ -99,9 +99,9 @@ struct BadWorld {
 class WorldFileErrors : public ::testing::TestWithParam<BadWorld> {};
 
 TEST_P(WorldFileErrors, NameFileLineAndField) {
-  Loaded<WorldDef> w = parseWorld(GetParam().toml, "maze.toml");
+  Result<WorldDef> w = parseWorld(GetParam().toml, "maze.toml");
   ASSERT_FALSE(w.ok()) << GetParam().what;
-  EXPECT_EQ(w.error, GetParam().message) << GetParam().what;
+  EXPECT_EQ(w.error(), GetParam().message) << GetParam().what;
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -167,27 +167,27 @@ INSTANTIATE_TEST_SUITE_P(
                  "maze.toml:4: mesh.up: expected \"z\" or \"y\""}));
 
 TEST(WorldFile, SyntaxErrorsSayWhatTomlSaid) {
-  Loaded<WorldDef> w = parseWorld("size = [4, 4\n", "maze.toml");
+  Result<WorldDef> w = parseWorld("size = [4, 4\n", "maze.toml");
   ASSERT_FALSE(w.ok());
-  EXPECT_TRUE(w.error.starts_with("maze.toml:")) << w.error;
-  EXPECT_NE(w.error.find("syntax error"), std::string::npos) << w.error;
+  EXPECT_TRUE(w.error().starts_with("maze.toml:")) << w.error();
+  EXPECT_NE(w.error().find("syntax error"), std::string::npos) << w.error();
 }
 
 TEST(WorldFile, LoadWorldNamesAMissingFile) {
-  Loaded<WorldDef> w = loadWorld("/nonexistent/dir/world.toml");
+  Result<WorldDef> w = loadWorld("/nonexistent/dir/world.toml");
   ASSERT_FALSE(w.ok());
-  EXPECT_EQ(w.error, "/nonexistent/dir/world.toml: cannot open the world file");
+  EXPECT_EQ(w.error(), "/nonexistent/dir/world.toml: cannot open the world file");
 }
 
 TEST(WorldFile, MapPathsResolveRelativeToTheWorldFile) {
   // The office world names "office.png" without a folder: it must load from any working directory.
-  Loaded<WorldDef> w = loadWorld(worldDataDir() / "office.toml");
-  ASSERT_TRUE(w.ok()) << w.error;
+  Result<WorldDef> w = loadWorld(worldDataDir() / "office.toml");
+  ASSERT_TRUE(w.ok()) << w.error();
   EXPECT_GT(w->walls.size(), 10u);
   // The same text parsed against another folder cannot find the bitmap, and says so.
-  Loaded<WorldDef> elsewhere = parseWorld("size = [20, 15]\n[bitmap]\nfile = \"office.png\"\n", "o.toml", "/tmp/none");
+  Result<WorldDef> elsewhere = parseWorld("size = [20, 15]\n[bitmap]\nfile = \"office.png\"\n", "o.toml", "/tmp/none");
   ASSERT_FALSE(elsewhere.ok());
-  EXPECT_EQ(elsewhere.error, "o.toml:3: bitmap.file: office.png: no such bitmap file");
+  EXPECT_EQ(elsewhere.error(), "o.toml:3: bitmap.file: office.png: no such bitmap file");
 }
 
 }  // namespace

@@ -9,24 +9,24 @@
 
 namespace frob::worlds {
 
-Loaded<std::vector<WallDef>> wallsFromBitmap(const std::filesystem::path& file, const BitmapDef& def) {
+Result<std::vector<WallDef>> wallsFromBitmap(const std::filesystem::path& file, const BitmapDef& def) {
   const std::string name = file.filename().string();
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) return {.error = name + ": no such bitmap file"};
+  if (!std::filesystem::is_regular_file(file, ec)) return Status::failure(name + ": no such bitmap file");
   png_image image{};
   image.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_file(&image, file.string().c_str()))
-    return {.error = name + ": not a readable PNG (" + image.message + ")"};
+    return Status::failure(name + ": not a readable PNG (" + image.message + ")");
   constexpr std::uint32_t kMaxSide = 8192;
   if (image.width == 0 || image.height == 0 || image.width > kMaxSide || image.height > kMaxSide) {
     png_image_free(&image);
-    return {.error = name + ": the image must be between 1 and 8192 pixels on each side"};
+    return Status::failure(name + ": the image must be between 1 and 8192 pixels on each side");
   }
   image.format = PNG_FORMAT_GRAY;
   const std::size_t w = image.width, h = image.height;
   std::vector<std::uint8_t> pixels(w * h);
   if (!png_image_finish_read(&image, nullptr, pixels.data(), static_cast<png_int_32>(w), nullptr))
-    return {.error = name + ": cannot decode the PNG (" + image.message + ")"};
+    return Status::failure(name + ": cannot decode the PNG (" + image.message + ")");
 
   // Greedy merge: from each unclaimed dark pixel, grow right as far as possible, then grow that run
   // downwards while every pixel beneath it is dark and unclaimed.
@@ -55,7 +55,7 @@ Loaded<std::vector<WallDef>> wallsFromBitmap(const std::filesystem::path& file, 
       walls.push_back(rectangleWall(lo, hi));
     }
   }
-  return {.value = std::move(walls)};
+  return std::move(walls);
 }
 
 }  // namespace frob::worlds

@@ -12,14 +12,14 @@
 
 namespace frob::worlds {
 
-Loaded<std::vector<WallDef>> wallsFromMesh(const std::filesystem::path& file, const MeshDef& def) {
+Result<std::vector<WallDef>> wallsFromMesh(const std::filesystem::path& file, const MeshDef& def) {
   const std::string name = file.filename().string();
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) return {.error = name + ": no such mesh file"};
+  if (!std::filesystem::is_regular_file(file, ec)) return Status::failure(name + ": no such mesh file");
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(
       file.string(), aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_JoinIdenticalVertices);
-  if (!scene || !scene->mRootNode) return {.error = name + ": cannot read the mesh (" + importer.GetErrorString() + ")"};
+  if (!scene || !scene->mRootNode) return Status::failure(name + ": cannot read the mesh (" + importer.GetErrorString() + ")");
 
   std::vector<WallDef> walls;
   double lowest = INFINITY, highest = -INFINITY;
@@ -61,9 +61,9 @@ Loaded<std::vector<WallDef>> wallsFromMesh(const std::filesystem::path& file, co
     std::ostringstream s;
     s << name << ": no geometry at height " << def.height << " m";
     if (std::isfinite(lowest)) s << " (the mesh spans heights " << lowest << " to " << highest << " m)";
-    return {.error = s.str()};
+    return Status::failure(s.str());
   }
-  return {.value = std::move(walls)};
+  return std::move(walls);
 }
 
 }  // namespace frob::worlds

@@ -20,20 +20,9 @@ RayCaster::RayCaster(const std::vector<WallDef>& walls, const Point2& lo, const 
     segs.push_back({a.x(), a.y(), d.x(), d.y(), n.x(), n.y()});
   };
   for (const WallDef& w : walls) {
-    const auto& v = w.points;
-    switch (w.shape) {
-      case WallShape::Segment: addSeg(v[0], v[1]); break;
-      case WallShape::Polyline:
-        for (std::size_t i = 0; i + 1 < v.size(); ++i) addSeg(v[i], v[i + 1]);
-        if (w.closed) addSeg(v.back(), v.front());
-        break;
-      case WallShape::Rectangle: {
-        const Point2 a = v[0], c = v[1], b(c.x(), a.y()), d(a.x(), c.y());
-        addSeg(a, b), addSeg(b, c), addSeg(c, d), addSeg(d, a);
-        break;
-      }
-      case WallShape::Circle: circles.push_back({v[0].x(), v[0].y(), w.radius}); break;
-    }
+    forEachEdge(
+        w, addSeg, [&](const Point2& lo, const Point2& hi) { forEachSide(lo, hi, addSeg); },
+        [&](const Point2& c, double radius) { circles.push_back({c.x(), c.y(), radius}); });
   }
   segmentCount_ = segs.size();
 

@@ -1,11 +1,9 @@
 #include "frob/worlds/registry.hpp"
 
+#include "frob/base/layout.hpp"
+
 #include <array>
 #include <string>
-
-#ifndef FROB_WORLDS_DATA_DIR
-#error "FROB_WORLDS_DATA_DIR must be defined by CMake (worlds/CMakeLists.txt)"
-#endif
 
 namespace frob::worlds {
 namespace {
@@ -30,13 +28,14 @@ const WorldEntry* findWorld(std::string_view name) {
   return nullptr;
 }
 
-std::filesystem::path worldDataDir() { return std::filesystem::path(FROB_WORLDS_DATA_DIR); }
+// Found through the build's or the installed prefix's absolute path, never relative to the working folder.
+std::filesystem::path worldDataDir() { return layout().worlds; }
 
 std::filesystem::path worldPath(const WorldEntry& entry) { return worldDataDir() / entry.file; }
 
-Loaded<WorldDef> loadReferenceWorld(std::string_view name) {
+Result<WorldDef> loadReferenceWorld(std::string_view name) {
   const WorldEntry* e = findWorld(name);
-  if (!e) return {.error = "no reference world called '" + std::string(name) + "'"};
+  if (!e) return Status::failure("no reference world called '" + std::string(name) + "'");
   return loadWorld(worldPath(*e));
 }
 

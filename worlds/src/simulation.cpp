@@ -1,5 +1,6 @@
 #include "frob/worlds/simulation.hpp"
 
+#include "frob/errors.hpp"
 #include "random.hpp"
 #include "ray_caster.hpp"
 #include "workers.hpp"
@@ -7,7 +8,6 @@
 #include <box2d/box2d.h>
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
 namespace frob::worlds {
@@ -74,7 +74,7 @@ struct Simulation::Impl : b2ContactListener {
   Impl(const WorldDef& w, const SimOptions& o)
       : world(w), walls(withEnclosure(w)), options(o), seed(o.seed.value_or(w.seed)),
         caster(walls, Point2(-1.0, -1.0), w.size + Point2(1.0, 1.0)), workers(o.threads) {
-    assert(o.dt > 0 && std::isfinite(o.dt) && "SimOptions::dt must be positive");
+    FROB_ASSERT(o.dt > 0 && std::isfinite(o.dt), "SimOptions::dt must be positive");
     physics.SetContactListener(this);
     buildWalls();
     for (std::size_t i = 0; i < w.robots.size(); ++i) addRobot(w.robots[i], i);
@@ -112,30 +112,19 @@ struct Simulation::Impl : b2ContactListener {
       e.SetTwoSided(v(a), v(b));
       ground->CreateFixture(&e, 0.0f);
     };
-    for (const WallDef& w : walls) {
-      const auto& p = w.points;
-      switch (w.shape) {
-        case WallShape::Segment: edge(p[0], p[1]); break;
-        case WallShape::Polyline:
-          for (std::size_t i = 0; i + 1 < p.size(); ++i) edge(p[i], p[i + 1]);
-          if (w.closed) edge(p.back(), p.front());
-          break;
-        case WallShape::Rectangle: {
-          b2PolygonShape box;
-          const Vec2 half = (p[1] - p[0]) / 2;
-          box.SetAsBox(static_cast<float>(half.x()), static_cast<float>(half.y()), v(p[0] + half), 0.0f);
-          ground->CreateFixture(&box, 0.0f);
-          break;
-        }
-        case WallShape::Circle: {
-          b2CircleShape c;
-          c.m_p = v(p[0]);
-          c.m_radius = static_cast<float>(w.radius);
-          ground->CreateFixture(&c, 0.0f);
-          break;
-        }
-      }
-    }
+    auto block = [&](const Point2& lo, const Point2& hi) {
+      b2PolygonShape box;
+      const Vec2 half = (hi - lo) / 2;
+      box.SetAsBox(static_cast<float>(half.x()), static_cast<float>(half.y()), v(lo + half), 0.0f);
+      ground->CreateFixture(&box, 0.0f);
+    };
+    auto disc = [&](const Point2& centre, double radius) {
+      b2CircleShape c;
+      c.m_p = v(centre);
+      c.m_radius = static_cast<float>(radius);
+      ground->CreateFixture(&c, 0.0f);
+    };
+    for (const WallDef& w : walls) forEachEdge(w, edge, block, disc);
   }
 
   void addRobot(const RobotDef& d, std::size_t index) {
@@ -325,7 +314,7 @@ const SensorFrame& Simulation::frame(std::size_t i) const { return impl_->robots
 
 void Simulation::step(std::span<const Wheels> wheels) {
   Impl& s = *impl_;
-  assert(wheels.size() == s.robots.size() && "step() needs one Wheels per robot");
+  FROB_ASSERT(wheels.size() == s.robots.size(), "step() needs one Wheels per robot");
   const double dt = s.options.dt;
   for (std::size_t i = 0; i < s.robots.size(); ++i) {
     RobotState& r = s.robots[i];

@@ -49,23 +49,16 @@ std::string checkRunnable(const WorldDef& w) {
 }
 
 double distanceToWall(const Point2& p, const WallDef& wall) {
-  const auto& v = wall.points;
-  switch (wall.shape) {
-    case WallShape::Segment: return detail::distanceToSegment(p, v[0], v[1]);
-    case WallShape::Rectangle: {
-      const double dx = std::max({v[0].x() - p.x(), 0.0, p.x() - v[1].x()});
-      const double dy = std::max({v[0].y() - p.y(), 0.0, p.y() - v[1].y()});
-      return std::hypot(dx, dy);
-    }
-    case WallShape::Circle: return std::max(0.0, (p - v[0]).norm() - wall.radius);
-    case WallShape::Polyline: {
-      double d = INFINITY;
-      for (std::size_t i = 0; i + 1 < v.size(); ++i) d = std::min(d, detail::distanceToSegment(p, v[i], v[i + 1]));
-      if (wall.closed) d = std::min(d, detail::distanceToSegment(p, v.back(), v.front()));
-      return d;
-    }
-  }
-  return INFINITY;
+  double d = INFINITY;
+  forEachEdge(
+      wall, [&](const Point2& a, const Point2& b) { d = std::min(d, detail::distanceToSegment(p, a, b)); },
+      [&](const Point2& lo, const Point2& hi) {
+        const double dx = std::max({lo.x() - p.x(), 0.0, p.x() - hi.x()});
+        const double dy = std::max({lo.y() - p.y(), 0.0, p.y() - hi.y()});
+        d = std::hypot(dx, dy);
+      },
+      [&](const Point2& centre, double radius) { d = std::max(0.0, (p - centre).norm() - radius); });
+  return d;
 }
 
 namespace detail {
@@ -110,27 +103,31 @@ std::string checkWall(const WallDef& wall, const Vec2& size) {
       return "points: (" + fmt(p.x()) + ", " + fmt(p.y()) + ") lies outside the world [0, " + fmt(size.x()) +
              "] x [0, " + fmt(size.y()) + "]";
   }
-  switch (wall.shape) {
-    case WallShape::Segment:
-      if ((v[1] - v[0]).norm() < kMinLength) return "to: the wall has (almost) zero length";
-      break;
-    case WallShape::Rectangle:
-      if (v[1].x() - v[0].x() < kMinLength || v[1].y() - v[0].y() < kMinLength)
-        return "rect: the max corner must exceed the min corner by at least 1 mm in x and y";
-      break;
-    case WallShape::Circle:
-      if (!(wall.radius >= kMinLength) || !std::isfinite(wall.radius)) return "radius: must be at least 0.001 m";
-      if (v[0].x() - wall.radius < -1e-9 || v[0].y() - wall.radius < -1e-9 ||
-          v[0].x() + wall.radius > size.x() + 1e-9 || v[0].y() + wall.radius > size.y() + 1e-9)
-        return "radius: the pillar reaches outside the world";
-      break;
-    case WallShape::Polyline:
-      for (std::size_t i = 0; i + 1 < v.size(); ++i)
-        if ((v[i + 1] - v[i]).norm() < kMinLength)
-          return "polyline: vertices " + std::to_string(i) + " and " + std::to_string(i + 1) + " coincide";
-      break;
-  }
-  return {};
+  std::string error;
+  std::size_t i = 0;  // the edge's first vertex
+  forEachEdge(
+      wall,
+      [&](const Point2& a, const Point2& b) {
+        const std::size_t k = i++;
+        // The first fault only; a closed polyline's closing edge is not checked.
+        if (!error.empty() || k + 1 >= v.size() || (b - a).norm() >= kMinLength) return;
+        error = wall.shape == WallShape::Segment
+                    ? "to: the wall has (almost) zero length"
+                    : "polyline: vertices " + std::to_string(k) + " and " + std::to_string(k + 1) + " coincide";
+      },
+      [&](const Point2& lo, const Point2& hi) {
+        if (hi.x() - lo.x() < kMinLength || hi.y() - lo.y() < kMinLength)
+          error = "rect: the max corner must exceed the min corner by at least 1 mm in x and y";
+      },
+      [&](const Point2& c, double radius) {
+        if (!(radius >= kMinLength) || !std::isfinite(radius)) {
+          error = "radius: must be at least 0.001 m";
+        } else if (c.x() - radius < -1e-9 || c.y() - radius < -1e-9 || c.x() + radius > size.x() + 1e-9 ||
+                   c.y() + radius > size.y() + 1e-9) {
+          error = "radius: the pillar reaches outside the world";
+        }
+      });
+  return error;
 }
 
 std::string checkRobot(const RobotDef& r) {

@@ -22,16 +22,16 @@ class Parser : TomlReader {
  public:
   Parser(std::string file, std::filesystem::path base) : TomlReader(file), base_(std::move(base)) { lines_.file = std::move(file); }
 
-  Loaded<WorldDef> parse(std::string_view text) {
+  Result<WorldDef> parse(std::string_view text) {
     toml::table root;
     if (!TomlReader::parse(text, root)) return failed(error());
     if (!readWorld(root)) return failed(error());
     if (auto e = detail::checkWorld(world_, lines_); !e.empty()) return failed(e);
-    return {.value = std::move(world_)};
+    return std::move(world_);
   }
 
  private:
-  static Loaded<WorldDef> failed(std::string e) { return {.error = std::move(e)}; }
+  static Result<WorldDef> failed(std::string e) { return Status::failure(std::move(e)); }
   static int line(const toml::source_region& r) { return static_cast<int>(r.begin.line); }
   using TomlReader::line;
 
@@ -140,7 +140,7 @@ class Parser : TomlReader {
     auto t = table(*n, "points");
     if (!t) return false;
     for (auto&& [k, v] : *t) {
-      NamedPoint p{.name = std::string(k.str())};
+      Landmark p{.name = std::string(k.str())};
       if (!point(v, "points." + p.name, p.position)) return false;
       world_.points.push_back(std::move(p));
       lines_.points.push_back(line(v.source()));
@@ -165,7 +165,7 @@ class Parser : TomlReader {
     std::string name;
     if (!string(*file, f + ".file", name)) return false;
     const std::filesystem::path path = base_ / name;
-    Loaded<std::vector<WallDef>> walls;
+    Result<std::vector<WallDef>> walls = Status::failure("no map");  // one of the branches below sets it
     if (bitmap) {
       BitmapDef d;
       if (!optNumber(*t, "scale", f + ".scale", d.scale) || !optPoint(*t, "origin", f + ".origin", d.origin) ||
@@ -187,8 +187,8 @@ class Parser : TomlReader {
       }
       walls = wallsFromMesh(path, d);
     }
-    if (!walls) return fail(*file, f + ".file", walls.error);
-    for (auto& w : *walls.value) {
+    if (!walls) return fail(*file, f + ".file", walls.error());
+    for (auto& w : walls.value()) {
       world_.walls.push_back(std::move(w));
       lines_.walls.push_back(l);
     }
@@ -291,17 +291,17 @@ class Parser : TomlReader {
 
 }  // namespace
 
-Loaded<WorldDef> parseWorld(std::string_view text, std::string_view fileName, const std::filesystem::path& baseDir) {
+Result<WorldDef> parseWorld(std::string_view text, std::string_view fileName, const std::filesystem::path& baseDir) {
   try {
     return Parser(std::string(fileName), baseDir).parse(text);
   } catch (const std::exception& e) {  // e.g. out of memory: still a message, never an escape
-    return {.error = std::string(fileName) + ": " + e.what()};
+    return Status::failure(std::string(fileName) + ": " + e.what());
   }
 }
 
-Loaded<WorldDef> loadWorld(const std::filesystem::path& path) {
+Result<WorldDef> loadWorld(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return {.error = path.string() + ": cannot open the world file"};
+  if (!in) return Status::failure(path.string() + ": cannot open the world file");
   std::ostringstream text;
   text << in.rdbuf();
   return parseWorld(text.str(), path.filename().string(), path.parent_path());

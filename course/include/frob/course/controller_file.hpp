@@ -4,7 +4,7 @@
 /// controller host (isolation.hpp) or, for trusted code, loaded into this process.
 
 #include "frob/controller.hpp"
-#include "frob/render/result.hpp"
+#include "frob/base/result.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -13,20 +13,21 @@
 
 namespace frob::course {
 
-using render::Result;
-using render::Status;
-
 /// How controller files are compiled. compilerSetup() gives the one the project was built with.
 struct CompilerSetup {
   std::string compiler;              ///< the C++ compiler, as found on PATH or absolute
   std::vector<std::string> flags;    ///< language, optimisation, sanitizer and include flags (the project's ABI)
   std::string precompiledHeader;     ///< frob.hpp precompiled with `flags`; empty or missing: compile without
+  std::vector<std::string> reads;    ///< files and folders the compiler reads besides the system's and its -I folders
   std::filesystem::path cacheDir;    ///< where compiled controllers are kept, named by a hash of what made them
   double seconds = 120.0;            ///< wall-clock and CPU time a compile may take
   std::uint64_t memoryBytes = 4ULL << 30;  ///< address space of the compiler
 };
 
-/// The build's compiler, flags and precompiled header; the cache is $FROB_CACHE_DIR, else
+/// The compiler controllers are compiled with, and its version: "/usr/bin/clang++-16 (Clang 16.0.6)".
+[[nodiscard]] std::string compilerDescription();
+
+/// The build's compiler and flags, and the headers and precompiled header of frob::layout(); the cache is $FROB_CACHE_DIR, else
 /// $XDG_CACHE_HOME/frob, else ~/.cache/frob.
 [[nodiscard]] CompilerSetup compilerSetup();
 

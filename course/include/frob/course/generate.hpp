@@ -6,7 +6,7 @@
 ///   Result<worlds::WorldDef> w = generateWorld(WorldKind::Obstacles, 42);
 ///   std::ofstream("field.toml") << toToml(w.value());
 
-#include "frob/render/result.hpp"
+#include "frob/base/result.hpp"
 #include "frob/worlds/world_def.hpp"
 
 #include <cstdint>
@@ -16,9 +16,6 @@
 #include <vector>
 
 namespace frob::course {
-
-using render::Result;
-using render::Status;
 
 /// What a generated world is. Every kind promises: the robot's start and the point "goal" have at
 /// least 0.1 m of clearance around the body, and the goal can be reached from the start by the body.

@@ -2,7 +2,7 @@
 /// Gradescope's autograder zip for an assignment: setup.sh builds frob on Gradescope's image,
 /// run_autograder grades /autograder/submission into /autograder/results/results.json.
 
-#include "frob/render/result.hpp"
+#include "frob/base/result.hpp"
 
 #include <filesystem>
 #include <string>
@@ -17,6 +17,6 @@ struct GradescopeZipDef {
 };
 
 /// Writes the zip: frob's sources (without tests), the assignment, setup.sh and run_autograder.
-[[nodiscard]] render::Status writeGradescopeZip(const GradescopeZipDef& def, const std::filesystem::path& out);
+[[nodiscard]] Status writeGradescopeZip(const GradescopeZipDef& def, const std::filesystem::path& out);
 
 }  // namespace frob::course

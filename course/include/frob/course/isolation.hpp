@@ -9,7 +9,7 @@
 
 #include "frob/controller.hpp"
 #include "frob/course/controller_file.hpp"
-#include "frob/render/result.hpp"
+#include "frob/base/result.hpp"
 #include "frob/sandbox/confine.hpp"
 #include "frob/worlds/run.hpp"
 
@@ -22,9 +22,6 @@
 #include <vector>
 
 namespace frob::course {
-
-using render::Result;
-using render::Status;
 
 /// The limits of a controller host and how it waits for its turn.
 struct IsolationDef {

@@ -27,7 +27,7 @@ struct RunRecord {
   Vec2 size{10.0, 10.0};                             ///< the world's extent
   std::vector<worlds::WallDef> walls;                ///< every wall, the enclosure's too
   std::size_t enclosureWalls = 0;                    ///< how many of `walls`, at the end, enclose the world
-  std::vector<worlds::NamedPoint> points;            ///< the world's named points
+  std::vector<worlds::Landmark> points;            ///< the world's named points
   double dt = 0.01;
   std::vector<Track> robots;
 };

@@ -5,7 +5,7 @@
 /// course/grading.md.
 
 #include "frob/course/generate.hpp"
-#include "frob/render/result.hpp"
+#include "frob/base/result.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -14,9 +14,6 @@
 #include <vector>
 
 namespace frob::course {
-
-using render::Result;
-using render::Status;
 
 /// Who sees a check's result on Gradescope.
 enum class Visibility { Visible, Hidden, AfterDueDate };

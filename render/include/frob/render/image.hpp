@@ -1,7 +1,7 @@
 #pragma once
 /// RGBA images and PNG files.
 
-#include "frob/render/result.hpp"
+#include "frob/base/result.hpp"
 
 #include <cstdint>
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
 /// Files that appear under their name only when complete: written as `<path>.partial`, renamed.
 
-#include "frob/render/result.hpp"
+#include "frob/base/result.hpp"
 
 #include <string>
 

@@ -5,7 +5,7 @@
 #include "frob/geometry.hpp"
 #include "frob/render/image.hpp"
 #include "frob/render/plot.hpp"
-#include "frob/render/result.hpp"
+#include "frob/base/result.hpp"
 #include "frob/render/scene.hpp"
 
 #include <memory>
@@ -44,7 +44,7 @@ struct RenderDef {
   int textPixels = 13;                   ///< text size, pixels
   std::string fontFile;                  ///< proportional font; empty: DejaVuSans from the build
   std::string monoFontFile;              ///< fixed-width font for the HUD; empty: DejaVuSansMono
-  std::string robotModelFile;            ///< chase-view robot mesh (assimp); empty: render/models/robot.obj
+  std::string robotModelFile;            ///< chase-view robot mesh (assimp); empty: robot.obj of frob::layout().models
   int rasterThreads = 0;                 ///< chase view: llvmpipe threads (LP_NUM_THREADS, read at the process's first context); -1: leave it
 };
 

@@ -37,8 +37,8 @@ struct Pillar {
   double radius = 0.1;             ///< metres
 };
 
-/// A labelled point of interest (a goal, a waypoint).
-struct NamedPoint {
+/// A labelled point drawn in a scene (a goal, a waypoint); a world's come from its worlds::Landmark list.
+struct Marker {
   std::string name;                ///< label drawn beside it; may be empty
   Point2 at = Point2::Zero();      ///< metres
   std::optional<Color> color;      ///< unset: the renderer's default
@@ -67,7 +67,7 @@ struct FrameScene {
   std::vector<Wall> walls;             ///< wall segments
   std::vector<Block> blocks;           ///< filled rectangular obstacles
   std::vector<Pillar> pillars;         ///< filled round obstacles
-  std::vector<NamedPoint> points;      ///< labelled points
+  std::vector<Marker> points;      ///< labelled points
   std::vector<RobotView> robots;       ///< robots, drawn in order
 };
 

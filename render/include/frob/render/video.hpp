@@ -2,7 +2,7 @@
 /// MP4 video (H.264, yuv420p) from RGBA frames, and the choice of which simulation steps become frames.
 
 #include "frob/render/image.hpp"
-#include "frob/render/result.hpp"
+#include "frob/base/result.hpp"
 
 #include <cstdint>
 #include <memory>

@@ -25,8 +25,8 @@ struct MeshDef {
 };
 
 /// The dark pixels of the PNG at `file`, merged greedily into few solid rectangles (as Stage does).
-[[nodiscard]] Loaded<std::vector<WallDef>> wallsFromBitmap(const std::filesystem::path& file, const BitmapDef& def);
+[[nodiscard]] Result<std::vector<WallDef>> wallsFromBitmap(const std::filesystem::path& file, const BitmapDef& def);
 /// The mesh at `file` sliced by the horizontal plane at `def.height`: one thin wall per cut triangle.
-[[nodiscard]] Loaded<std::vector<WallDef>> wallsFromMesh(const std::filesystem::path& file, const MeshDef& def);
+[[nodiscard]] Result<std::vector<WallDef>> wallsFromMesh(const std::filesystem::path& file, const MeshDef& def);
 
 }  // namespace frob::worlds

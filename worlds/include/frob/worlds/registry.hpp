@@ -25,6 +25,6 @@ struct WorldEntry {
 /// Absolute path of `entry`'s file.
 [[nodiscard]] std::filesystem::path worldPath(const WorldEntry& entry);
 /// Loads the reference world called `name` (an error names it when there is none).
-[[nodiscard]] Loaded<WorldDef> loadReferenceWorld(std::string_view name);
+[[nodiscard]] Result<WorldDef> loadReferenceWorld(std::string_view name);
 
 }  // namespace frob::worlds

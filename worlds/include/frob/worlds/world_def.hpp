@@ -37,8 +37,39 @@ struct WallDef {
 /// Thin walls joining `vertices` in order (and back to the first when `closed`).
 [[nodiscard]] WallDef polylineWall(std::vector<Point2> vertices, bool closed = false);
 
-/// A named point of interest (a goal, a landmark).
-struct NamedPoint {
+/// The one walk over a wall's shape, shared by physics, sonar, distances, checks and drawing: each
+/// thin edge as `edge(a, b)` (a segment's; a polyline's in order, then the closing one when closed),
+/// a rectangle as `block(first, second)` (its corners as written; checkWorld makes the first the
+/// minimum) and a circle as `disc(centre, radius)`. A wall with too few points gives nothing.
+template <class Edge, class Block, class Disc>
+void forEachEdge(const WallDef& wall, Edge&& edge, Block&& block, Disc&& disc) {
+  const std::vector<Point2>& p = wall.points;
+  switch (wall.shape) {
+    case WallShape::Segment:
+      if (p.size() >= 2) edge(p[0], p[1]);
+      break;
+    case WallShape::Polyline:
+      for (std::size_t i = 0; i + 1 < p.size(); ++i) edge(p[i], p[i + 1]);
+      if (wall.closed && p.size() >= 2) edge(p.back(), p.front());
+      break;
+    case WallShape::Rectangle:
+      if (p.size() >= 2) block(p[0], p[1]);
+      break;
+    case WallShape::Circle:
+      if (!p.empty()) disc(p[0], wall.radius);
+      break;
+  }
+}
+
+/// The four sides of the block between corners `lo` and `hi`, counter-clockwise from `lo`, as `edge(a, b)`.
+template <class Edge>
+void forEachSide(const Point2& lo, const Point2& hi, Edge&& edge) {
+  const Point2 b(hi.x(), lo.y()), d(lo.x(), hi.y());
+  edge(lo, b), edge(b, hi), edge(hi, d), edge(d, lo);
+}
+
+/// A named point of interest of a world (a goal, a landmark); drawn as a render::Marker.
+struct Landmark {
   std::string name;                  ///< e.g. "goal"
   Point2 position = Point2::Zero();  ///< metres
 };
@@ -99,7 +130,7 @@ struct WorldDef {
   Vec2 size{10.0, 10.0};                ///< metres
   bool enclosed = true;                 ///< put thin walls along the four sides
   std::vector<WallDef> walls;           ///< static walls (bitmap and mesh maps are already expanded here)
-  std::vector<NamedPoint> points;       ///< goals and landmarks
+  std::vector<Landmark> points;       ///< goals and landmarks
   std::vector<RobotDef> robots;         ///< at least one for a useful run
   std::vector<KeyEventDef> keys;        ///< scripted keyboard
   std::uint64_t seed = 1;               ///< the one seed every random stream derives from

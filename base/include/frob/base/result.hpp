@@ -1,11 +1,13 @@
 #pragma once
-/// Results of the renderer's steps that can fail on outside data (files, sizes, paths).
+/// The result of every step of the house that can fail on outside data (files, sizes, paths, world
+/// files, rubrics, compiles): a value or a readable message saying what went wrong and with which
+/// file. Nothing of ours throws for such failures; they come back as these.
 
 #include <optional>
 #include <string>
 #include <utility>
 
-namespace frob::render {
+namespace frob {
 
 /// Success, or a readable message saying what went wrong and with which file.
 class Status {
@@ -42,6 +44,10 @@ class Result {
   [[nodiscard]] T& value() { return *value_; }
   /// The value; only when ok().
   [[nodiscard]] const T& value() const { return *value_; }
+  /// The value; only when ok().
+  [[nodiscard]] const T& operator*() const { return *value_; }
+  /// The value; only when ok().
+  [[nodiscard]] const T* operator->() const { return &*value_; }
   /// The message; empty on success.
   [[nodiscard]] const std::string& error() const { return status_.error(); }
   /// The outcome without the value.
@@ -52,4 +58,4 @@ class Result {
   Status status_;
 };
 
-}  // namespace frob::render
+}  // namespace frob
