@@ -1,5 +1,7 @@
 #include "frob/frob.hpp"
 
+#include <stdexcept>
+
 #include <gtest/gtest.h>
 
 namespace frob {
@@ -60,6 +62,12 @@ TEST(Parallel, ParallelMergesOutputsAndWaitsForBoth) {
   EXPECT_EQ(results.first, 5);
 }
 
+Task<Wheels> failAt(double seconds) {
+  return mkTaskE([seconds](const TaskState&) {
+    return std::tuple{wheels(0, 1), never(), after(seconds).map([] { return RoboErr("branch broke"); })};
+  });
+}
+
 TEST(Parallel, AnErrorInEitherBranchFailsTheParallel) {
   auto failing = mkTaskE([](const TaskState&) {
     return std::tuple{wheels(0, 1), never(), after(0.2).map([] { return RoboErr("branch broke"); })};
@@ -106,6 +114,55 @@ TEST(Parallel, AsyncLoopRunsEachQBesideTheRestOfTheLoop) {
   std::vector<double> turn;
   for (const Wheels& w : s) turn.push_back(w.turn);
   EXPECT_EQ(turn, (std::vector<double>{0, 0, 1, 1, 2, 1, 2, 1}));
+}
+
+Task<Wheels> throwsLogicError() {
+  co_await drive(1, 0.3);
+  throw std::logic_error("student bug");
+}
+
+// The message a run ends with when `t` is sampled for a second, or "" if it does not end.
+std::string failureOf(Task<Wheels> t) {
+  try {
+    (void)run(std::move(t), 10);
+  } catch (const FrobError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Issue 15: only a RoboErr is a robot error, in whichever branch it is thrown. A std::logic_error
+// in a branch run beside another is a bug: taskCatch must not restart on it (BUG would hide it);
+// it ends the run with its own message, the task that threw it and the time.
+TEST(Parallel, AnExceptionInABranchKeepsItsKindAndEndsTheRun) {
+  int restarts = 0;
+  auto caught = [&restarts](const RoboErr&) {
+    ++restarts;
+    return forever(0);
+  };
+  std::vector<std::string> messages{
+      failureOf(taskCatch(Task<Wheels>(parallel(throwsLogicError(), forever(1), add)), caught)),
+      failureOf(taskCatch(Task<Wheels>(parallel(forever(1), throwsLogicError(), add)), caught)),
+      failureOf(taskCatch(Task<Wheels>(disable(throwsLogicError(), forever(1), add)), caught)),
+      failureOf(taskCatch(withTask([](Behavior<Wheels>) { return throwsLogicError(); },
+                                   [](Behavior<Wheels>, Event<Outcome<void>>) { return forever(2); }),
+                          caught)),
+  };
+  EXPECT_EQ(restarts, 0);
+  for (const std::string& m : messages) {
+    EXPECT_NE(m.find("task 'throwsLogicError' failed at t = 0.300 s"), std::string::npos) << m;
+    EXPECT_NE(m.find("student bug"), std::string::npos) << m;
+  }
+}
+
+TEST(Parallel, ARoboErrInABranchIsStillCaughtAsOne) {
+  std::string caught;
+  auto t = taskCatch(Task<Wheels>(parallel(failAt(0.2), forever(1), add)), [&caught](const RoboErr& e) {
+    caught = e.what();
+    return forever(0);
+  });
+  EXPECT_EQ(failureOf(std::move(t)), "");
+  EXPECT_EQ(caught, "branch broke");  // the error itself, not a description of it
 }
 
 }  // namespace

@@ -8,7 +8,8 @@
 
 namespace frob {
 
-/// How a task running beside another ended: its result, or the error that ended it.
+/// How a task running beside another ended: its result, or the RoboErr that ended it. Any other
+/// exception in either branch is a bug, not a robot error: it ends the whole run with its message.
 template <class B>
 struct Outcome {
   std::optional<ResultOf<B>> value;  ///< set when it returned
@@ -30,7 +31,7 @@ struct Strand {
   [[nodiscard]] Outcome<B> outcome() const {
     const auto& slot = runner->result();
     if (slot.value) return {slot.value, std::nullopt};
-    if (slot.error) return {std::nullopt, RoboErr(describe(slot.error))};
+    if (slot.error) return {std::nullopt, roboErrIn(slot.error)};  // the runner holds only RoboErrs
     return {};
   }
 };
