@@ -95,6 +95,8 @@ CompilerSetup compilerSetup() {
   for (std::string f; std::getline(flags, f);) {
     if (!f.empty()) s.flags.push_back(f);
   }
+  // A Task called and not awaited does nothing: Task's [[nodiscard]] says so, and here it stops the build.
+  s.flags.emplace_back("-Werror=unused-result");
   if (const char* dir = std::getenv("FROB_CACHE_DIR"); dir != nullptr && *dir != '\0') {
     s.cacheDir = dir;
   } else if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg != '\0') {

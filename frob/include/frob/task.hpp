@@ -57,7 +57,7 @@ Task<A> discardResult(Task<A, B> t);
 /// A task driving a behavior of type A until it ends with a B (`Task<Wheels>` is the paper's
 /// `Task WheelControlB ()`). A task is a recipe: it runs when awaited or passed to runTask, once.
 template <class A, class B>
-class [[nodiscard]] Task {
+class [[nodiscard("a Task does nothing unless you co_await it")]] Task {
  public:
   using promise_type = detail::TaskPromise<A, B>;
   using output_type = A;
@@ -99,14 +99,16 @@ class [[nodiscard]] Task {
     return std::move(*this);
   }
 
-  /// Starts this task inside run `ctx`, reporting into `slot`; returns the frame to resume.
+  /// Starts this task inside run `ctx`, awaited by `caller` (null at the run's top), reporting
+  /// into `slot`; returns the frame to resume.
   std::coroutine_handle<> startIn(detail::ResultSlot<ResultOf<B>>& slot, detail::RunContext<A>* ctx,
-                                  std::coroutine_handle<> continuation, std::int64_t parentRecord) {
+                                  std::coroutine_handle<> continuation, std::int64_t parentRecord,
+                                  const detail::PromiseBase<A>* caller) {
     FROB_ASSERT(handle_, "a Task can run only once (it was already awaited or moved from)");
     auto h = std::exchange(handle_, {});
     slot.frame = h;
     h.promise().slot = &slot;
-    h.promise().begin(ctx, continuation, parentRecord);
+    h.promise().begin(ctx, continuation, parentRecord, caller);
     return h;
   }
 
@@ -219,7 +221,7 @@ struct SubtaskAwaiter {
   template <class P>
   std::coroutine_handle<> await_suspend(std::coroutine_handle<P> parent) {
     PromiseBase<A>& p = parent.promise();
-    return task.startIn(slot, p.ctx, parent, p.recordForChildren());
+    return task.startIn(slot, p.ctx, parent, p.recordForChildren(), &p);
   }
   B await_resume() {
     std::exchange(slot.frame, {}).destroy();
@@ -242,7 +244,7 @@ auto TaskPromise<A, B>::await_transform(Become<A, B>&& b) {
       TaskPromise& p = self.promise();
       p.end(TaskEnd::Replaced, "became " + next.name());
       ResultSlot<R>& mine = *p.slot;
-      std::coroutine_handle<> h = next.startIn(mine, p.ctx, p.continuation, p.parentRecord);
+      std::coroutine_handle<> h = next.startIn(mine, p.ctx, p.continuation, p.parentRecord, p.caller);
       self.destroy();  // destroys this awaiter too: nothing of it is touched after this line
       return h;
     }
