@@ -110,5 +110,13 @@ TEST(Event, TimersRefuseAPeriodThatIsNotPositive) {
   EXPECT_EQ(occurrences(after(0.0), 0.1, 3).size(), 1u);  // at once, at its first sample
 }
 
+// Issue 15: an event with a value of its own, without `.map([] { return v; })`.
+TEST(Event, AsReplacesEachOccurrencesValue) {
+  auto occ = occurrences(every(0.2).as(std::string("tick")), 0.1, 5);
+  ASSERT_EQ(occ.size(), 2u);
+  EXPECT_EQ(occ[0].second, "tick");
+  EXPECT_NEAR(occ[1].first, 0.4, 1e-12);
+}
+
 }  // namespace
 }  // namespace frob

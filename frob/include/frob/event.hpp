@@ -68,6 +68,11 @@ class Event {
   template <class F>
     requires std::invocable<F&, const T&> || std::invocable<F&>
   [[nodiscard]] auto map(F f) const;
+  /// Each occurrence carrying `v` instead of its own value (the paper's `e -=> v`).
+  template <class U>
+  [[nodiscard]] auto as(U v) const {
+    return map([v = std::move(v)] { return v; });
+  }
   /// Only the occurrences whose value satisfies `p`.
   template <class P>
     requires std::predicate<P&, const T&>

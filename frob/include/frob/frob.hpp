@@ -15,6 +15,7 @@
 #include "frob/robot_values.hpp"
 #include "frob/run_task.hpp"
 #include "frob/sampling.hpp"
+#include "frob/sensing.hpp"
 #include "frob/switching.hpp"
 #include "frob/task.hpp"
 #include "frob/task_state.hpp"
