@@ -50,6 +50,20 @@ TEST(Parallel, WithTaskShowsEachTheOthersOutputAndTheFirstsEnd) {
   EXPECT_EQ(s[3].forward, 0);  // the second ended at t = 0.3 when the first did: final output
 }
 
+// Issue 15: generic lambdas for both; the first's argument is then a Behavior<Wheels>.
+TEST(Parallel, WithTaskTakesGenericLambdas) {
+  auto t = withTask([](auto second) { return mkTask([second](const TaskState&) { return std::pair{second, after(0.2)}; }); },
+                    [](auto first, auto end) {
+                      return mkTask([first, end](const TaskState&) {
+                        return std::pair{wheels(first.map(&Wheels::forward) + 1.0, 0), end.as(Unit{})};
+                      });
+                    });
+  std::vector<Wheels> s = run(std::move(t), 3);
+  EXPECT_EQ(s[0].forward, 1);  // the first echoes the second one step late: 0, then 1, ...
+  EXPECT_EQ(s[1].forward, 2);
+  EXPECT_EQ(s[2].forward, 0);  // the first ended at t = 0.2, and the second with it
+}
+
 TEST(Parallel, ParallelMergesOutputsAndWaitsForBoth) {
   std::pair<int, Unit> results;
   auto t = [&results]() -> Task<Wheels> {

@@ -141,6 +141,14 @@ TEST(Transformers, WithMyResultSeesItsOwnOutputOneStepLate) {
   EXPECT_EQ(forwardOf(runTask(idleRobot(), std::move(counting)), 4), (std::vector<double>{1, 2, 3, 4}));
 }
 
+// Issue 15: a generic lambda is accepted; its argument is the robot's output, a Behavior<Wheels>.
+TEST(Transformers, WithMyResultTakesAGenericLambda) {
+  auto counting = withMyResult([](auto mine) {
+    return mkTask([mine](const TaskState&) { return std::pair{wheels(mine.map(&Wheels::forward) + 1.0, 0), never()}; });
+  });
+  EXPECT_EQ(forwardOf(runTask(idleRobot(), std::move(counting)), 3), (std::vector<double>{1, 2, 3}));
+}
+
 TEST(Transformers, WithFilterAppliesToEverySubtaskAndStopsAfter) {
   auto seq = []() -> Task<Wheels> {
     auto inner = []() -> Task<Wheels> {

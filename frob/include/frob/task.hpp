@@ -359,6 +359,38 @@ using MkTaskExit = typename EventValue<std::remove_cvref_t<std::tuple_element_t<
 template <class F>
 using MkTaskResult = std::conditional_t<std::is_same_v<MkTaskExit<F>, Unit>, void, MkTaskExit<F>>;
 
+template <class T>
+inline constexpr bool kNever = false;
+
+// Whether mkTask's function returns {behavior, event[, error event]}; if not, a compile error that
+// says what is wrong in the student's words, instead of one from deep inside the library.
+template <class Parts>
+consteval bool checkTaskParts() {
+  if constexpr (!requires { std::tuple_size<Parts>::value; }) {
+    static_assert(kNever<Parts>, "mkTask: the function must return std::pair{behavior, event} "
+                                 "(or std::tuple{behavior, event, error event} for mkTaskE)");
+    return false;
+  } else {
+    using Drives = std::remove_cvref_t<std::tuple_element_t<0, Parts>>;
+    using Ends = std::remove_cvref_t<std::tuple_element_t<1, Parts>>;
+    if constexpr (!BehaviorType<Drives>) {
+      static_assert(kNever<Parts>, "mkTask: the pair's first element must be a behavior, what the task drives "
+                                   "(e.g. wheels(0.1, 0))");
+      return false;
+    } else if constexpr (BehaviorType<Ends> && std::is_same_v<frob::ValueOf<Ends>, bool>) {
+      static_assert(kNever<Parts>, "mkTask: the pair's second element is a Behavior<bool>, a condition, but a task "
+                                   "ends on an event: did you forget predicate(...)?");
+      return false;
+    } else if constexpr (!EventType<Ends>) {
+      static_assert(kNever<Parts>, "mkTask: the pair's second element must be the event that ends the task "
+                                   "(e.g. predicate(frontSonar(r) < 0.5) or after(2.0))");
+      return false;
+    } else {
+      return true;
+    }
+  }
+}
+
 }  // namespace detail
 
 /// The paper's mkTask: `f(ts)` gives a behavior and the event that ends it, as a std::pair.
@@ -367,9 +399,11 @@ using MkTaskResult = std::conditional_t<std::is_same_v<MkTaskExit<F>, Unit>, voi
 template <class F>
   requires std::invocable<F&, const TaskState&>
 [[nodiscard]] auto mkTask(F f, std::source_location loc = std::source_location::current()) {
-  using A = detail::MkTaskOutput<F>;
-  using E = detail::MkTaskExit<F>;
-  return detail::atomicTask<A, detail::MkTaskResult<F>, E>(std::move(f)).at(loc);
+  if constexpr (detail::checkTaskParts<detail::MkTaskParts<F>>()) {
+    using A = detail::MkTaskOutput<F>;
+    using E = detail::MkTaskExit<F>;
+    return detail::atomicTask<A, detail::MkTaskResult<F>, E>(std::move(f)).at(loc);
+  }
 }
 
 /// The paper's mkTaskE: as mkTask, with a third element, an Event<RoboErr> that fails the task.

@@ -60,6 +60,19 @@ struct FirstArg<R (C::*)(Arg)> {
   using type = std::remove_cvref_t<Arg>;
 };
 
+// The output type A of the task `f(Behavior<A>)` makes: from f's parameter, or Wheels (what a
+// robot drives) for a generic lambda such as [](auto mine) { ... }.
+template <class F>
+auto fedOutput() {
+  if constexpr (requires { &F::operator(); }) {
+    return std::type_identity<frob::ValueOf<typename FirstArg<decltype(&F::operator())>::type>>{};
+  } else {
+    return std::type_identity<Wheels>{};
+  }
+}
+template <class F>
+using FedOutput = typename decltype(fedOutput<F>())::type;
+
 // Awaits `body` and gives its result, with Unit for a void task.
 template <class A, class B>
 Task<A, ResultOf<B>> resultOf(Task<A, B> body) {
@@ -206,9 +219,10 @@ template <class F, class A, class B>
 
 /// The paper's withMyResult: the task `f(mine)` where `mine` is that task's own output, one
 /// step late (so that a controller can feed back on its output without an algebraic loop).
+/// `f` may be a generic lambda ([](auto mine) { ... }): `mine` is then a Behavior<Wheels>.
 template <class F>
 [[nodiscard]] auto withMyResult(F f, std::source_location loc = std::source_location::current()) {
-  using A = ValueOf<typename detail::FirstArg<decltype(&F::operator())>::type>;
+  using A = detail::FedOutput<F>;
   using B = typename std::invoke_result_t<F&, Behavior<A>>::result_type;
   return [](F make) -> Task<A, B> {
     detail::RunContext<A>* ctx = co_await detail::GetContext{};
