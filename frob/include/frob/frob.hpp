@@ -1,5 +1,7 @@
 #pragma once
 /// Frob: functional reactive robotics. The one header a controller includes.
+/// Where to start: frob/README.md lists every public name, grouped, with its meaning and header;
+/// course/examples/01_run_around.cpp is the first program, course/lessons/ the course.
 
 #include "frob/behavior.hpp"
 #include "frob/calculus.hpp"

@@ -25,9 +25,10 @@ struct Echo {
 [[nodiscard]] Behavior<Echo> nearestEcho(const Robot& r, double from, double to);
 
 /// The paper's atPlace: occurs when the robot (by odometry) comes within `within` metres of `p`,
-/// or at once if it is already there.
-[[nodiscard]] inline Event<Unit> atPlace(const Robot& r, const Point2& p, double within = 0.3) {
-  return predicate(distance(place(r), p) < within);
+/// or at once if it is already there. (A template, so that a student's own atPlace still wins.)
+template <std::convertible_to<Point2> P>
+[[nodiscard]] Event<Unit> atPlace(const Robot& r, const P& p, double within = 0.3) {
+  return predicate(distance(place(r), Point2(p)) < within);
 }
 
 }  // namespace frob
