@@ -253,7 +253,7 @@ template <class T>
   return Behavior<std::remove_cvref_t<T>>(std::forward<T>(v));
 }
 
-/// Seconds since this behavior started (its first sample), so 0 at the start of a task.
+/// Seconds since this behavior started (its first sample): 0 when the task that first reads it starts.
 [[nodiscard]] inline Behavior<double> time() { return Behavior<double>(std::make_shared<detail::TimeNode>()); }
 
 /// Pointwise application of `f` to behaviors and plain values: lift(f, b1, 2.0, b3).
