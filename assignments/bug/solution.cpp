@@ -250,7 +250,7 @@ Task<Wheels> bug(Point2 g);
 // neighbour whose circle never passes where it started. timeLimit gives no value then, and we
 // raise an error for taskCatch.
 Task<Wheels> goAround(Point2 g) {
-  bool done = co_await timeLimit(roundObstacle(g), 30_s);
+  std::optional<Unit> done = co_await timeLimit(roundObstacle(g), 30_s);
   if (!done) co_await taskError(RoboErr("going round one obstacle took more than 30 s"));
   co_await become(bug(g));
 }

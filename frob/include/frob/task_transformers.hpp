@@ -123,18 +123,13 @@ template <class A, class B>
       .named(std::move(name));
 }
 
-/// What timeLimit gives for a task with result B: the result if it ended in time, or nothing;
-/// for a task without a result, whether it ended in time.
-template <class B>
-using Limited = std::conditional_t<std::is_void_v<B>, bool, std::optional<B>>;
-
 /// The paper's timeLimit: `t`'s result, or no value if `t` has not ended within `seconds`
-/// (then `t` and its subtasks are aborted). A task without a result gives true if it ended in time.
+/// (then `t` and its subtasks are aborted).
 template <class A, class B>
-[[nodiscard]] Task<A, Limited<B>> timeLimit(Task<A, B> t, double seconds,
-                                            std::source_location loc = std::source_location::current()) {
+[[nodiscard]] Task<A, std::optional<ResultOf<B>>> timeLimit(Task<A, B> t, double seconds,
+                                                            std::source_location loc = std::source_location::current()) {
   std::string name = "timeLimit(" + t.name() + ")";
-  return [](Task<A, B> body, double limit) -> Task<A, Limited<B>> {
+  return [](Task<A, B> body, double limit) -> Task<A, std::optional<ResultOf<B>>> {
     detail::RunContext<A>* ctx = co_await detail::GetContext{};
     std::int64_t id = ctx->nextScope++;
     char reason[64];
@@ -149,11 +144,7 @@ template <class A, class B>
     } catch (const detail::ScopeSignal& s) {
       if (s.scope != id) throw;
     }
-    if constexpr (std::is_void_v<B>) {
-      co_return result.has_value();
-    } else {
-      co_return result;
-    }
+    co_return result;
   }(std::move(t), seconds).at(loc).named(std::move(name));
 }
 
@@ -186,34 +177,23 @@ template <class X, class A, class B>
   }(std::move(exit), std::move(t)).at(loc).named(std::move(name));
 }
 
-/// What withB gives for a task with result B and a behavior of C: both as a pair, or only the
-/// behavior's value for a task without a result.
-template <class B, class C>
-using WithBResult = std::conditional_t<std::is_void_v<B>, C, std::pair<B, C>>;
-
 /// The paper's withB: runs `t` with the behavior `f(state)` started beside it, and returns
-/// `t`'s result paired with that behavior's value at the instant `t` ended (only that value when
-/// `t` has no result). `f` gets the task state of withB's start by value, as mkTask's function
-/// does: it stays put while `t`'s subtasks run.
+/// `t`'s result paired with that behavior's value at the instant `t` ended. `f` gets the task state
+/// of withB's start by value, as mkTask's function does: it stays put while `t`'s subtasks run.
 template <class F, class A, class B>
   requires std::invocable<F&, const TaskState&>
 [[nodiscard]] auto withB(F f, Task<A, B> t, std::source_location loc = std::source_location::current()) {
   using C = ValueOf<std::invoke_result_t<F&, const TaskState&>>;
   std::string name = "withB(" + t.name() + ")";
-  return [](F make, Task<A, B> body) -> Task<A, WithBResult<B, C>> {
+  return [](F make, Task<A, B> body) -> Task<A, std::pair<ResultOf<B>, C>> {
     detail::RunContext<A>* ctx = co_await detail::GetContext{};
     const TaskState start = ctx->state;  // a copy: the context's state moves on with each subtask
     Behavior<C> c = toBehavior(std::invoke(make, start));
     c.at(*ctx->now);  // it starts with the task
     detail::ScopeEntry<std::function<void(const Instant&)>> watch(ctx->watchers,
                                                                   [c](const Instant& now) { c.at(now); });
-    if constexpr (std::is_void_v<B>) {
-      co_await std::move(body);
-      co_return c.at(*ctx->now);
-    } else {
-      B r = co_await std::move(body);
-      co_return WithBResult<B, C>(std::move(r), c.at(*ctx->now));
-    }
+    ResultOf<B> r = co_await detail::resultOf(std::move(body)).quiet();
+    co_return std::pair<ResultOf<B>, C>(std::move(r), c.at(*ctx->now));
   }(std::move(f), std::move(t)).at(loc).named(std::move(name));
 }
 
