@@ -140,13 +140,13 @@ Task<Wheels> alongWall() {
   return mkTask([](const TaskState& ts) {
     const Robot& r = ts.robot();
     Behavior<Wall> wall = wallOnLeft(r);
-    Behavior<double> d = lift([](const Wall& w) { return w.distance; }, wall);
-    Behavior<double> normal = lift([](const Wall& w) { return w.direction; }, wall);
+    Behavior<double> d = wall.map(&Wall::distance);
+    Behavior<double> normal = wall.map(&Wall::direction);
     double m = kSpeed * std::sin(kThetaMax);
     auto rerror = clamp(kSetpoint - d, -m, m);  // wanted speed away from the wall
     auto away = -kSpeed * cos(normal);          // speed away from the wall now
     auto turn = clamp(-3.0 * (rerror - away), -1.0, 1.0);
-    auto ahead = min(min(sonar(r, 15), sonar(r, 0)), sonar(r, 1));
+    auto ahead = min(sonar(r, 15), sonar(r, 0), sonar(r, 1));
     auto forward = kSpeed * clamp((ahead - 20_cm) / 50_cm, 0.0, 1.0);
     return std::pair{wheels(forward, turn), predicate(d > 1_m)};
   });
@@ -158,7 +158,7 @@ Task<Wheels> alongWall() {
 Task<Wheels> roundCorner() {
   return mkTaskE([](const TaskState& ts) {
     const Robot& r = ts.robot();
-    Behavior<double> d = lift([](const Wall& w) { return w.distance; }, wallOnLeft(r));
+    Behavior<double> d = wallOnLeft(r).map(&Wall::distance);
     double radius = kSetpoint + r.spec().radius;
     return std::tuple{wheels(kSpeed, kSpeed / radius), predicate(d < 80_cm),
                       after(8_s).map([] { return RoboErr("followWall: the wall is lost"); })};

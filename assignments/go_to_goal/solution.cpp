@@ -38,7 +38,7 @@ constexpr double kThetaMax = 30_deg;  // steepest angle at which the robot close
 // ---- Step 1. Sensing -------------------------------------------------------------------------
 
 // The nearest echo straight ahead: sonars 15, 0 and 1 look 22.5 degrees right, ahead and left.
-Behavior<double> ahead(const Robot& r) { return min(min(sonar(r, 15), sonar(r, 0)), sonar(r, 1)); }
+Behavior<double> ahead(const Robot& r) { return min(sonar(r, 15), sonar(r, 0), sonar(r, 1)); }
 
 // Where the obstacle on our left is: its distance (nearest echo) and its direction from our
 // heading (+90 degrees when it runs alongside), as in example 6: a sonar only hears a surface it
@@ -100,8 +100,8 @@ Task<Wheels> alongWall() {
   return mkTask([](const TaskState& ts) {
     const Robot& r = ts.robot();
     Behavior<Wall> wall = wallOnLeft(r);
-    Behavior<double> d = lift([](const Wall& w) { return w.distance; }, wall);
-    Behavior<double> normal = lift([](const Wall& w) { return w.direction; }, wall);
+    Behavior<double> d = wall.map(&Wall::distance);
+    Behavior<double> normal = wall.map(&Wall::direction);
     double m = kSpeed * std::sin(kThetaMax);
     auto rerror = clamp(kSetpoint - d, -m, m);  // wanted speed away from the edge
     auto away = -kSpeed * cos(normal);          // speed away from the edge now
@@ -116,7 +116,7 @@ Task<Wheels> alongWall() {
 Task<Wheels> roundCorner() {
   return mkTaskE([](const TaskState& ts) {
     const Robot& r = ts.robot();
-    Behavior<double> d = lift([](const Wall& w) { return w.distance; }, wallOnLeft(r));
+    Behavior<double> d = wallOnLeft(r).map(&Wall::distance);
     double radius = kSetpoint + r.spec().radius;
     return std::tuple{wheels(kSpeed, kSpeed / radius), predicate(d < 80_cm),
                       after(8_s).map([] { return RoboErr("followWall: the wall is lost"); })};

@@ -37,7 +37,7 @@ Point2 oppositeOf(Point2 start) { return kCentre + (kCentre - start); }
 // The nearest echo among the five sonars that look ahead (0 = front, 1-2 left, 14-15 right).
 // Other robots are round, so some ray always meets them head-on: they echo from every side.
 Behavior<double> frontArc(const Robot& r) {
-  return min(min(min(sonar(r, 14), sonar(r, 15)), min(sonar(r, 0), sonar(r, 1))), sonar(r, 2));
+  return min(sonar(r, 14), sonar(r, 15), sonar(r, 0), sonar(r, 1), sonar(r, 2));
 }
 
 // ---- Step 3. driveTo, giving up when someone is in the way --------------------------------------

@@ -26,7 +26,7 @@ const Point2 kCentre{5.0, 5.0};
 // The nearest echo among the five sonars that look ahead (0 = front, 1-2 left, 14-15 right).
 // Other robots echo too.
 Behavior<double> frontArc(const Robot& r) {
-  return min(min(min(sonar(r, 14), sonar(r, 15)), min(sonar(r, 0), sonar(r, 1))), sonar(r, 2));
+  return min(sonar(r, 14), sonar(r, 15), sonar(r, 0), sonar(r, 1), sonar(r, 2));
 }
 
 // Turn on the spot to face `goal`.

@@ -55,7 +55,7 @@ Behavior<Wall> wallOnRight(const Robot& r) {
 
 // The nearest echo ahead (sonar 0, and 15 and 1 at 22.5 degrees right and left of it). Sonar 12
 // looks straight right, sonar 13 22.5 degrees ahead of it, sonar 11 22.5 degrees behind it.
-Behavior<double> ahead(const Robot& r) { return min(min(sonar(r, 15), sonar(r, 0)), sonar(r, 1)); }
+Behavior<double> ahead(const Robot& r) { return min(sonar(r, 15), sonar(r, 0), sonar(r, 1)); }
 
 // Step 2. Along the wall: the paper's rerror, for a wall on the right.
 //
@@ -67,8 +67,8 @@ Behavior<double> ahead(const Robot& r) { return min(min(sonar(r, 15), sonar(r, 0
 // We slow down when a wall comes near ahead, to turn at the corner where the setpoint says.
 Behavior<Wheels> alongWall(const Robot& r) {
   Behavior<Wall> wall = wallOnRight(r);
-  Behavior<double> d = lift([](const Wall& w) { return w.distance; }, wall);
-  Behavior<double> normal = lift([](const Wall& w) { return w.direction; }, wall);
+  Behavior<double> d = wall.map(&Wall::distance);
+  Behavior<double> normal = wall.map(&Wall::direction);
   double m = kSpeed * std::sin(kThetaMax);
   auto rerror = clamp(kSetpoint - d, -m, m);  // wanted speed away from the wall
   auto away = -kSpeed * cos(normal);          // speed away from the wall now

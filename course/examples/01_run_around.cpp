@@ -24,13 +24,13 @@ using namespace frob::literals;  // 20_cm, 90_deg, 5_s: every quantity is in SI 
 //
 // `min` on behaviors works point by point: at every instant it is the smaller of the two readings.
 Behavior<double> frontArc(const Robot& r) {
-  return min(min(min(sonar(r, 14), sonar(r, 15)), min(sonar(r, 0), sonar(r, 1))), sonar(r, 2));
+  return min(sonar(r, 14), sonar(r, 15), sonar(r, 0), sonar(r, 1), sonar(r, 2));
 }
 
 // For the same reason a robot driving almost parallel to a wall does not see it ahead, and would
 // slowly scrape along it. The sonars at 67.5 and 90 degrees left (3, 4) and right (13, 12) catch that.
 Behavior<double> sides(const Robot& r) {
-  return min(min(sonar(r, 3), sonar(r, 4)), min(sonar(r, 12), sonar(r, 13)));
+  return min(sonar(r, 3), sonar(r, 4), sonar(r, 12), sonar(r, 13));
 }
 
 // Step 2. The paper's goAhead: drive forward until something is close.

@@ -75,7 +75,7 @@ Task<Wheels> followLeftWall() {
     const Robot& r = ts.robot();
     Behavior<double> away = -kSpeed * cos(wallDirection(r));  // how fast we move away now
     auto turn = clamp(-4.0 * (rerror(r) - away), -1.0, 1.0);  // rad/s, the robot's limit is 1
-    auto wallGone = predicate(min(min(sonar(r, 3), sonar(r, 4)), sonar(r, 5)) > 1.5_m);
+    auto wallGone = predicate(min(sonar(r, 3), sonar(r, 4), sonar(r, 5)) > 1.5_m);
     return std::pair{wheels(kSpeed, turn), wallGone};
   });
 }

@@ -39,7 +39,7 @@ Task<Wheels, bool> driveTo(Point2 goal) {
     Behavior<double> error = wrapAngle(heading(goal - place(r)) - orientation(r));
     Behavior<double> left = distance(place(r), goal);
     auto forward = min(kSpeed, left) * max(cos(error), 0.0);
-    auto ahead = min(min(sonar(r, 15), sonar(r, 0)), sonar(r, 1));
+    auto ahead = min(sonar(r, 15), sonar(r, 0), sonar(r, 1));
     Event<bool> there = predicate(left < 15_cm).map([] { return true; });
     Event<bool> blocked = predicate(ahead < 40_cm).map([] { return false; });
     return std::pair{wheels(forward, clamp(2.0 * error, -1.0, 1.0)), there | blocked};
@@ -83,13 +83,13 @@ Task<Wheels> alongWall() {
   return mkTask([](const TaskState& ts) {
     const Robot& r = ts.robot();
     Behavior<Wall> wall = wallOnLeft(r);
-    Behavior<double> d = lift([](const Wall& w) { return w.distance; }, wall);
-    Behavior<double> normal = lift([](const Wall& w) { return w.direction; }, wall);
+    Behavior<double> d = wall.map(&Wall::distance);
+    Behavior<double> normal = wall.map(&Wall::direction);
     double m = kSpeed * std::sin(kThetaMax);
     auto rerror = clamp(kSetpoint - d, -m, m);  // wanted speed away from the wall
     auto away = -kSpeed * cos(normal);          // speed away from the wall now
     auto turn = clamp(-3.0 * (rerror - away), -1.0, 1.0);
-    auto ahead = min(min(sonar(r, 15), sonar(r, 0)), sonar(r, 1));
+    auto ahead = min(sonar(r, 15), sonar(r, 0), sonar(r, 1));
     auto forward = kSpeed * clamp((ahead - 20_cm) / 50_cm, 0.0, 1.0);
     return std::pair{wheels(forward, turn), predicate(d > 1_m)};
   });
@@ -102,7 +102,7 @@ Task<Wheels> alongWall() {
 Task<Wheels> roundCorner() {
   return mkTaskE([](const TaskState& ts) {
     const Robot& r = ts.robot();
-    Behavior<double> d = lift([](const Wall& w) { return w.distance; }, wallOnLeft(r));
+    Behavior<double> d = wallOnLeft(r).map(&Wall::distance);
     double radius = kSetpoint + r.spec().radius;  // the robot's centre keeps this far from the end
     return std::tuple{wheels(kSpeed, kSpeed / radius), predicate(d < 80_cm),
                       after(8_s).map([] { return RoboErr("followWall: the wall is lost"); })};
@@ -119,12 +119,9 @@ Task<Wheels> followWall() {
 
 // ---- Step 3. The paper's circleOnce and circleOnceP ------------------------------------------
 
-// atPlace: an event, when the robot is within 30 cm of `p`.
-Event<Unit> atPlace(const Robot& r, Point2 p) { return predicate(distance(place(r), p) < 30_cm); }
-
 // circleOnce: the task state tells where this task began (initialPlace). First follow the wall for
 // 5 s, to get away from there (timeLimit cuts a task short); then follow it until we are back
-// (withExit ends a task when an event happens).
+// (withExit ends a task when an event happens; atPlace occurs within 30 cm of a point).
 Task<Wheels> circleOnce() {
   TaskState ts = co_await getTaskState();
   Point2 initp = ts.initialPlace();

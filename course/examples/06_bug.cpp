@@ -27,7 +27,7 @@ constexpr double kThetaMax = 30_deg;   // steepest angle at which the robot clos
 
 // The nearest echo among the five sonars that look ahead (0 = front, 1-2 left, 14-15 right).
 Behavior<double> frontArc(const Robot& r) {
-  return min(min(min(sonar(r, 14), sonar(r, 15)), min(sonar(r, 0), sonar(r, 1))), sonar(r, 2));
+  return min(sonar(r, 14), sonar(r, 15), sonar(r, 0), sonar(r, 1), sonar(r, 2));
 }
 
 // Where the wall on our left is: its distance (nearest echo) and its direction, radians from our
@@ -93,13 +93,13 @@ Task<Wheels> alongWall() {
   return mkTask([](const TaskState& ts) {
     const Robot& r = ts.robot();
     Behavior<Wall> wall = wallOnLeft(r);
-    Behavior<double> d = lift([](const Wall& w) { return w.distance; }, wall);
-    Behavior<double> normal = lift([](const Wall& w) { return w.direction; }, wall);
+    Behavior<double> d = wall.map(&Wall::distance);
+    Behavior<double> normal = wall.map(&Wall::direction);
     double m = kSpeed * std::sin(kThetaMax);
     auto rerror = clamp(kSetpoint - d, -m, m);  // wanted speed away from the wall
     auto away = -kSpeed * cos(normal);          // speed away from the wall now
     auto turn = clamp(-3.0 * (rerror - away), -1.0, 1.0);
-    auto ahead = min(min(sonar(r, 15), sonar(r, 0)), sonar(r, 1));
+    auto ahead = min(sonar(r, 15), sonar(r, 0), sonar(r, 1));
     auto forward = kSpeed * clamp((ahead - 20_cm) / 50_cm, 0.0, 1.0);
     return std::pair{wheels(forward, turn), predicate(d > 1_m)};
   });
@@ -112,7 +112,7 @@ Task<Wheels> alongWall() {
 Task<Wheels> roundCorner() {
   return mkTaskE([](const TaskState& ts) {
     const Robot& r = ts.robot();
-    Behavior<double> d = lift([](const Wall& w) { return w.distance; }, wallOnLeft(r));
+    Behavior<double> d = wallOnLeft(r).map(&Wall::distance);
     double radius = kSetpoint + r.spec().radius;  // the robot's centre keeps this far from the end
     return std::tuple{wheels(kSpeed, kSpeed / radius), predicate(d < 80_cm),
                       after(8_s).map([] { return RoboErr("followWall: the wall is lost"); })};
@@ -129,15 +129,13 @@ Task<Wheels> followWall() {
 
 // ---- BUG, as in the paper ---------------------------------------------------------------------
 
-// The paper's atPlace: occurs when the robot is within 30 cm of `p`.
-Event<Unit> atPlace(const Robot& r, Point2 p) { return predicate(distance(place(r), p) < 30_cm); }
-
 // A marker for a point, drawn while a task runs.
 Behavior<Picture> marker(const Behavior<Point2>& p) {
-  return lift([](const Point2& at) { return paintAt(at, withColor(green, disc(12_cm))); }, p);
+  return paintAt(p, withColor(green, disc(12_cm)));
 }
 
-// circleOnce: follow the wall for 5 s to get away from where we started, then until we are back.
+// circleOnce: follow the wall for 5 s to get away from where we started, then until we are back
+// (atPlace: within 30 cm).
 Task<Wheels> circleOnce() {
   TaskState ts = co_await getTaskState();
   Point2 initp = ts.initialPlace();

@@ -27,10 +27,10 @@ constexpr double kTrip = 10.0;  // metres to drive
 // ---- Step 1. The driver: example 1's runAround, unchanged -------------------------------------
 
 Behavior<double> frontArc(const Robot& r) {
-  return min(min(min(sonar(r, 14), sonar(r, 15)), min(sonar(r, 0), sonar(r, 1))), sonar(r, 2));
+  return min(sonar(r, 14), sonar(r, 15), sonar(r, 0), sonar(r, 1), sonar(r, 2));
 }
 Behavior<double> sides(const Robot& r) {
-  return min(min(sonar(r, 3), sonar(r, 4)), min(sonar(r, 12), sonar(r, 13)));
+  return min(sonar(r, 3), sonar(r, 4), sonar(r, 12), sonar(r, 13));
 }
 Task<Wheels> goAhead() {
   return mkTask([](const TaskState& ts) {

@@ -103,6 +103,8 @@ CompilerSetup compilerSetup() {
   // frob's headers, seen where the precompiled header saw them (see course/CMakeLists.txt).
   s.flags.insert(s.flags.end(), {"-ivfsoverlay", files.headerOverlay.string(), std::string("-I") + kSdkIncludeDir});
   s.reads = {files.headerOverlay.string(), files.includeDir.string()};
+  // A Task called and not awaited does nothing: Task's [[nodiscard]] says so, and here it stops the build.
+  s.flags.emplace_back("-Werror=unused-result");
   if (const char* dir = std::getenv("FROB_CACHE_DIR"); dir != nullptr && *dir != '\0') {
     s.cacheDir = dir;
   } else if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg != '\0') {

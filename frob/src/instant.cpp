@@ -4,6 +4,7 @@
 #include "frob/instant.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace frob {
@@ -21,11 +22,26 @@ std::optional<std::int64_t> TimerNode::compute(const Instant& now) {
   double local = start_.local(now);
   if (!repeat_ && fired_ > 0) return std::nullopt;
   // A tolerance far below any step keeps t = k × period from being missed by rounding.
-  double due = static_cast<double>(fired_ + 1) * period_;
-  if (local + 1e-9 * (1.0 + due) < due) return std::nullopt;
-  return ++fired_;
+  auto due = [this](std::int64_t k) { return static_cast<double>(k) * period_; };
+  auto reached = [&](std::int64_t k) { return local + 1e-9 * (1.0 + due(k)) >= due(k); };
+  if (!reached(fired_ + 1)) return std::nullopt;
+  // Every period elapsed since the last occurrence counts, however many fit in one step.
+  std::int64_t k = std::max(fired_ + 1, static_cast<std::int64_t>(std::floor(local / period_)));
+  if (reached(k + 1)) ++k;
+  fired_ = k;
+  return fired_;
 }
 }  // namespace detail
+
+Event<Unit> after(double seconds) {
+  FROB_ASSERT(seconds >= 0, "after: the delay must be zero or more seconds");
+  return Event<std::int64_t>(std::make_shared<detail::TimerNode>(seconds, false)).map([] { return Unit{}; });
+}
+
+Event<std::int64_t> every(double seconds) {
+  FROB_ASSERT(seconds > 0, "every: the period must be more than zero seconds");
+  return Event<std::int64_t>(std::make_shared<detail::TimerNode>(seconds, true));
+}
 
 namespace detail {
 namespace {

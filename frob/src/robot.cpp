@@ -137,9 +137,14 @@ Robot::Robot(RobotSpec spec, ScriptedSensors sensors) : Robot(spec, scriptedSour
 
 const RobotSpec& Robot::spec() const { return sensors_->spec; }
 
-Reading<double> Robot::sonar(int i) const {
+Reading<double> Robot::sonar(int i, std::source_location loc) const {
   int n = static_cast<int>(sensors_->spec.sonarAngles.size());
-  return sensors_->read(detail::FrameSlot::sonar, static_cast<std::size_t>(((i % n) + n) % n));
+  if (i < 0 || i >= n) {
+    throw UsageError(std::string(loc.file_name()) + ":" + std::to_string(loc.line()) + ": sonar(r, " +
+                     std::to_string(i) + ") does not exist: the ring has " + std::to_string(n) + " sonars, 0 (front) to " +
+                     std::to_string(n - 1) + " counter-clockwise");
+  }
+  return sensors_->read(detail::FrameSlot::sonar, static_cast<std::size_t>(i));
 }
 
 Behavior<std::vector<double>> Robot::sonars() const { return sensors_->sonars; }

@@ -1,6 +1,7 @@
 #include "frob/task.hpp"
 
 #include <cstring>
+#include <map>
 #include <string_view>
 
 namespace frob {
@@ -66,6 +67,41 @@ std::string describe(const std::exception_ptr& e, TaskEnd* why) {
     return std::string("exception: ") + x.what();
   } catch (...) {
     return "an exception of unknown type";
+  }
+}
+
+std::string typeNameIn(std::string_view signature) {
+  // clang: "std::string frob::detail::typeName() [T = Wall]"; GCC: "... [with T = Wall; ...]".
+  std::size_t from = signature.find("T = ");
+  if (from == std::string_view::npos) return "(value)";
+  from += 4;
+  std::size_t to = signature.find_first_of(";]", from);
+  std::string name(signature.substr(from, to - from));
+  eraseAll(name, "(anonymous namespace)::");
+  return name;
+}
+
+std::string tooDeepMessage(const std::vector<std::string>& chain, int limit) {
+  std::map<std::string, int> count;
+  for (const std::string& name : chain) ++count[name];
+  std::string self = chain.empty() ? std::string("the task") : chain.front();
+  for (const auto& [name, n] : count) {
+    if (n > count[self]) self = name;
+  }
+  std::string call = "co_await " + self + "();";
+  return "task '" + self + "' is running inside itself " + std::to_string(count[self]) + " times over (tasks nested " +
+         "more than " + std::to_string(limit) + " deep): a task that ends with " + call +
+         " waits for that call, so every earlier call stays in memory for as long as the robot runs. End it with "
+         "co_await become(" + self + "()); instead: the new call then takes the old one's place.";
+}
+
+std::optional<RoboErr> roboErrIn(const std::exception_ptr& e) {
+  try {
+    std::rethrow_exception(e);
+  } catch (const RoboErr& err) {
+    return err;
+  } catch (...) {
+    return std::nullopt;
   }
 }
 

@@ -92,6 +92,24 @@ TEST(ControllerFile, AFileOfTheSystemOutsideTheHeadersCannotBeIncluded) {
   EXPECT_EQ(messages.find("root:"), std::string::npos) << messages;
 }
 
+// Issue 18: a task called without co_await does nothing (and a run of it hung silently); in a
+// controller it is an error that says so.
+TEST(ControllerFile, ATaskThatIsNotAwaitedIsAnErrorThatSaysSo) {
+  const fs::path dir = freshFolder("forgotten_co_await");
+  writeFile(dir / "forgot.cpp", R"(#include <frob/frob.hpp>
+using namespace frob;
+Task<Wheels> ahead() { return mkTask([](const TaskState&) { return std::pair{wheels(0.3, 0), after(1.0)}; }); }
+Task<Wheels> loop() { for (;;) ahead(); }
+FROB_CONTROLLER(loop)
+)");
+  std::string messages;
+  ASSERT_FALSE(compileControllerFile(dir / "forgot.cpp", setupIn(dir), &messages).ok());
+  EXPECT_NE(messages.find("forgot.cpp:4:32: error: ignoring return value of function declared with 'nodiscard' "
+                          "attribute: a Task does nothing unless you co_await it"),
+            std::string::npos)
+      << messages;
+}
+
 TEST(ControllerFile, ACompileThatNeverEndsIsStoppedAtItsTimeLimit) {
   const fs::path dir = freshFolder("bomb");
   // Ten to the sixteenth tokens: it would run until it ran out of memory, minutes later.

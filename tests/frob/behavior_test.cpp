@@ -219,5 +219,29 @@ TEST(Behavior, ThePapersRerrorReadsLikeThePaper) {
   EXPECT_DOUBLE_EQ(s[10], 0.25);            // too close: clipped at +m
 }
 
+// Issue 15: the nearest of five sonars was min(min(min(...))) in four examples.
+TEST(Behavior, MinAndMaxTakeAnyNumberOfBehaviorsAndValues) {
+  Behavior<double> t = time();
+  auto lo = min(t + 3.0, 2.5, t * 10.0, constant(4.0));
+  auto hi = max(t, 0.25, 1.0 - t);
+  EXPECT_EQ(sample(lo, 0.1, 4), (std::vector<double>{0.0, 1.0, 2.0, 2.5}));
+  std::vector<double> h = sample(hi, 0.5, 3);  // t = 0, 0.5, 1
+  EXPECT_EQ(h, (std::vector<double>{1.0, 0.5, 1.0}));
+}
+
+struct Wall {
+  double distance = 0;
+  double angle = 0;
+};
+
+// Issue 15: a field of a behavior of a struct, without a lambda.
+TEST(Behavior, MapTakesAFunctionOrAMemberPointer) {
+  Behavior<Wall> wall = lift([](double t) { return Wall{1.0 + t, -t}; }, time());
+  Behavior<double> d = wall.map(&Wall::distance);
+  EXPECT_EQ(sample(d, 0.5, 2), (std::vector<double>{1.0, 1.5}));
+  EXPECT_EQ(sample(wall.map([](const Wall& w) { return w.angle * 2; }), 0.5, 2), (std::vector<double>{0.0, -1.0}));
+  EXPECT_EQ(sample((time() + 1.0).map([](double x) { return x * x; }), 1.0, 2), (std::vector<double>{1.0, 4.0}));
+}
+
 }  // namespace
 }  // namespace frob

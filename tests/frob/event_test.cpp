@@ -1,3 +1,4 @@
+#include "frob/errors.hpp"
 #include "frob/event.hpp"
 #include "frob/sampling.hpp"
 
@@ -85,6 +86,36 @@ TEST(Event, TimersCountFromTheirOwnStart) {
   EXPECT_NEAR(t[3], 1.0, 1e-12);
   EXPECT_EQ(occurrences(after(1.0), 0.1, 100).size(), 1u);
   EXPECT_NEAR(occurrences(after(1.0), 0.1, 100)[0].first, 1.0, 1e-12);
+}
+
+// Issue 15: a period shorter than the step is not slowed down to one count per step: each
+// occurrence carries every period elapsed, so the count at a time is the same at any rate.
+TEST(Event, EveryShorterThanTheStepCountsEveryPeriod) {
+  std::vector<std::pair<double, std::int64_t>> occ = occurrences(every(0.03), 0.1, 5);
+  ASSERT_EQ(occ.size(), 4u);  // one per step after the start
+  std::vector<std::int64_t> counts;
+  for (const auto& [t, k] : occ) counts.push_back(k);
+  // floor(t / 0.03) at t = 0.1, 0.2, 0.3 and 0.4 (0.3 is exactly 10 periods, within rounding).
+  EXPECT_EQ(counts, (std::vector<std::int64_t>{3, 6, 10, 13}));
+  // Longer periods still count 1, 2, 3 at the first step at or after each.
+  std::vector<std::pair<double, std::int64_t>> slow = occurrences(every(0.25), 0.1, 10);
+  ASSERT_EQ(slow.size(), 3u);
+  EXPECT_NEAR(slow[0].first, 0.3, 1e-12);
+  EXPECT_EQ(slow[2].second, 3);
+}
+
+TEST(Event, TimersRefuseAPeriodThatIsNotPositive) {
+  EXPECT_THROW((void)every(0.0), UsageError);
+  EXPECT_THROW((void)after(-1.0), UsageError);
+  EXPECT_EQ(occurrences(after(0.0), 0.1, 3).size(), 1u);  // at once, at its first sample
+}
+
+// Issue 15: an event with a value of its own, without `.map([] { return v; })`.
+TEST(Event, AsReplacesEachOccurrencesValue) {
+  auto occ = occurrences(every(0.2).as(std::string("tick")), 0.1, 5);
+  ASSERT_EQ(occ.size(), 2u);
+  EXPECT_EQ(occ[0].second, "tick");
+  EXPECT_NEAR(occ[1].first, 0.4, 1e-12);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "frob/frob.hpp"
 
+#include <stdexcept>
+
 #include <gtest/gtest.h>
 
 namespace frob {
@@ -48,6 +50,20 @@ TEST(Parallel, WithTaskShowsEachTheOthersOutputAndTheFirstsEnd) {
   EXPECT_EQ(s[3].forward, 0);  // the second ended at t = 0.3 when the first did: final output
 }
 
+// Issue 15: generic lambdas for both; the first's argument is then a Behavior<Wheels>.
+TEST(Parallel, WithTaskTakesGenericLambdas) {
+  auto t = withTask([](auto second) { return mkTask([second](const TaskState&) { return std::pair{second, after(0.2)}; }); },
+                    [](auto first, auto end) {
+                      return mkTask([first, end](const TaskState&) {
+                        return std::pair{wheels(first.map(&Wheels::forward) + 1.0, 0), end.as(Unit{})};
+                      });
+                    });
+  std::vector<Wheels> s = run(std::move(t), 3);
+  EXPECT_EQ(s[0].forward, 1);  // the first echoes the second one step late: 0, then 1, ...
+  EXPECT_EQ(s[1].forward, 2);
+  EXPECT_EQ(s[2].forward, 0);  // the first ended at t = 0.2, and the second with it
+}
+
 TEST(Parallel, ParallelMergesOutputsAndWaitsForBoth) {
   std::pair<int, Unit> results;
   auto t = [&results]() -> Task<Wheels> {
@@ -58,6 +74,12 @@ TEST(Parallel, ParallelMergesOutputsAndWaitsForBoth) {
   EXPECT_EQ(s[2], (Wheels{0, 1}));  // the first alone
   EXPECT_EQ(s[4], (Wheels{0, 0}));  // both ended
   EXPECT_EQ(results.first, 5);
+}
+
+Task<Wheels> failAt(double seconds) {
+  return mkTaskE([seconds](const TaskState&) {
+    return std::tuple{wheels(0, 1), never(), after(seconds).map([] { return RoboErr("branch broke"); })};
+  });
 }
 
 TEST(Parallel, AnErrorInEitherBranchFailsTheParallel) {
@@ -106,6 +128,55 @@ TEST(Parallel, AsyncLoopRunsEachQBesideTheRestOfTheLoop) {
   std::vector<double> turn;
   for (const Wheels& w : s) turn.push_back(w.turn);
   EXPECT_EQ(turn, (std::vector<double>{0, 0, 1, 1, 2, 1, 2, 1}));
+}
+
+Task<Wheels> throwsLogicError() {
+  co_await drive(1, 0.3);
+  throw std::logic_error("student bug");
+}
+
+// The message a run ends with when `t` is sampled for a second, or "" if it does not end.
+std::string failureOf(Task<Wheels> t) {
+  try {
+    (void)run(std::move(t), 10);
+  } catch (const FrobError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Issue 15: only a RoboErr is a robot error, in whichever branch it is thrown. A std::logic_error
+// in a branch run beside another is a bug: taskCatch must not restart on it (BUG would hide it);
+// it ends the run with its own message, the task that threw it and the time.
+TEST(Parallel, AnExceptionInABranchKeepsItsKindAndEndsTheRun) {
+  int restarts = 0;
+  auto caught = [&restarts](const RoboErr&) {
+    ++restarts;
+    return forever(0);
+  };
+  std::vector<std::string> messages{
+      failureOf(taskCatch(Task<Wheels>(parallel(throwsLogicError(), forever(1), add)), caught)),
+      failureOf(taskCatch(Task<Wheels>(parallel(forever(1), throwsLogicError(), add)), caught)),
+      failureOf(taskCatch(Task<Wheels>(disable(throwsLogicError(), forever(1), add)), caught)),
+      failureOf(taskCatch(withTask([](Behavior<Wheels>) { return throwsLogicError(); },
+                                   [](Behavior<Wheels>, Event<Outcome<void>>) { return forever(2); }),
+                          caught)),
+  };
+  EXPECT_EQ(restarts, 0);
+  for (const std::string& m : messages) {
+    EXPECT_NE(m.find("task 'throwsLogicError' failed at t = 0.300 s"), std::string::npos) << m;
+    EXPECT_NE(m.find("student bug"), std::string::npos) << m;
+  }
+}
+
+TEST(Parallel, ARoboErrInABranchIsStillCaughtAsOne) {
+  std::string caught;
+  auto t = taskCatch(Task<Wheels>(parallel(failAt(0.2), forever(1), add)), [&caught](const RoboErr& e) {
+    caught = e.what();
+    return forever(0);
+  });
+  EXPECT_EQ(failureOf(std::move(t)), "");
+  EXPECT_EQ(caught, "branch broke");  // the error itself, not a description of it
 }
 
 }  // namespace

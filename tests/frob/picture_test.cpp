@@ -1,4 +1,5 @@
 #include "frob/picture.hpp"
+#include "frob/sampling.hpp"
 
 #include <gtest/gtest.h>
 
@@ -30,6 +31,14 @@ TEST(Picture, OverlayKeepsOrderBackToFront) {
   EXPECT_EQ(p.shapes()[1].kind, Shape::Kind::Arrow);
   EXPECT_EQ(p.shapes()[2].kind, Shape::Kind::Polygon);
   EXPECT_TRUE(emptyPicture().empty());
+}
+
+// Issue 15: a picture that follows a moving point, such as the robot's place.
+TEST(Picture, PaintAtABehaviorMovesThePictureWithIt) {
+  Behavior<Point2> at = lift([](double t) { return Point2{t, 2 * t}; }, time());
+  std::vector<Picture> p = sample(paintAt(at, circle(10_cm)), 0.5, 2);
+  EXPECT_EQ(p[0].shapes()[0].points[0], Point2(0, 0));
+  EXPECT_EQ(p[1].shapes()[0].points[0], Point2(0.5, 1.0));
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "../bench/wall_follower.hpp"
 #include "frob/calculus.hpp"
+#include "frob/errors.hpp"
 #include "frob/robot.hpp"
 #include "frob/sampling.hpp"
 
@@ -32,8 +33,25 @@ TEST(Robot, NamedSonarsPointWhereTheirNamesSay) {
   EXPECT_EQ(sample(leftSonar(r), 0.1, 1)[0], 5.0);
   EXPECT_EQ(sample(rightSonar(r), 0.1, 1)[0], 13.0);
   EXPECT_EQ(sample(backSonar(r), 0.1, 1)[0], 9.0);
-  EXPECT_EQ(sample(sonar(r, 17), 0.1, 1)[0], 2.0);  // index taken modulo the ring
   EXPECT_EQ(sample(sonars(r), 0.1, 1)[0].size(), 16u);
+}
+
+// Issue 18: sonar 16 of a ring of 16 is a mistake, not sonar 0. The error is a UsageError (a
+// programmer's mistake, like FROB_ASSERT's), thrown where the sonar is named, with the caller's line.
+TEST(Robot, ASonarOutsideTheRingIsRefusedNamingTheIndexAndTheRingSize) {
+  Robot r = approachingWall();
+  for (int i : {16, -3}) {
+    try {
+      (void)sonar(r, i);
+      FAIL() << "sonar " << i << " was accepted";
+    } catch (const UsageError& e) {
+      std::string m = e.what();
+      EXPECT_NE(m.find("sonar(r, " + std::to_string(i) + ") does not exist"), std::string::npos) << m;
+      EXPECT_NE(m.find("the ring has 16 sonars, 0 (front) to 15"), std::string::npos) << m;
+      EXPECT_NE(m.find("robot_test.cpp:"), std::string::npos) << m;  // where the student named it
+    }
+  }
+  EXPECT_EQ(sample(sonar(r, 15), 0.1, 1)[0], 16.0);  // the last one is there
 }
 
 TEST(Robot, OdometryAndVelocityReadTheFrame) {

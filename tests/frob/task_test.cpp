@@ -5,6 +5,21 @@
 
 #include <cstring>
 #include <limits>
+#include <ostream>
+
+// Results a student's task may return, named as a student names them (global, not in frob).
+namespace {
+enum class Side { left, right };
+std::ostream& operator<<(std::ostream& os, Side s) { return os << (s == Side::left ? "left" : "right"); }
+enum Colour { redColour, greenColour };  // no operator<<: an enum would print as a number
+struct Gap {                              // no operator<<
+  double width = 0;
+};
+struct Seen {
+  int count = 0;
+};
+std::ostream& operator<<(std::ostream& os, const Seen& s) { return os << s.count << " seen"; }
+}  // namespace
 
 namespace frob {
 namespace {
@@ -359,6 +374,139 @@ TEST(Task, RunTaskFollowsTheFinalBehaviorAfterTheTaskEnds) {
   std::vector<Wheels> s = samples(runTask(TaskState(idleRobot()), forwardFor(1, 0.2), wheels(0, -1)), 0.1, 4);
   EXPECT_EQ(s[1], (Wheels{1, 0}));
   EXPECT_EQ(s[2], (Wheels{0, -1}));
+}
+
+template <class T>
+Task<Wheels, T> give(T v) {
+  return mkTask([v](const TaskState&) { return std::pair{wheels(0, 0), after(0.1).map([v] { return v; })}; });
+}
+
+// Issue 18: a task's result reads in the timeline as it reads in the program.
+TEST(Task, TheTimelinePrintsAResultAsItsTypeReads) {
+  auto seq = []() -> Task<Wheels> {
+    (void)co_await give(true);
+    (void)co_await give(Side::right);
+    (void)co_await give(greenColour);
+    (void)co_await give(Gap{1.5});
+    (void)co_await give(Seen{3});
+    (void)co_await give(std::optional<Side>());
+  };
+  Robot r = idleRobot();
+  (void)samples(runTask(r, seq()), 0.1, 8);
+  std::vector<std::string> details;
+  for (const TaskRecord& rec : r.debugChannel()->timeline().drainEnded()) {
+    if (rec.name == "give") details.push_back(rec.detail);
+  }
+  // Its operator<< if it has one (a bool's reads true), else the type's name.
+  EXPECT_EQ(details, (std::vector<std::string>{"true", "right", "Colour", "Gap", "3 seen", "none"}));
+}
+
+Task<Wheels> tick() {
+  return mkTask([](const TaskState&) { return std::pair{wheels(0.1, 0), after(0.05)}; });
+}
+// The paper's `runAround = do ...; runAround`, written literally: the call is the last statement,
+// but a C++ coroutine waits for it, so each call keeps its caller's frame.
+Task<Wheels> tickForever() {
+  co_await tick();
+  co_await tickForever();
+}
+
+// Issue 15: today the literal form costs a frame per call for as long as it runs (72,000 frames
+// after an hour at 20 calls a second). It now stops once 1,000 calls are nested, with a message
+// showing the fix; frames never exceed that bound. Counted exactly with liveTaskFrames().
+TEST(Task, TheLiteralRecursionStopsAtABoundWithItsFixInsteadOfGrowingForAnHour) {
+  long frames0 = liveTaskFrames();
+  Robot r = idleRobot();
+  long maxFrames = 0;
+  double stopped = -1;
+  std::string failure;
+  {
+    RunningController c([](const Robot& robot) { return runTask(robot, tickForever()); }, r);
+    Clock clock(0.05);  // one call per step: 20 a second
+    for (int i = 0; i < 72'000; ++i) {
+      const Instant& now = i == 0 ? clock.now() : clock.advance();
+      (void)c.step(now);
+      maxFrames = std::max(maxFrames, liveTaskFrames() - frames0);
+      if (c.failed() && stopped < 0) {
+        stopped = now.time;
+        failure = c.failure();
+      }
+      if (i % 1000 == 0) r.debugChannel()->timeline().drainEnded();
+    }
+  }
+  // Call k starts at t = 0.05 k, nested k deep; call 1000's tick would be 1001 deep.
+  EXPECT_NEAR(stopped, 50.0, 1e-9);
+  EXPECT_LE(maxFrames, detail::kMaxTaskDepth + 2);  // calls 0..1000 and the refused tick
+  EXPECT_EQ(liveTaskFrames(), frames0);
+  EXPECT_NE(failure.find("task 'tickForever' is running inside itself"), std::string::npos) << failure;
+  EXPECT_NE(failure.find("co_await become(tickForever());"), std::string::npos) << failure;
+}
+
+// Issue 15, when a behavior starts. With the paper, a behavior starts when it is switched in: the
+// untilB of the task that drives it, which is its first sample. So a behavior built in a parent
+// task and first read by a later subtask starts with that subtask, not when it was built.
+TEST(Task, ABehaviorBuiltInAParentStartsWithTheSubtaskThatFirstReadsIt) {
+  auto seq = []() -> Task<Wheels> {
+    Behavior<double> counted = integral(constant(1.0));  // built at t = 0
+    Event<Unit> soon = after(0.3);
+    Event<Unit> already = predicate(constant(true));
+    co_await forwardFor(0.0, 0.5);
+    co_await mkTask([counted, soon](const TaskState&) { return std::pair{wheels(counted, 1), soon}; });
+    co_await mkTask([already](const TaskState&) { return std::pair{wheels(0, 2), already}; });
+    co_await mkTask([counted](const TaskState&) { return std::pair{wheels(counted, 3), never()}; });
+  };
+  std::vector<Wheels> s = samples(runTask(idleRobot(), seq()), 0.1, 11);
+  EXPECT_EQ(s[5], (Wheels{0, 1}));  // t = 0.5: the integral starts at zero, with its first reader
+  EXPECT_NEAR(s[7].forward, 0.2, 1e-12);
+  // The timer built at t = 0 ends the subtask 0.3 s after that subtask began (t = 0.8), and the
+  // predicate first sampled then occurs at once (a condition already true at its start).
+  EXPECT_EQ(s[7].turn, 1);
+  EXPECT_EQ(s[8].turn, 3);
+  // A behavior starts once: a later reader continues it (here from 0.3 at t = 0.8).
+  EXPECT_NEAR(s[10].forward, 0.5, 1e-12);
+}
+
+// The end of each task of a tree, each named after what ends it, run on a kinematic robot at step `dt`.
+std::vector<TaskRecord> rateTree(double dt) {
+  auto tree = []() -> Task<Wheels> {
+    co_await forwardFor(0.5, 1.0).named("timer");
+    co_await mkTask([](const TaskState& ts) {
+      return std::pair{wheels(0, 1.0), predicate(orientation(ts.robot()) > 1.0)};
+    }).named("predicate");
+    co_await mkTask([](const TaskState&) {
+      return std::pair{wheels(0.3, 0), every(0.02).filter([](std::int64_t k) { return k >= 25; }).map([] { return Unit{}; })};
+    }).named("every");
+    (void)co_await timeLimit(mkTask([](const TaskState&) { return std::pair{wheels(0.2, 0), never()}; }), 0.7)
+        .named("timeLimit");
+    const Robot r = (co_await getTaskState()).robot();
+    co_await withExit(predicate(frontSonar(r) < 1.0),
+                      mkTask([](const TaskState&) { return std::pair{wheels(0.4, 0), never()}; }))
+        .named("withExit");
+  };
+  KinematicRobot k(3.0);
+  k.run(runTask(k.robot(), tree()), dt, 10.0);
+  std::vector<TaskRecord> ended;
+  for (TaskRecord& rec : k.robot().debugChannel()->timeline().drainEnded()) {
+    if (rec.depth == 1) ended.push_back(std::move(rec));
+  }
+  return ended;
+}
+
+// Issue 15: the same task tree at 20 Hz and 200 Hz switches at the same times. Each switch is seen
+// at the first step at or after it, so each is late by less than one 20 Hz step (0.05 s), and each
+// task starts where the one before ended: the n-th switch may be up to n steps late.
+TEST(Task, ATaskTreeSwitchesAtTheSameTimesAt20HzAnd200Hz) {
+  std::vector<TaskRecord> slow = rateTree(0.05);
+  std::vector<TaskRecord> fast = rateTree(0.005);
+  ASSERT_EQ(slow.size(), 5u);
+  ASSERT_EQ(fast.size(), slow.size());
+  for (std::size_t n = 0; n < slow.size(); ++n) {
+    EXPECT_EQ(slow[n].name, fast[n].name);
+    EXPECT_NEAR(slow[n].end, fast[n].end, 0.05 * static_cast<double>(n + 1) + 1e-9) << slow[n].name;
+  }
+  // The exact times: 1 s, 1 rad at 1 rad/s, 0.5 s, 0.7 s, then the wall 1 m ahead.
+  EXPECT_NEAR(fast[2].end, 2.5, 0.01);
+  EXPECT_NEAR(fast[3].end, 3.2, 0.015);
 }
 
 }  // namespace

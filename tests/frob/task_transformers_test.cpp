@@ -43,26 +43,59 @@ TEST(Transformers, AddErrorCoversEverySubtaskAndEndsWithTheWrappedTask) {
   EXPECT_EQ(forwardOf(runTask(idleRobot(), seq()), 7), (std::vector<double>{1, 2, 2, 3, 4, 4, 4}));
 }
 
+Task<Wheels, int> driveThen(double forward, double seconds, int result) {
+  return mkTask([=](const TaskState&) { return std::pair{wheels(forward, 0), after(seconds).map([result] { return result; })}; });
+}
+
 TEST(Transformers, TimeLimitAbortsOrPassesTheResultThrough) {
   std::optional<Unit> late;
   std::optional<Unit> early;
+  std::optional<int> value;
   auto seq = [&]() -> Task<Wheels> {
     late = co_await timeLimit(forever(1), 0.3);
     early = co_await timeLimit(drive(2, 0.1), 1.0);
+    value = co_await timeLimit(driveThen(3, 0.1, 5), 1.0);
   };
-  std::vector<double> f = forwardOf(runTask(idleRobot(), seq()), 6);
+  std::vector<double> f = forwardOf(runTask(idleRobot(), seq()), 7);
   EXPECT_FALSE(late.has_value());
   EXPECT_TRUE(early.has_value());
-  EXPECT_EQ(f, (std::vector<double>{1, 1, 1, 2, 0, 0}));
+  EXPECT_EQ(value, 5);
+  EXPECT_EQ(f, (std::vector<double>{1, 1, 1, 2, 3, 0, 0}));
 }
 
 TEST(Transformers, WithBPairsTheResultWithTheBehaviorAtTheEnd) {
   std::pair<Unit, double> got;
+  std::pair<int, double> both;
   auto seq = [&]() -> Task<Wheels> {
     got = co_await withB([](const TaskState&) { return integral(constant(2.0)); }, drive(1, 0.5));
+    both = co_await withB([](const TaskState&) { return integral(constant(3.0)); }, driveThen(1, 0.2, 8));
   };
-  (void)forwardOf(runTask(idleRobot(), seq()), 8);
+  (void)forwardOf(runTask(idleRobot(), seq()), 9);
   EXPECT_NEAR(got.second, 1.0, 1e-12);  // 2 m/s for the task's 0.5 s
+  EXPECT_EQ(both.first, 8);
+  EXPECT_NEAR(both.second, 0.6, 1e-12);  // 3 m/s for 0.2 s
+}
+
+// Issue 15: withB's function gets the state of withB's start by value, as mkTask's does. A
+// reference it keeps into that state (here the start place) must not follow the subtasks' states.
+TEST(Transformers, WithBGivesItsFunctionTheStateOfItsStartByValue) {
+  Robot r(nomadSpec(), ScriptedSensors{.odometry = [](double t) { return Pose2{Point2{t, 0}, 0}; }});
+  double travelled = 0;
+  auto twoLegs = []() -> Task<Wheels> {
+    co_await drive(1, 0.5);
+    co_await drive(1, 0.3);
+  };
+  auto seq = [&]() -> Task<Wheels> {
+    co_await drive(1, 0.2);
+    travelled = (co_await withB(
+        [](const TaskState& ts) {
+          const Point2& start = ts.initialPlace();  // kept by reference, as students write
+          return lift([&start](const Point2& p) { return distance(p, start); }, place(ts.robot()));
+        },
+        twoLegs())).second;
+  };
+  (void)forwardOf(runTask(r, seq()), 12);
+  EXPECT_NEAR(travelled, 0.8, 1e-12);  // from x = 0.2 to x = 1.0, not from the second leg's start (0.3)
 }
 
 TEST(Transformers, WithExitAbortsAndReturnsTheEventsValue) {
@@ -81,6 +114,21 @@ TEST(Transformers, WithExitAbortsAndReturnsTheEventsValue) {
   EXPECT_NE(error.find("ended before its withExit event"), std::string::npos) << error;
 }
 
+// Issue 15: the paper's withExit is an untilB around the body, so when the body ends at the very
+// instant the event occurs, the event wins: withExit returns its value, not an error.
+TEST(Transformers, WithExitWinsATieWithItsBodysEnd) {
+  int value = 0;
+  auto seq = [&]() -> Task<Wheels> {
+    co_await drive(1, 0.2);
+    value = co_await withExit(after(1.0).map([] { return 42; }), drive(2, 1.0));
+    co_await forever(3);
+  };
+  std::vector<double> f = forwardOf(runTask(idleRobot(), seq()), 14);
+  EXPECT_EQ(value, 42);
+  EXPECT_EQ(f[11], 2);  // t = 1.1: the body still drives
+  EXPECT_EQ(f[12], 3);  // t = 1.2: both ended together, and the next task drives in that step
+}
+
 TEST(Transformers, WithMyResultSeesItsOwnOutputOneStepLate) {
   // Output: 1 + my previous output, so 1, 2, 3, ... (and 1 at the start, from the zero before).
   auto counting = withMyResult([](Behavior<Wheels> mine) {
@@ -89,6 +137,14 @@ TEST(Transformers, WithMyResultSeesItsOwnOutputOneStepLate) {
     });
   });
   EXPECT_EQ(forwardOf(runTask(idleRobot(), std::move(counting)), 4), (std::vector<double>{1, 2, 3, 4}));
+}
+
+// Issue 15: a generic lambda is accepted; its argument is the robot's output, a Behavior<Wheels>.
+TEST(Transformers, WithMyResultTakesAGenericLambda) {
+  auto counting = withMyResult([](auto mine) {
+    return mkTask([mine](const TaskState&) { return std::pair{wheels(mine.map(&Wheels::forward) + 1.0, 0), never()}; });
+  });
+  EXPECT_EQ(forwardOf(runTask(idleRobot(), std::move(counting)), 3), (std::vector<double>{1, 2, 3}));
 }
 
 TEST(Transformers, WithFilterAppliesToEverySubtaskAndStopsAfter) {

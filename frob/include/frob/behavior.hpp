@@ -4,6 +4,7 @@
 #include "frob/detail/node.hpp"
 #include "frob/geometry.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <concepts>
 #include <functional>
@@ -113,6 +114,10 @@ class Behavior {
   const T& at(const Instant& now) const { return node_->at(now); }
   /// The node behind this behavior.
   [[nodiscard]] const std::shared_ptr<detail::BehaviorNode<T>>& node() const { return node_; }
+  /// Pointwise `f` of this behavior's value; `f` may be a member pointer: `wall.map(&Wall::distance)`.
+  template <class F>
+    requires std::invocable<F&, const T&>
+  [[nodiscard]] auto map(F f) const;
 
  private:
   std::shared_ptr<detail::BehaviorNode<T>> node_;
@@ -217,6 +222,10 @@ class Pointwise {
   operator Behavior<R>() const { return behavior(); }  // NOLINT(google-explicit-constructor)
   /// The value at instant `now`, as for a Behavior.
   R at(const Instant& now) const { return eval(now); }
+  /// Pointwise `f` of this expression's value, as Behavior::map.
+  template <class G>
+    requires std::invocable<G&, const R&>
+  [[nodiscard]] auto map(G g) const;
 
  private:
   F f_;
@@ -244,7 +253,7 @@ template <class T>
   return Behavior<std::remove_cvref_t<T>>(std::forward<T>(v));
 }
 
-/// Seconds since this behavior started (its first sample), so 0 at the start of a task.
+/// Seconds since this behavior started (its first sample): 0 when the task that first reads it starts.
 [[nodiscard]] inline Behavior<double> time() { return Behavior<double>(std::make_shared<detail::TimeNode>()); }
 
 /// Pointwise application of `f` to behaviors and plain values: lift(f, b1, 2.0, b3).
@@ -255,6 +264,20 @@ template <class F, class... Args>
   using R = Stored<std::invoke_result_t<F&, const ValueOf<Args>&...>>;
   return Pointwise<R, F, detail::Arg<std::remove_cvref_t<Args>>...>(std::move(f),
                                                                      detail::makeArg(std::forward<Args>(args))...);
+}
+
+template <class T>
+template <class F>
+  requires std::invocable<F&, const T&>
+auto Behavior<T>::map(F f) const {
+  return lift(std::move(f), *this);
+}
+
+template <class R, class F, class... Args>
+template <class G>
+  requires std::invocable<G&, const R&>
+auto Pointwise<R, F, Args...>::map(G g) const {
+  return lift(std::move(g), *this);
 }
 
 // Pointwise operators mixing Behavior<T> and plain values. Each is constrained on its value types,
@@ -330,6 +353,22 @@ template <class A, class B>
 [[nodiscard]] auto min(const A& a, const B& b) {
   return lift([](const auto& x, const auto& y) { return y < x ? std::common_type_t<decltype(x), decltype(y)>(y) : x; },
               a, b);
+}
+
+/// Pointwise largest of three or more (behaviors or values): max(sonar(r, 15), sonar(r, 0), sonar(r, 1)).
+template <class... Xs>
+  requires(sizeof...(Xs) >= 3 && (BehaviorType<Xs> || ...)) && requires { typename std::common_type_t<ValueOf<Xs>...>; }
+[[nodiscard]] auto max(const Xs&... xs) {
+  return lift([](const ValueOf<Xs>&... v) { return std::max({static_cast<std::common_type_t<ValueOf<Xs>...>>(v)...}); },
+              xs...);
+}
+
+/// Pointwise smallest of three or more (behaviors or values): min(sonar(r, 15), sonar(r, 0), sonar(r, 1)).
+template <class... Xs>
+  requires(sizeof...(Xs) >= 3 && (BehaviorType<Xs> || ...)) && requires { typename std::common_type_t<ValueOf<Xs>...>; }
+[[nodiscard]] auto min(const Xs&... xs) {
+  return lift([](const ValueOf<Xs>&... v) { return std::min({static_cast<std::common_type_t<ValueOf<Xs>...>>(v)...}); },
+              xs...);
 }
 
 /// Pointwise `v` limited to [lo, hi].

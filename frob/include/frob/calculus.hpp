@@ -1,6 +1,6 @@
 #pragma once
-/// Behaviors that exploit the flow of time: integral, derivative, and the value at an extremum.
-
+/// Behaviors that exploit the flow of time: integral, derivative, the value at an extremum. Each starts
+/// at its first sample: when the task that first drives it starts (the paper's untilB), wherever built.
 #include "frob/behavior.hpp"
 
 #include <limits>

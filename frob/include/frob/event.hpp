@@ -68,6 +68,11 @@ class Event {
   template <class F>
     requires std::invocable<F&, const T&> || std::invocable<F&>
   [[nodiscard]] auto map(F f) const;
+  /// Each occurrence carrying `v` instead of its own value (the paper's `e -=> v`).
+  template <class U>
+  [[nodiscard]] auto as(U v) const {
+    return map([v = std::move(v)] { return v; });
+  }
   /// Only the occurrences whose value satisfies `p`.
   template <class P>
     requires std::predicate<P&, const T&>
@@ -194,7 +199,8 @@ class SnapshotNode final : public EventNode<std::pair<T, U>> {
 };
 
 // Occurs at local times k × period for k = 1, 2, ... (or once at `period` when not repeating),
-// on the first instant at or after each; carries k.
+// on the first instant at or after each; carries the number of periods elapsed, which may step by
+// more than one when the period is shorter than the clock's step.
 class TimerNode final : public EventNode<std::int64_t> {
  public:
   TimerNode(double period, bool repeat) : period_(period), repeat_(repeat) {}
@@ -258,14 +264,12 @@ template <class T, class B>
   return Event<std::pair<T, U>>(std::make_shared<detail::SnapshotNode<T, U>>(e.node(), toBehavior(b).node()));
 }
 
-/// Occurs once, `seconds` after it starts (its first sample).
-[[nodiscard]] inline Event<Unit> after(double seconds) {
-  return Event<std::int64_t>(std::make_shared<detail::TimerNode>(seconds, false)).map([] { return Unit{}; });
-}
+/// Occurs once, `seconds` (>= 0) after it starts (its first sample).
+[[nodiscard]] Event<Unit> after(double seconds);
 
-/// Occurs every `seconds` after it starts, carrying the count 1, 2, 3, ...
-[[nodiscard]] inline Event<std::int64_t> every(double seconds) {
-  return Event<std::int64_t>(std::make_shared<detail::TimerNode>(seconds, true));
-}
+/// Occurs every `seconds` (> 0) after it starts, carrying how many periods have elapsed: 1, 2, 3, ...
+/// at any step; when `seconds` is shorter than the step, one occurrence per step carries the count
+/// of every period elapsed so far (e.g. every(0.03) at 10 Hz: 3, 6, 10, 13, ...).
+[[nodiscard]] Event<std::int64_t> every(double seconds);
 
 }  // namespace frob

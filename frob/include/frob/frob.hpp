@@ -1,5 +1,7 @@
 #pragma once
 /// Frob: functional reactive robotics. The one header a controller includes.
+/// Where to start: frob/README.md lists every public name, grouped, with its meaning and header;
+/// course/examples/01_run_around.cpp is the first program, course/lessons/ the course.
 
 #include "frob/behavior.hpp"
 #include "frob/calculus.hpp"
@@ -15,6 +17,7 @@
 #include "frob/robot_values.hpp"
 #include "frob/run_task.hpp"
 #include "frob/sampling.hpp"
+#include "frob/sensing.hpp"
 #include "frob/switching.hpp"
 #include "frob/task.hpp"
 #include "frob/task_state.hpp"

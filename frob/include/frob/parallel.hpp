@@ -8,7 +8,8 @@
 
 namespace frob {
 
-/// How a task running beside another ended: its result, or the error that ended it.
+/// How a task running beside another ended: its result, or the RoboErr that ended it. Any other
+/// exception in either branch is a bug, not a robot error: it ends the whole run with its message.
 template <class B>
 struct Outcome {
   std::optional<ResultOf<B>> value;  ///< set when it returned
@@ -30,7 +31,7 @@ struct Strand {
   [[nodiscard]] Outcome<B> outcome() const {
     const auto& slot = runner->result();
     if (slot.value) return {slot.value, std::nullopt};
-    if (slot.error) return {std::nullopt, RoboErr(describe(slot.error))};
+    if (slot.error) return {std::nullopt, roboErrIn(slot.error)};  // the runner holds only RoboErrs
     return {};
   }
 };
@@ -105,10 +106,11 @@ Task<A, B> mergedWith(Behavior<A> other, M merge, Task<A, B> t) {
 /// The paper's withTask: runs `t1f(out2)` beside `t2f(out1, end1)` and returns the second's
 /// result. The second sees the first's output at once and its end (result or error) as an event;
 /// the first sees the second's output one step late (no algebraic loop). When the second ends,
-/// the first is aborted. The first runs with a fresh copy of the task state.
+/// the first is aborted. The first runs with a fresh copy of the task state. Either function may
+/// be a generic lambda; the first's argument is then a Behavior<Wheels>.
 template <class F1, class F2>
 [[nodiscard]] auto withTask(F1 t1f, F2 t2f, std::source_location loc = std::source_location::current()) {
-  using A2 = ValueOf<typename detail::FirstArg<decltype(&F1::operator())>::type>;
+  using A2 = detail::FedOutput<F1>;
   using T1 = std::invoke_result_t<F1&, Behavior<A2>>;
   using A1 = typename T1::output_type;
   using B1 = typename T1::result_type;

@@ -1,6 +1,7 @@
 #pragma once
 /// Pictures: values in world coordinates that tasks draw for debugging (withPicture).
 
+#include "frob/behavior.hpp"
 #include "frob/geometry.hpp"
 
 #include <optional>
@@ -76,5 +77,11 @@ class Picture {
 [[nodiscard]] Picture withColor(const Color& c, Picture p);
 /// `p` moved so that its origin lies at `at`.
 [[nodiscard]] Picture paintAt(const Point2& at, Picture p);
+/// `p` moved, at every instant, so that its origin lies at `at`'s value: paintAt(place(r), circle(0.3)).
+template <BehaviorType P>
+  requires std::convertible_to<ValueOf<P>, Point2>
+[[nodiscard]] Behavior<Picture> paintAt(const P& at, Picture p) {
+  return lift([p = std::move(p)](const Point2& x) { return paintAt(x, p); }, at);
+}
 
 }  // namespace frob

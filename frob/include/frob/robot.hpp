@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <source_location>
 #include <vector>
 
 namespace frob {
@@ -97,8 +98,9 @@ class Robot {
 
   /// Body radius and sonar layout.
   [[nodiscard]] const RobotSpec& spec() const;
-  /// Range of sonar `i` (0 = front, counter-clockwise), metres. Index taken modulo the ring size.
-  [[nodiscard]] Reading<double> sonar(int i) const;
+  /// Range of sonar `i` (0 = front, counter-clockwise), metres. An index outside the ring is a
+  /// mistake: UsageError naming the index, the ring's size and the caller's file and line.
+  [[nodiscard]] Reading<double> sonar(int i, std::source_location loc = std::source_location::current()) const;
   /// All sonar ranges, metres.
   [[nodiscard]] Behavior<std::vector<double>> sonars() const;
   /// The index of the sonar pointing nearest to `angle` (radians from the heading).
@@ -125,7 +127,10 @@ class Robot {
 };
 
 /// The paper's sensor functions, in C++.
-[[nodiscard]] inline Reading<double> sonar(const Robot& r, int i) { return r.sonar(i); }
+[[nodiscard]] inline Reading<double> sonar(const Robot& r, int i,
+                                           std::source_location loc = std::source_location::current()) {
+  return r.sonar(i, loc);
+}
 [[nodiscard]] inline Behavior<std::vector<double>> sonars(const Robot& r) { return r.sonars(); }
 [[nodiscard]] Reading<double> frontSonar(const Robot& r);
 [[nodiscard]] Reading<double> leftSonar(const Robot& r);

@@ -15,11 +15,12 @@ template <class A, class B>
 class RunnerNode final : public BehaviorNode<A> {
  public:
   // A run of `task` then `final`. A run inside another (parallel tasks) hangs its timeline under
-  // `parentRecord` and, with `holdErrors`, keeps an uncaught error in result() instead of throwing.
+  // `parentRecord` and, with `holdRoboErrs`, keeps an uncaught RoboErr in result() for the other
+  // branch to catch; any other exception ends the whole run, as it would at the top.
   RunnerNode(TaskState ts, Task<A, B> task, Behavior<A> final, std::int64_t parentRecord = -1,
-             bool holdErrors = false)
+             bool holdRoboErrs = false)
       : ctx_(std::move(ts)), task_(std::move(task)), final_(std::move(final)), parentRecord_(parentRecord),
-        holdErrors_(holdErrors) {}
+        holdRoboErrs_(holdRoboErrs) {}
   RunnerNode(const RunnerNode&) = delete;
   RunnerNode& operator=(const RunnerNode&) = delete;
   ~RunnerNode() override {
@@ -61,7 +62,7 @@ class RunnerNode final : public BehaviorNode<A> {
     if (!started_) {
       started_ = true;
       ctx_.snapshot(now);
-      task_.startIn(slot_, &ctx_, std::noop_coroutine(), parentRecord_).resume();
+      task_.startIn(slot_, &ctx_, std::noop_coroutine(), parentRecord_, nullptr).resume();
     }
     for (int transitions = 0;; ++transitions) {
       AtomicBase<A>* atom = ctx_.current;
@@ -93,7 +94,7 @@ class RunnerNode final : public BehaviorNode<A> {
   static constexpr int kMaxTransitionsPerInstant = 1000;
 
   A finished(const Instant& now) {
-    if (slot_.error && !reported_ && !holdErrors_) {
+    if (slot_.error && !reported_ && !(holdRoboErrs_ && roboErrIn(slot_.error))) {
       reported_ = true;
       TaskEnd how = TaskEnd::Failed;
       std::string what = describe(slot_.error, &how);
@@ -131,7 +132,7 @@ class RunnerNode final : public BehaviorNode<A> {
   ResultSlot<ResultOf<B>> slot_;
   std::exception_ptr failure_;
   std::int64_t parentRecord_;
-  bool holdErrors_;
+  bool holdRoboErrs_;
   bool started_ = false;
   bool reported_ = false;
 };

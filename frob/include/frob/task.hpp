@@ -57,7 +57,7 @@ Task<A> discardResult(Task<A, B> t);
 /// A task driving a behavior of type A until it ends with a B (`Task<Wheels>` is the paper's
 /// `Task WheelControlB ()`). A task is a recipe: it runs when awaited or passed to runTask, once.
 template <class A, class B>
-class [[nodiscard]] Task {
+class [[nodiscard("a Task does nothing unless you co_await it")]] Task {
  public:
   using promise_type = detail::TaskPromise<A, B>;
   using output_type = A;
@@ -99,14 +99,16 @@ class [[nodiscard]] Task {
     return std::move(*this);
   }
 
-  /// Starts this task inside run `ctx`, reporting into `slot`; returns the frame to resume.
+  /// Starts this task inside run `ctx`, awaited by `caller` (null at the run's top), reporting
+  /// into `slot`; returns the frame to resume.
   std::coroutine_handle<> startIn(detail::ResultSlot<ResultOf<B>>& slot, detail::RunContext<A>* ctx,
-                                  std::coroutine_handle<> continuation, std::int64_t parentRecord) {
+                                  std::coroutine_handle<> continuation, std::int64_t parentRecord,
+                                  const detail::PromiseBase<A>* caller) {
     FROB_ASSERT(handle_, "a Task can run only once (it was already awaited or moved from)");
     auto h = std::exchange(handle_, {});
     slot.frame = h;
     h.promise().slot = &slot;
-    h.promise().begin(ctx, continuation, parentRecord);
+    h.promise().begin(ctx, continuation, parentRecord, caller);
     return h;
   }
 
@@ -219,7 +221,7 @@ struct SubtaskAwaiter {
   template <class P>
   std::coroutine_handle<> await_suspend(std::coroutine_handle<P> parent) {
     PromiseBase<A>& p = parent.promise();
-    return task.startIn(slot, p.ctx, parent, p.recordForChildren());
+    return task.startIn(slot, p.ctx, parent, p.recordForChildren(), &p);
   }
   B await_resume() {
     std::exchange(slot.frame, {}).destroy();
@@ -242,7 +244,7 @@ auto TaskPromise<A, B>::await_transform(Become<A, B>&& b) {
       TaskPromise& p = self.promise();
       p.end(TaskEnd::Replaced, "became " + next.name());
       ResultSlot<R>& mine = *p.slot;
-      std::coroutine_handle<> h = next.startIn(mine, p.ctx, p.continuation, p.parentRecord);
+      std::coroutine_handle<> h = next.startIn(mine, p.ctx, p.continuation, p.parentRecord, p.caller);
       self.destroy();  // destroys this awaiter too: nothing of it is touched after this line
       return h;
     }
@@ -357,6 +359,38 @@ using MkTaskExit = typename EventValue<std::remove_cvref_t<std::tuple_element_t<
 template <class F>
 using MkTaskResult = std::conditional_t<std::is_same_v<MkTaskExit<F>, Unit>, void, MkTaskExit<F>>;
 
+template <class T>
+inline constexpr bool kNever = false;
+
+// Whether mkTask's function returns {behavior, event[, error event]}; if not, a compile error that
+// says what is wrong in the student's words, instead of one from deep inside the library.
+template <class Parts>
+consteval bool checkTaskParts() {
+  if constexpr (!requires { std::tuple_size<Parts>::value; }) {
+    static_assert(kNever<Parts>, "mkTask: the function must return std::pair{behavior, event} "
+                                 "(or std::tuple{behavior, event, error event} for mkTaskE)");
+    return false;
+  } else {
+    using Drives = std::remove_cvref_t<std::tuple_element_t<0, Parts>>;
+    using Ends = std::remove_cvref_t<std::tuple_element_t<1, Parts>>;
+    if constexpr (!BehaviorType<Drives>) {
+      static_assert(kNever<Parts>, "mkTask: the pair's first element must be a behavior, what the task drives "
+                                   "(e.g. wheels(0.1, 0))");
+      return false;
+    } else if constexpr (BehaviorType<Ends> && std::is_same_v<frob::ValueOf<Ends>, bool>) {
+      static_assert(kNever<Parts>, "mkTask: the pair's second element is a Behavior<bool>, a condition, but a task "
+                                   "ends on an event: did you forget predicate(...)?");
+      return false;
+    } else if constexpr (!EventType<Ends>) {
+      static_assert(kNever<Parts>, "mkTask: the pair's second element must be the event that ends the task "
+                                   "(e.g. predicate(frontSonar(r) < 0.5) or after(2.0))");
+      return false;
+    } else {
+      return true;
+    }
+  }
+}
+
 }  // namespace detail
 
 /// The paper's mkTask: `f(ts)` gives a behavior and the event that ends it, as a std::pair.
@@ -365,9 +399,11 @@ using MkTaskResult = std::conditional_t<std::is_same_v<MkTaskExit<F>, Unit>, voi
 template <class F>
   requires std::invocable<F&, const TaskState&>
 [[nodiscard]] auto mkTask(F f, std::source_location loc = std::source_location::current()) {
-  using A = detail::MkTaskOutput<F>;
-  using E = detail::MkTaskExit<F>;
-  return detail::atomicTask<A, detail::MkTaskResult<F>, E>(std::move(f)).at(loc);
+  if constexpr (detail::checkTaskParts<detail::MkTaskParts<F>>()) {
+    using A = detail::MkTaskOutput<F>;
+    using E = detail::MkTaskExit<F>;
+    return detail::atomicTask<A, detail::MkTaskResult<F>, E>(std::move(f)).at(loc);
+  }
 }
 
 /// The paper's mkTaskE: as mkTask, with a third element, an Event<RoboErr> that fails the task.

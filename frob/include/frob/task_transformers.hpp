@@ -60,6 +60,19 @@ struct FirstArg<R (C::*)(Arg)> {
   using type = std::remove_cvref_t<Arg>;
 };
 
+// The output type A of the task `f(Behavior<A>)` makes: from f's parameter, or Wheels (what a
+// robot drives) for a generic lambda such as [](auto mine) { ... }.
+template <class F>
+auto fedOutput() {
+  if constexpr (requires { &F::operator(); }) {
+    return std::type_identity<frob::ValueOf<typename FirstArg<decltype(&F::operator())>::type>>{};
+  } else {
+    return std::type_identity<Wheels>{};
+  }
+}
+template <class F>
+using FedOutput = typename decltype(fedOutput<F>())::type;
+
 // Awaits `body` and gives its result, with Unit for a void task.
 template <class A, class B>
 Task<A, ResultOf<B>> resultOf(Task<A, B> body) {
@@ -135,8 +148,9 @@ template <class A, class B>
   }(std::move(t), seconds).at(loc).named(std::move(name));
 }
 
-/// The paper's withExit: runs `t` until `exit` occurs, then aborts it and returns the event's
-/// value. If `t` ends first, that is an error (RoboErr).
+/// The paper's withExit (an untilB around `t`): runs `t` until `exit` occurs, then aborts it and
+/// returns the event's value, also when `t` ends at that very instant. If `t` ends first, that is
+/// an error (RoboErr).
 template <class X, class A, class B>
 [[nodiscard]] Task<A, X> withExit(Event<X> exit, Task<A, B> t,
                                   std::source_location loc = std::source_location::current()) {
@@ -156,13 +170,16 @@ template <class X, class A, class B>
       if (s.scope != id) throw;
       value = s.value;
     }
+    // A tie goes to the event, as in the paper's untilB: the body's last step was sampled with it.
+    if (!value) value = e.at(*ctx->now);
     if (!value) throw RoboErr("task '" + bodyName + "' ended before its withExit event occurred");
     co_return std::move(*value);
   }(std::move(exit), std::move(t)).at(loc).named(std::move(name));
 }
 
 /// The paper's withB: runs `t` with the behavior `f(state)` started beside it, and returns
-/// `t`'s result paired with that behavior's value at the instant `t` ended.
+/// `t`'s result paired with that behavior's value at the instant `t` ended. `f` gets the task state
+/// of withB's start by value, as mkTask's function does: it stays put while `t`'s subtasks run.
 template <class F, class A, class B>
   requires std::invocable<F&, const TaskState&>
 [[nodiscard]] auto withB(F f, Task<A, B> t, std::source_location loc = std::source_location::current()) {
@@ -170,7 +187,8 @@ template <class F, class A, class B>
   std::string name = "withB(" + t.name() + ")";
   return [](F make, Task<A, B> body) -> Task<A, std::pair<ResultOf<B>, C>> {
     detail::RunContext<A>* ctx = co_await detail::GetContext{};
-    Behavior<C> c = toBehavior(std::invoke(make, static_cast<const TaskState&>(ctx->state)));
+    const TaskState start = ctx->state;  // a copy: the context's state moves on with each subtask
+    Behavior<C> c = toBehavior(std::invoke(make, start));
     c.at(*ctx->now);  // it starts with the task
     detail::ScopeEntry<std::function<void(const Instant&)>> watch(ctx->watchers,
                                                                   [c](const Instant& now) { c.at(now); });
@@ -181,9 +199,10 @@ template <class F, class A, class B>
 
 /// The paper's withMyResult: the task `f(mine)` where `mine` is that task's own output, one
 /// step late (so that a controller can feed back on its output without an algebraic loop).
+/// `f` may be a generic lambda ([](auto mine) { ... }): `mine` is then a Behavior<Wheels>.
 template <class F>
 [[nodiscard]] auto withMyResult(F f, std::source_location loc = std::source_location::current()) {
-  using A = ValueOf<typename detail::FirstArg<decltype(&F::operator())>::type>;
+  using A = detail::FedOutput<F>;
   using B = typename std::invoke_result_t<F&, Behavior<A>>::result_type;
   return [](F make) -> Task<A, B> {
     detail::RunContext<A>* ctx = co_await detail::GetContext{};

@@ -9,6 +9,7 @@
 #include "frob/task_state.hpp"
 
 #include <atomic>
+#include <concepts>
 #include <coroutine>
 #include <cstdint>
 #include <exception>
@@ -17,6 +18,7 @@
 #include <source_location>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -39,22 +41,51 @@ extern std::atomic<long> liveFrames;
 [[nodiscard]] std::string taskWhere(const std::source_location& loc);
 // A readable message for an exception in flight; `why` gives its kind for the timeline.
 [[nodiscard]] std::string describe(const std::exception_ptr& e, TaskEnd* why = nullptr);
+// How deep tasks may await one another in one run; only a recursion that never unwinds gets there.
+inline constexpr int kMaxTaskDepth = 1000;
+// Why a run stopped with tasks nested deeper than `limit`: `chain`, innermost first, names the
+// tasks, and the one most often in it is the recursion, shown with its fix (become).
+[[nodiscard]] std::string tooDeepMessage(const std::vector<std::string>& chain, int limit);
+// The robot error `e` holds, if it is one (only a RoboErr is; a std::logic_error is a bug).
+[[nodiscard]] std::optional<RoboErr> roboErrIn(const std::exception_ptr& e);
 
-// Printable form of a task's result for the timeline.
+namespace print {
+// Matches an enum exactly, so that `os << v` picks it over the enum's promotion to int or char,
+// but loses to an operator<< the enum's author wrote (a function beats a template). Never defined.
+struct NoOperator {};
+template <class E>
+  requires std::is_enum_v<E>
+NoOperator operator<<(std::ostream&, const E&);
+// A value with an operator<< of its own (or the standard one of a number or string).
+template <class R>
+concept Streamable = requires(std::ostream& os, const R& v) {
+  { os << v } -> std::same_as<std::ostream&>;
+};
+}  // namespace print
+
+// "frob::Wheels" from the signature of typeName<frob::Wheels>() (its __PRETTY_FUNCTION__).
+[[nodiscard]] std::string typeNameIn(std::string_view signature);
+template <class T>
+std::string typeName() {
+  return typeNameIn(__PRETTY_FUNCTION__);
+}
+
+// Printable form of a task's result for the timeline, as the type reads: its operator<< (a bool as
+// true or false), its toString, an optional's value or "none", else the type's name.
 template <class R>
 std::string printable(const R& v) {
   if constexpr (std::is_same_v<R, Unit>) {
     return "";
-  } else if constexpr (requires(std::ostream& os) { os << v; }) {
+  } else if constexpr (print::Streamable<R>) {
     std::ostringstream os;
-    os << std::boolalpha << v;  // a bool reads as true or false, as it is written
+    os << std::boolalpha << v;
     return os.str();
   } else if constexpr (requires { toString(v); }) {
     return toString(v);
   } else if constexpr (requires { v.has_value(); *v; }) {
     return v.has_value() ? printable(*v) : std::string("none");
   } else {
-    return "(value)";
+    return typeName<R>();
   }
 }
 
@@ -171,8 +202,13 @@ struct PromiseBase {
     liveFrames.fetch_sub(1, std::memory_order_relaxed);
   }
 
-  // Joins run `c` under the task with record `parent`; `quiet` frames (internal adapters) stay off the timeline.
-  void begin(RunContext<A>* c, std::coroutine_handle<> cont, std::int64_t parent) {
+  // Joins run `c` under the task with record `parent`, awaited by `awaiting` (null at a run's top);
+  // `quiet` frames (internal adapters) stay off the timeline. A chain of awaiting tasks deeper than
+  // kMaxTaskDepth is a recursion that never unwinds: it fails here, before memory runs out.
+  void begin(RunContext<A>* c, std::coroutine_handle<> cont, std::int64_t parent, const PromiseBase* awaiting) {
+    caller = awaiting;
+    depth = caller == nullptr ? 0 : caller->depth + 1;
+    if (depth > kMaxTaskDepth) [[unlikely]] throwTooDeep();
     ctx = c;
     continuation = cont;
     parentRecord = parent;
@@ -195,7 +231,17 @@ struct PromiseBase {
     end(how, std::move(what));
   }
 
+  [[gnu::noinline, noreturn]] void throwTooDeep() const {
+    std::vector<std::string> chain;
+    for (const PromiseBase* p = this; p != nullptr; p = p->caller) {
+      if (!p->quiet) chain.push_back(p->name);
+    }
+    throw FrobError(tooDeepMessage(chain, kMaxTaskDepth));
+  }
+
   RunContext<A>* ctx = nullptr;
+  const PromiseBase* caller = nullptr;  // the task awaiting this one, in the same run
+  int depth = 0;                        // tasks awaiting above this one in its run
   std::coroutine_handle<> continuation;
   std::string name;
   std::string where;
