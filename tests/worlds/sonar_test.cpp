@@ -164,5 +164,29 @@ TEST(Sonar, ARingOfSixteenSeesARoomAllAround) {
   }
 }
 
+// What frob/README.md, robot.hpp and lesson 1 tell students, with the Nomad's defaults: a wall
+// alongside, 0.5 m to the left, echoes in sonar 4 (at 0.5 - 0.23 m from the rim) and in sonars 3
+// and 5 (22.5 degrees off, within the cone and cutoff); the 45-degree sonars 2 and 6 hear nothing.
+TEST(Sonar, TheDiagonalSonarsNeverHearAWallAlongside) {
+  Simulation sim(scene(R"(
+    size = [10, 4]
+    enclosed = false
+    [[wall]]
+    from = [0, 2.5]
+    to = [10, 2.5]
+    [[robot]]
+    start = [5, 2]
+    sonar = { noise = 0 }
+  )"));
+  sim.sense();
+  const std::vector<double>& s = sim.frame(0).sonar;
+  ASSERT_EQ(s.size(), 16u);
+  EXPECT_NEAR(s[4], 0.5 - 0.23, 1e-6);  // Box2D keeps positions in floats
+  EXPECT_LT(s[3], 6.5);
+  EXPECT_LT(s[5], 6.5);
+  EXPECT_EQ(s[2], 6.5);
+  EXPECT_EQ(s[6], 6.5);
+}
+
 }  // namespace
 }  // namespace frob::worlds

@@ -150,3 +150,22 @@ template <class F, class T>
 }
 
 }  // namespace frob
+
+
+// The sonar ring of Robot::sonar, seen from above (16 sonars, 22.5 degrees apart, counter-clockwise
+// from the front; the same picture is in frob/README.md and course/lessons/01_behaviors.md):
+//
+//                      front
+//                 1    0    15
+//             2               14
+//           3                   13
+//      left 4        (o)        12 right
+//           5                   11
+//             6               10
+//                 7    8    9
+//                      back
+//
+// Ranges are measured from the body's surface, 0.15 m to 6.5 m; 6.5 m means no echo. A sonar hears
+// a flat wall only within about 35 degrees of head-on (a 25-degree cone, and a surface met more than
+// 22.5 degrees off its normal reflects the sound away), so the 45-degree sonars (2, 6, 10, 14) never
+// hear a wall parallel to the robot: look with several (nearestEcho). Noise: 1% of the range.
