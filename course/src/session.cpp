@@ -165,7 +165,8 @@ Result<Summary> runSession(const RunDef& def) {
   const RunOutputs& out = def.outputs;
   const bool drawFrames = !out.video.empty() || !out.frames.empty();
   std::shared_ptr<ControllerHost> host;
-  worlds::Run run(def.world, def.options, driverFor(def, host, drawFrames || !out.plot.empty()));
+  // Every step is read as it comes (summary, trace, frames, plots), so only the newest is kept.
+  worlds::Run run(def.world, def.options, driverFor(def, host, drawFrames || !out.plot.empty()), {.window = 1});
   const worlds::Simulation& sim = run.simulation();
   const std::size_t n = sim.robotCount();
 

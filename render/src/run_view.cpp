@@ -148,11 +148,13 @@ void RunView::markTasks(const worlds::Run& run, double now) {
 }
 
 void RunView::update(const worlds::Run& run) {
+  // The instants since the last update are the newest of those the recorder keeps.
   const std::vector<worlds::StepRecord>& steps = run.recorder().steps();
-  FROB_ASSERT(steps.size() >= next_ && (run.recorder().count() == 0 || !steps.empty()),
-              "RunView: the run must keep its steps (RecorderOptions::keepSteps)");
-  if (steps.size() == next_) return;
-  for (; next_ < steps.size(); ++next_) takeInstant(steps[next_]);
+  const auto fresh = static_cast<std::size_t>(run.recorder().count() - taken_);
+  FROB_ASSERT(fresh <= steps.size(), "RunView: the run must keep every step since the last update (RecorderOptions)");
+  if (fresh == 0) return;
+  for (std::size_t k = steps.size() - fresh; k < steps.size(); ++k) takeInstant(steps[k]);
+  taken_ = run.recorder().count();
   const worlds::StepRecord& last = steps.back();
   scene_.time = last.time;
   for (std::size_t i = 0; i < last.robots.size(); ++i) {

@@ -95,6 +95,24 @@ TEST(RunView, DrawsTheRobotAtItsTruePoseAndThePictureWhereTheControllerPutIt) {
   EXPECT_TRUE(near(img.pixel(static_cast<int>(m.x()), static_cast<int>(m.y())), kMagenta)) << "at " << m.transpose();
 }
 
+// Updated after every step, a view needs only the newest step (frob run keeps no more, so its
+// memory stays flat): it sees the same paths and plots as with every step kept.
+TEST(RunView, AWindowOfOneStepGivesTheSameViewAsTheWholeRun) {
+  worlds::Run all(world("maze"), {}, {wanderer}), newest(world("maze"), {}, {wanderer}, {.window = 1});
+  RunView a(all, {.plotSeconds = 10.0}), b(newest, {.plotSeconds = 10.0});
+  while (all.simulation().time() < 10.0) {
+    all.step(), newest.step();
+    a.update(all), b.update(newest);
+  }
+  EXPECT_EQ(newest.recorder().steps().size(), 1u);
+  EXPECT_EQ(b.instants(), a.instants());
+  EXPECT_EQ(b.scene().robots[0].path, a.scene().robots[0].path);
+  ASSERT_EQ(b.plots().plots.size(), a.plots().plots.size());
+  for (std::size_t k = 0; k < a.plots().plots.size(); ++k) {
+    EXPECT_EQ(b.plots().plots[k].series[0].samples, a.plots().plots[k].series[0].samples) << k;
+  }
+}
+
 TEST(RunView, PathsPlotsAndTaskMarksGrowWithTheRunEvenWhenTheTimelineIsDrained) {
   worlds::Run run(world("maze"), {}, {wanderer});
   RunView view(run, {.plotSeconds = 30.0});

@@ -35,6 +35,26 @@ TEST(Recorder, KeepsEveryRobotAtEveryStep) {
   EXPECT_EQ(rec.steps().back().robots[1].picture, disc(0.5));
 }
 
+// A window keeps only the newest steps, the same as a full recording's, and the same hash.
+TEST(Recorder, AWindowKeepsTheNewestStepsOnly) {
+  const char* world = "size = [4, 4]\n[[robot]]\nstart = [1, 1]\n";
+  Simulation a(testing::scene(world)), b(testing::scene(world));
+  Recorder all, newest({.window = 3});
+  const std::vector<Wheels> wheels = {{.forward = 0.2, .turn = 0.3}};
+  for (int k = 0; k < 50; ++k) {
+    for (auto [sim, rec] : {std::pair{&a, &all}, std::pair{&b, &newest}}) {
+      sim->sense();
+      rec->record(*sim, wheels);
+      sim->step(wheels);
+    }
+  }
+  ASSERT_EQ(newest.steps().size(), 3u);
+  EXPECT_EQ(newest.count(), 50);
+  EXPECT_EQ(newest.steps().front().step, 47);
+  EXPECT_EQ(newest.steps().back().robots[0].truePose, all.steps().back().robots[0].truePose);
+  EXPECT_EQ(newest.trajectoryHash(), all.trajectoryHash());
+}
+
 TEST(Recorder, HashIsFnv1aOverThePoseBytesAndKeepsOnlyTheHashWhenAsked) {
   // Expected values from outside this code: FNV-1a's published test vectors ("a", "foobar"), and
   // the hash of the 24 little-endian bytes of (1.5, -2.25, 0.5) as three doubles, computed in Python:

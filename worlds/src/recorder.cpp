@@ -28,6 +28,7 @@ void Recorder::record(const Simulation& sim, std::span<const Wheels> wheels, std
                         .keys = f.keys,
                         .picture = i < pictures.size() ? pictures[i] : Picture{}});
   }
+  if (options_.window != 0 && steps_.size() == options_.window) steps_.erase(steps_.begin());
   steps_.push_back(std::move(s));
 }
 

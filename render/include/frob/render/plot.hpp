@@ -14,6 +14,7 @@ namespace frob::render {
 struct Sample {
   double t = 0.0;      ///< simulated time, seconds
   double value = 0.0;  ///< in the signal's own unit
+  friend bool operator==(const Sample&, const Sample&) = default;
 };
 
 /// A named signal; samples in increasing time.

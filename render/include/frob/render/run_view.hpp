@@ -51,8 +51,9 @@ struct RunViewDef {
 /// update() appends only the new instants, so a long run costs time linear in its steps.
 class RunView {
  public:
-  /// Takes the static world, robot names and specs from `run`. The run must keep its steps
-  /// (RecorderOptions::keepSteps, the default).
+  /// Takes the static world, robot names and specs from `run`. The run must keep every step since
+  /// the last update (RecorderOptions: all of them, the default, or a window of 1 when updated
+  /// after every step).
   explicit RunView(const worlds::Run& run, RunViewDef def = {});
 
   /// Takes in every instant `run` recorded since the last call: poses and paths, and plot samples;
@@ -67,7 +68,7 @@ class RunView {
   /// The names of the values the plotted robot's tasks published, charted or not, in order of appearance.
   [[nodiscard]] const std::vector<std::string>& publishedNames() const { return publishedNames_; }
   /// Instants taken in so far.
-  [[nodiscard]] std::int64_t instants() const { return next_; }
+  [[nodiscard]] std::int64_t instants() const { return taken_; }
 
  private:
   void takeInstant(const worlds::StepRecord& rec);
@@ -76,7 +77,7 @@ class RunView {
   RunViewDef def_;
   FrameScene scene_;
   PlotSet plots_;
-  std::size_t next_ = 0;                // index of the next StepRecord to take in
+  std::int64_t taken_ = 0;              // instants taken in so far
   std::vector<char> pathHeadLoose_;     // per robot: the path's last point is the newest position, not a kept one
   std::vector<char> odomHeadLoose_;     // the same for the odometry path
   int frontSonar_ = -1;                 // index of the plotted robot's front sonar

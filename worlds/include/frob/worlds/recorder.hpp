@@ -34,7 +34,10 @@ struct StepRecord {
 
 /// What a Recorder keeps.
 struct RecorderOptions {
-  bool keepSteps = true;  ///< keep every StepRecord; false keeps only the hash (long runs, benchmarks)
+  bool keepSteps = true;  ///< keep StepRecords; false keeps only the hash (long runs, benchmarks)
+  /// Keep only the newest `window` StepRecords (0: every one). A run whose readers take each step
+  /// as it comes (frob run: its video, plots and trace) needs 1, and its memory stays flat.
+  std::size_t window = 0;
 };
 
 /// FNV-1a over the exact bytes of a pose's x, y and heading (doubles), continuing from `hash`.
@@ -48,7 +51,7 @@ class Recorder {
   /// Appends the current instant of `sim` with the chosen `wheels` (one per robot) and optional
   /// `pictures` (one per robot, or empty), and folds every true pose into the trajectory hash.
   void record(const Simulation& sim, std::span<const Wheels> wheels, std::span<const Picture> pictures = {});
-  /// Every recorded instant (empty when keepSteps is false).
+  /// The recorded instants: every one, the newest `window`, or none (keepSteps false).
   [[nodiscard]] const std::vector<StepRecord>& steps() const { return steps_; }
   /// The last recorded instant, e.g. to attach pictures; only when steps() is not empty.
   [[nodiscard]] StepRecord& last() { return steps_.back(); }
