@@ -9,13 +9,13 @@
 //   build/tests/bench/frob_core_bench --benchmark_repetitions=5
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/simulation.hpp"
+#include "cpu_figures.hpp"
 #include "wall_follower.hpp"
 
 #include <benchmark/benchmark.h>
 
 #include <array>
 #include <cstdio>
-#include <map>
 #include <string>
 
 namespace {
@@ -140,21 +140,11 @@ void BM_UntilBSwitch(benchmark::State& state) {
 BENCHMARK(BM_UntilBSwitch);
 
 // Prints the usual table, then both pairs and the controller's overhead against a simulator step.
-class OverheadReporter : public benchmark::ConsoleReporter {
+class OverheadReporter : public bench::CpuFiguresReporter {
  public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& r : runs) {
-      if (r.run_type == Run::RT_Aggregate && r.aggregate_name != "median") continue;
-      if (r.error_occurred || r.iterations == 0) continue;
-      // CPU time: these are single-threaded, and on a shared machine the wall clock also counts the
-      // time the process waited for a core.
-      ns_[r.run_name.str()] = r.GetAdjustedCPUTime() * 1e9 / benchmark::GetTimeUnitMultiplier(r.time_unit);
-    }
-  }
   void Finalize() override {
     ConsoleReporter::Finalize();
-    auto ns = [&](const char* name) { return ns_.count(name) ? ns_.at(name) : -1.0; };
+    auto ns = [&](const char* name) { return seconds(name) < 0 ? -1.0 : seconds(name) * 1e9; };
     const double frob = ns("BM_FrobWallFollowerStep"), hand = ns("BM_HandWrittenWallFollowerStep");
     const double frobOnly = ns("BM_FrobWallFollowerControllerOnly"), handOnly = ns("BM_HandWrittenWallFollowerControllerOnly");
     const double sim = ns("BM_OneRobotSimulatorStep");
@@ -166,9 +156,6 @@ class OverheadReporter : public benchmark::ConsoleReporter {
     std::printf("  that overhead is %.2f%% of a one-robot simulator step (%.1f us)\n",
                 100.0 * (frobOnly - handOnly) / sim, sim / 1e3);
   }
-
- private:
-  std::map<std::string, double> ns_;
 };
 
 }  // namespace

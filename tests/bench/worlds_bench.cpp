@@ -7,6 +7,7 @@
 // what each side computes, and gives the fair ratio as the headline.
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/simulation.hpp"
+#include "cpu_figures.hpp"
 #include "ray_caster.hpp"  // private header of worlds/, for the ray-cast micro benchmark
 
 #include <benchmark/benchmark.h>
@@ -18,7 +19,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -322,18 +322,8 @@ BENCHMARK(RayCastCone);
 // Prints the usual console table, then every pairing of ours with Enki and what each side computes.
 // The pairings use CPU time: every run here is single-threaded, and on a shared machine the wall
 // clock also counts the time a process waited for a core.
-class PairingReporter : public benchmark::ConsoleReporter {
+class PairingReporter : public bench::CpuFiguresReporter {
  public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& r : runs) {
-      // One figure per benchmark: the run itself, or the median when repetitions are asked for.
-      if (r.run_type == Run::RT_Aggregate && r.aggregate_name != "median") continue;
-      if (r.error_occurred || r.iterations == 0) continue;
-      const double seconds = r.GetAdjustedCPUTime() / benchmark::GetTimeUnitMultiplier(r.time_unit);
-      rtf_[r.run_name.str()] = kDt / seconds;
-    }
-  }
   void Finalize() override {
     ConsoleReporter::Finalize();
     struct Pairing {
@@ -359,8 +349,8 @@ class PairingReporter : public benchmark::ConsoleReporter {
     std::printf("  %-7s %-38s %9s %12s %12s %8s\n", "robots", "rays per robot", "ours", "Enki walls", "Enki 1 obj",
                 "ratio");
     auto find = [&](const std::string& name) {
-      auto it = rtf_.find(name + "/real_time");
-      return it == rtf_.end() ? -1.0 : it->second;
+      const double s = seconds(name + "/real_time");
+      return s > 0 ? kDt / s : -1.0;
     };
     double headline = -1;
     for (const Pairing& p : pairs) {
@@ -376,9 +366,6 @@ class PairingReporter : public benchmark::ConsoleReporter {
       std::printf("Headline (fair): 100 robots, 8 x 3 rays each, against Enki's faster layout: ours %.1fx as fast\n",
                   headline);
   }
-
- private:
-  std::map<std::string, double> rtf_;  // simulated seconds per CPU second
 };
 
 }  // namespace
