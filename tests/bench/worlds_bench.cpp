@@ -96,6 +96,64 @@ BENCHMARK(Ours)->Name("OursFixedSteps")->ArgNames({"robots", "sonars", "rays", "
     ->Args({1, 16, 5, 1})->Args({100, 16, 5, 1})->Iterations(300)
     ->UseRealTime()->Unit(benchmark::kMicrosecond);
 
+// A 100 x 100 m hall with a 10 x 10 grid of 2 x 2 m blocks, and `robots` robots between them.
+WorldDef hallWith(int robots) {
+  WorldDef w = maze();
+  const RobotDef proto = w.robots.at(0);
+  w.size = {100, 100};
+  w.walls.clear();
+  for (int i = 0; i < 10; ++i) {
+    for (int j = 0; j < 10; ++j) w.walls.push_back(rectangleWall(Point2(9 + 10 * i, 9 + 10 * j), Point2(11 + 10 * i, 11 + 10 * j)));
+  }
+  w.robots.clear();
+  for (int k = 0; k < robots; ++k) {  // a 32 x 32 grid of 3 m cells, clear of the blocks
+    RobotDef r = proto;
+    r.start = {.position = Point2(1.5 + 3.0 * (k % 32) + 0.3, 1.5 + 3.0 * (k / 32) + 0.3), .heading = 0.7 * k};
+    w.robots.push_back(r);
+  }
+  return w;
+}
+
+// How the cost grows with the robot count (the Nomad's 16 sonars of 5 rays each), on both cores.
+void Scale(benchmark::State& state) {
+  Simulation sim(hallWith(static_cast<int>(state.range(0))), {.dt = kDt, .threads = 2});
+  std::vector<Wheels> wheels(sim.robotCount());
+  auto step = [&] {
+    sim.sense();
+    for (std::size_t i = 0; i < wheels.size(); ++i) wheels[i] = wander(sim.frame(i));
+    sim.step(wheels);
+  };
+  for (int k = 0; k < kWarmUpSteps; ++k) step();
+  for (auto _ : state) step();
+  state.counters["rtf"] = benchmark::Counter(kDt, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(Scale)->ArgName("robots")->Arg(1)->Arg(10)->Arg(100)->Arg(1000)->UseRealTime();  // target: 1000 at >= 5x
+
+// A large map: 10,000 short walls, one every metre of a 100 x 100 m floor (a cluttered building
+// floor plan has as many), and one robot among them.
+void LargeMap(benchmark::State& state) {
+  WorldDef w = hallWith(1);
+  w.walls.clear();
+  for (int i = 0; i < 100; ++i) {
+    for (int j = 0; j < 100; ++j) w.walls.push_back(segmentWall(Point2(i + 0.3, j + 0.1), Point2(i + 0.7, j + 0.1)));
+  }
+  w.robots[0].start.position = Point2(50.5, 50.55);
+  Simulation sim(w, {.dt = kDt});
+  std::vector<Wheels> wheels(1);
+  for (int k = 0; k < kWarmUpSteps; ++k) {
+    sim.sense();
+    sim.step(wheels);
+  }
+  for (auto _ : state) {
+    sim.sense();
+    wheels[0] = wander(sim.frame(0));
+    sim.step(wheels);
+  }
+  state.counters["walls"] = static_cast<double>(w.walls.size());
+  state.counters["rtf"] = benchmark::Counter(kDt, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(LargeMap);  // target: >= 2000x with ~10,000 walls
+
 // Enki, the same maze in centimetres, configured as its users would for speed.
 //
 // What the e-pucks sense (range(1)):
