@@ -25,9 +25,13 @@ std::optional<std::int64_t> TimerNode::compute(const Instant& now) {
   auto due = [this](std::int64_t k) { return static_cast<double>(k) * period_; };
   auto reached = [&](std::int64_t k) { return local + 1e-9 * (1.0 + due(k)) >= due(k); };
   if (!reached(fired_ + 1)) return std::nullopt;
-  // Every period elapsed since the last occurrence counts, however many fit in one step.
-  std::int64_t k = std::max(fired_ + 1, static_cast<std::int64_t>(std::floor(local / period_)));
-  if (reached(k + 1)) ++k;
+  // Every period elapsed since the last occurrence counts, however many fit in one step (a one-shot
+  // timer, whose period may be 0, occurs once).
+  std::int64_t k = fired_ + 1;
+  if (repeat_) {
+    k = std::max(k, static_cast<std::int64_t>(std::floor(local / period_)));
+    if (reached(k + 1)) ++k;
+  }
   fired_ = k;
   return fired_;
 }
