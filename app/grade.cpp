@@ -116,20 +116,27 @@ int gradeCommand(const GradeArgs& a) {
   Result<std::string> secret = readSecret(a.secret);
   if (!secret) return fail(secret.error(), 2);
   if (rubric.value().needsSecret() && secret.value().empty() && !a.visibleOnly) {
-    return fail("this rubric draws hidden seeds from the instructor's secret: give --secret FILE or set FROB_GRADE_SECRET "
-                "(or grade only the visible checks with --visible-only)", 2);
+    return fail(
+        "this rubric draws hidden seeds from the instructor's secret: give --secret FILE or set FROB_GRADE_SECRET "
+        "(or grade only the visible checks with --visible-only)",
+        2);
   }
   if (!a.gradescopeZip.empty()) {
-    if (Status s = course::writeGradescopeZip({.rubric = rubricFile.value(), .assignment = fs::path(rubricFile.value()).parent_path().filename().string(),
-                                                .secret = secret.value()}, a.gradescopeZip); !s) {
+    if (Status s = course::writeGradescopeZip(
+            {.rubric = rubricFile.value(), .assignment = fs::path(rubricFile.value()).parent_path().filename().string(), .secret = secret.value()},
+            a.gradescopeZip);
+        !s) {
       return fail(s.error());
     }
     std::printf("wrote %s: upload it as the assignment's autograder on Gradescope\n", a.gradescopeZip.c_str());
     return 0;
   }
   if (a.submission.empty()) return fail("which submission? frob grade ASSIGNMENT SUBMISSION.cpp (or a folder of them)", 2);
-  course::GradeDef def{.rubric = std::move(rubric.value()), .assignment = fs::path(a.assignment).filename().string(),
-                       .secret = secret.value(), .visibleOnly = a.visibleOnly, .logs = a.logs};
+  course::GradeDef def{.rubric = std::move(rubric.value()),
+                       .assignment = fs::path(a.assignment).filename().string(),
+                       .secret = secret.value(),
+                       .visibleOnly = a.visibleOnly,
+                       .logs = a.logs};
   if (def.assignment == "rubric.toml") def.assignment = fs::path(a.assignment).parent_path().filename().string();
 
   if (!fs::is_directory(a.submission)) {

@@ -14,6 +14,7 @@
 #include "progress.hpp"
 
 #include <CLI/CLI.hpp>
+
 #include <unistd.h>
 
 #include <chrono>
@@ -77,8 +78,7 @@ Result<course::CompiledController> compileController(const std::string& name, bo
 }
 
 // The controller `name`, described by a sandboxed host (isolated) or loaded into this process.
-Result<course::LoadedController> loadController(const std::string& name, const std::optional<course::IsolationDef>& isolation,
-                                                bool quiet) {
+Result<course::LoadedController> loadController(const std::string& name, const std::optional<course::IsolationDef>& isolation, bool quiet) {
   Result<course::CompiledController> c = compileController(name, quiet);
   if (!c) return c.status();
   if (!isolation) return course::loadInProcess(c.value());
@@ -115,8 +115,7 @@ int runCommand(RunArgs a) {
     if (!a.quiet) std::fprintf(stderr, "frob: no controller given, so here is the demo: the paper's BUG algorithm (course/examples/06_bug.cpp)\n");
   }
   // The demo's video plays 4 times faster than the robot drives: two minutes of BUG in half a minute.
-  course::RunDef def{.options = {.dt = a.dt, .seed = a.seed}, .outputs = a.outputs, .fps = a.fps,
-                     .speed = a.speed.value_or(demo ? 4.0 : 1.0)};
+  course::RunDef def{.options = {.dt = a.dt, .seed = a.seed}, .outputs = a.outputs, .fps = a.fps, .speed = a.speed.value_or(demo ? 4.0 : 1.0)};
   if (a.isolate) def.isolation.emplace();
   for (const std::string& name : a.controllers) {
     Result<course::LoadedController> c = loadController(name, def.isolation, a.quiet);
@@ -198,7 +197,8 @@ int generateCommand(const std::string& kindName, std::uint64_t seed, const std::
 
 int listCommand() {
   std::cout << "Worlds (frob run --world NAME, frob render NAME):\n";
-  for (const worlds::WorldEntry& w : worlds::referenceWorlds()) std::printf("  %-10s %s\n", std::string(w.name).c_str(), std::string(w.description).c_str());
+  for (const worlds::WorldEntry& w : worlds::referenceWorlds())
+    std::printf("  %-10s %s\n", std::string(w.name).c_str(), std::string(w.description).c_str());
   // Where the examples and handouts are: in the source tree, or in an installed prefix's share/frob.
   const frob::Layout& files = frob::layout();
   const auto shown = [&](const fs::path& dir) { return (files.installed ? dir : fs::relative(dir, files.sourceTree)).string(); };
@@ -218,8 +218,7 @@ int listCommand() {
 }  // namespace
 
 // Where a student looks for the world format: the help of every command that takes a world.
-constexpr const char* kWorldHelp =
-    "Reference world name (frob list), or a world file: TOML, its format in worlds/data/README.md";
+constexpr const char* kWorldHelp = "Reference world name (frob list), or a world file: TOML, its format in worlds/data/README.md";
 
 }  // namespace frob::app
 
@@ -227,8 +226,8 @@ int main(int argc, char** argv) {
   CLI::App cli{"Frob Sandbox: functional reactive robot controllers, simulated headlessly", "frob"};
   cli.set_version_flag("--version", [] {
     const frob::Layout& files = frob::layout();
-    return std::string("frob ") + frob::version() + "\ncompiles controllers with " + frob::course::compilerDescription() +
-           "\nfiles in " + files.prefix.string() + (files.installed ? " (installed)" : " (the source tree; a build, not installed)");
+    return std::string("frob ") + frob::version() + "\ncompiles controllers with " + frob::course::compilerDescription() + "\nfiles in " +
+           files.prefix.string() + (files.installed ? " (installed)" : " (the source tree; a build, not installed)");
   });
   cli.footer(frob::app::kExamples);
   cli.require_subcommand(0, 1);
@@ -244,16 +243,20 @@ int main(int argc, char** argv) {
   runCmd->add_option("--video", run.outputs.video, "Write an MP4 video of the run");
   runCmd->add_option("--frames", run.outputs.frames, "Write one PNG per video frame into this folder");
   runCmd->add_option("--plot", run.outputs.plot, "Write plots of the run (sonar, goal distance, wheels, tasks) as PNG");
-  runCmd->add_option("--plot-signals", run.outputs.plotSignals,
-                     "More charts in --plot and --video: s0 to s15 for a sonar, or the name of a value a task "
-                     "publishes with withPlot (default: every published value), e.g. s4,left")
+  runCmd
+      ->add_option("--plot-signals", run.outputs.plotSignals,
+                   "More charts in --plot and --video: s0 to s15 for a sonar, or the name of a value a task "
+                   "publishes with withPlot (default: every published value), e.g. s4,left")
       ->delimiter(',');
   runCmd->add_option("--trace", run.outputs.trace, "Write a CSV row per robot per step");
   runCmd->add_option("--timeline", run.outputs.timeline, "Write the task timeline as JSON for ui.perfetto.dev or chrome://tracing");
   runCmd->add_option("--fps", run.fps, "Frames per second of video and frames")->capture_default_str()->check(CLI::Range(1, 240));
-  runCmd->add_option("--speed", run.speed, "The video plays this many times faster than simulated time (default 1; the demo 4)")->check(CLI::Range(0.1, 100.0));
+  runCmd->add_option("--speed", run.speed, "The video plays this many times faster than simulated time (default 1; the demo 4)")
+      ->check(CLI::Range(0.1, 100.0));
   runCmd->add_option("--size", run.size, "Frame size, WIDTHxHEIGHT")->capture_default_str();
-  runCmd->add_option("--view", run.view, "top (from above) or chase (behind the first robot)")->capture_default_str()->check(CLI::IsMember({"top", "chase"}));
+  runCmd->add_option("--view", run.view, "top (from above) or chase (behind the first robot)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"top", "chase"}));
   runCmd->add_flag("--json", run.json, "Print the summary as JSON");
   runCmd->add_flag("--isolate,!--no-isolate", run.isolate,
                    "Run the controllers in a sandboxed process of their own (the default); --no-isolate runs them "

@@ -50,34 +50,34 @@ void noteProcess() {
 }
 }  // namespace
 
-#define FROB_GUARD_OPEN(name)                                                      \
-  extern "C" int name(const char* path, int flags, ...) {                          \
-    static const auto next = real<int (*)(const char*, int, ...)>(#name);          \
-    va_list args;                                                                  \
-    va_start(args, flags);                                                         \
-    const mode_t mode = modeOf(flags, args);                                       \
-    va_end(args);                                                                  \
-    const int fd = next(path, flags, mode);                                        \
-    if (fd < 0) noteRefusal(path, writes(flags));                                  \
-    return fd;                                                                     \
+#define FROB_GUARD_OPEN(name)                                             \
+  extern "C" int name(const char* path, int flags, ...) {                 \
+    static const auto next = real<int (*)(const char*, int, ...)>(#name); \
+    va_list args;                                                         \
+    va_start(args, flags);                                                \
+    const mode_t mode = modeOf(flags, args);                              \
+    va_end(args);                                                         \
+    const int fd = next(path, flags, mode);                               \
+    if (fd < 0) noteRefusal(path, writes(flags));                         \
+    return fd;                                                            \
   }
-#define FROB_GUARD_OPENAT(name)                                                    \
-  extern "C" int name(int dir, const char* path, int flags, ...) {                 \
-    static const auto next = real<int (*)(int, const char*, int, ...)>(#name);     \
-    va_list args;                                                                  \
-    va_start(args, flags);                                                         \
-    const mode_t mode = modeOf(flags, args);                                       \
-    va_end(args);                                                                  \
-    const int fd = next(dir, path, flags, mode);                                   \
-    if (fd < 0) noteRefusal(path, writes(flags));                                  \
-    return fd;                                                                     \
+#define FROB_GUARD_OPENAT(name)                                                \
+  extern "C" int name(int dir, const char* path, int flags, ...) {             \
+    static const auto next = real<int (*)(int, const char*, int, ...)>(#name); \
+    va_list args;                                                              \
+    va_start(args, flags);                                                     \
+    const mode_t mode = modeOf(flags, args);                                   \
+    va_end(args);                                                              \
+    const int fd = next(dir, path, flags, mode);                               \
+    if (fd < 0) noteRefusal(path, writes(flags));                              \
+    return fd;                                                                 \
   }
-#define FROB_GUARD_FOPEN(name)                                                     \
-  extern "C" FILE* name(const char* path, const char* mode) {                      \
-    static const auto next = real<FILE* (*)(const char*, const char*)>(#name);     \
-    FILE* f = next(path, mode);                                                    \
-    if (f == nullptr) noteRefusal(path, writes(mode));                             \
-    return f;                                                                      \
+#define FROB_GUARD_FOPEN(name)                                                 \
+  extern "C" FILE* name(const char* path, const char* mode) {                  \
+    static const auto next = real<FILE* (*)(const char*, const char*)>(#name); \
+    FILE* f = next(path, mode);                                                \
+    if (f == nullptr) noteRefusal(path, writes(mode));                         \
+    return f;                                                                  \
   }
 
 FROB_GUARD_OPEN(open)
@@ -99,13 +99,13 @@ extern "C" FILE* popen(const char* command, const char* mode) {
   return next(command, mode);
 }
 
-#define FROB_GUARD_SPAWN(name)                                                                           \
-  extern "C" int name(pid_t* pid, const char* path, const posix_spawn_file_actions_t* actions,          \
-                      const posix_spawnattr_t* attributes, char* const argv[], char* const envp[]) {   \
-    static const auto next = real<int (*)(pid_t*, const char*, const posix_spawn_file_actions_t*,      \
-                                          const posix_spawnattr_t*, char* const*, char* const*)>(#name); \
-    noteProcess();                                                                                     \
-    return next(pid, path, actions, attributes, argv, envp);                                           \
+#define FROB_GUARD_SPAWN(name)                                                                                                              \
+  extern "C" int name(pid_t* pid, const char* path, const posix_spawn_file_actions_t* actions, const posix_spawnattr_t* attributes,         \
+                      char* const argv[], char* const envp[]) {                                                                             \
+    static const auto next =                                                                                                                \
+        real<int (*)(pid_t*, const char*, const posix_spawn_file_actions_t*, const posix_spawnattr_t*, char* const*, char* const*)>(#name); \
+    noteProcess();                                                                                                                          \
+    return next(pid, path, actions, attributes, argv, envp);                                                                                \
   }
 FROB_GUARD_SPAWN(posix_spawn)
 FROB_GUARD_SPAWN(posix_spawnp)

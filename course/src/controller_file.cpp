@@ -57,8 +57,8 @@ std::string demangled(std::string message) {
 // The folders a compile may read: the system's, the include folders its flags name, and the
 // precompiled header.
 std::vector<std::string> compilerReads(const CompilerSetup& setup, bool pch) {
-  std::vector<std::string> read{"/usr", "/lib", "/lib64", "/etc/ld.so.cache", "/etc/os-release", "/etc/debian_version",
-                                "/etc/lsb-release", "/dev/null"};
+  std::vector<std::string> read{"/usr",     "/lib", "/lib64", "/etc/ld.so.cache", "/etc/os-release", "/etc/debian_version", "/etc/lsb-release",
+                                "/dev/null"};
   for (const std::string& f : setup.flags) {
     if (f.rfind("-I", 0) == 0 && f.size() > 2) read.push_back(f.substr(2));
   }
@@ -134,7 +134,9 @@ Result<LoadedController> loadInProcess(const CompiledController& compiled) {
 
 Result<CompiledController> compileControllerFile(const fs::path& source, const CompilerSetup& setup, std::string* messages) {
   std::ifstream in(source, std::ios::binary);
-  if (!in || fs::is_directory(source)) return Status::failure("controller file '" + source.string() + "' cannot be read: " + (fs::exists(source) ? "not a readable file" : "it does not exist"));
+  if (!in || fs::is_directory(source))
+    return Status::failure("controller file '" + source.string() +
+                           "' cannot be read: " + (fs::exists(source) ? "not a readable file" : "it does not exist"));
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 
   // The cache key: the source, how it is compiled, and the headers and program it is compiled for.
@@ -174,8 +176,10 @@ Result<CompiledController> compileControllerFile(const fs::path& source, const C
   const fs::path absolute = fs::absolute(source);
   const fs::path partial = fs::path(build) / "module.so";
   JailDef jail{.command = {onPath(setup.compiler)},
-               .limits = {.cpuSeconds = static_cast<std::uint64_t>(setup.seconds), .memoryBytes = setup.memoryBytes,
-                          .fileBytes = 512ULL << 20, .openFiles = 256},
+               .limits = {.cpuSeconds = static_cast<std::uint64_t>(setup.seconds),
+                          .memoryBytes = setup.memoryBytes,
+                          .fileBytes = 512ULL << 20,
+                          .openFiles = 256},
                .files = {.read = compilerReads(setup, pch), .write = {build}, .execute = {"/usr", "/bin"}},
                .cwd = fs::current_path().string(),  // so that its messages name the file as it was given
                .env = {"PATH=/usr/bin:/bin", "TMPDIR=" + build},

@@ -11,7 +11,6 @@ namespace frob::course {
 
 namespace {
 
-
 constexpr double kPressedFor = 1.0;  // seconds of pushing before it counts
 constexpr double kQuickTask = 1e-9;  // a task that ends at the instant it starts
 
@@ -68,8 +67,7 @@ void Diagnosis::observe(std::size_t i, double time, const Pose2& pose, const Whe
   const double radius = 0.23;
 
   // Pushing: at least 5 cm/s commanded ahead, under a fifth of it made good, within 3 cm of a wall.
-  const bool pressed = w.lastCommand.forward > 0.05 && forward < 0.2 * w.lastCommand.forward &&
-                       impl_->index.distance(pose.position) < radius + 0.03;
+  const bool pressed = w.lastCommand.forward > 0.05 && forward < 0.2 * w.lastCommand.forward && impl_->index.distance(pose.position) < radius + 0.03;
   if (pressed) {
     if (w.pressedSince < 0) w.pressedSince = time;
     if (time - w.pressedSince >= kPressedFor && w.firstPressedAt < 0) {
@@ -112,12 +110,14 @@ std::vector<std::string> Diagnosis::hints(std::size_t i, const std::string& name
     out.push_back(name + " never moved: its controller commanded no motion at all (every wheel command was {0, 0})");
   }
   if (w.firstPressedAt >= 0) {
-    std::string hint = format("%s pushed against a wall for %.0f s of the run while commanding forward speed (the first time from %.1f s at (%.1f, %.1f))",
-                              name.c_str(), w.pressedTotal, w.firstPressedAt, w.firstPressedWhere.x(), w.firstPressedWhere.y());
+    std::string hint =
+        format("%s pushed against a wall for %.0f s of the run while commanding forward speed (the first time from %.1f s at (%.1f, %.1f))",
+               name.c_str(), w.pressedTotal, w.firstPressedAt, w.firstPressedWhere.x(), w.firstPressedWhere.y());
     if (w.sonarWhilePressed >= w.maxRange) {
-      hint += format("; its front sonar read %.1f m (no echo) there: a sonar misses a wall met at a grazing angle, so look ahead "
-                     "with several sonars (the nearest echo of sonars 14, 15, 0, 1 and 2) and end the task on the bumper too",
-                     w.sonarWhilePressed);
+      hint += format(
+          "; its front sonar read %.1f m (no echo) there: a sonar misses a wall met at a grazing angle, so look ahead "
+          "with several sonars (the nearest echo of sonars 14, 15, 0, 1 and 2) and end the task on the bumper too",
+          w.sonarWhilePressed);
     } else {
       hint += format("; its front sonar read %.2f m there: the task drove on regardless, so end it on that reading or on the bumper",
                      w.sonarWhilePressed);
@@ -125,22 +125,24 @@ std::vector<std::string> Diagnosis::hints(std::size_t i, const std::string& name
     out.push_back(hint);
   }
   if (w.longestSpin >= 4 * pi) {
-    out.push_back(format("%s spun in place %.0f times from %.1f s at (%.1f, %.1f): a turn that waits for a condition that never comes "
-                         "(a sonar that cannot see the way out?)",
-                         name.c_str(), w.longestSpin / (2 * pi), w.longestSpinAt, w.longestSpinWhere.x(), w.longestSpinWhere.y()));
+    out.push_back(
+        format("%s spun in place %.0f times from %.1f s at (%.1f, %.1f): a turn that waits for a condition that never comes "
+               "(a sonar that cannot see the way out?)",
+               name.c_str(), w.longestSpin / (2 * pi), w.longestSpinAt, w.longestSpinWhere.x(), w.longestSpinWhere.y()));
   }
   if (w.quickTotal >= 20) {
     std::string names;
     for (const auto& [task, count] : w.quickEnds) names += (names.empty() ? "'" : ", '") + task + "'";
-    out.push_back(format("%s's tasks ended at the very instant they began %d times (%s): each one's event had already "
-                         "occurred when it started, so the chain went round on the spot; make a task's end condition differ "
-                         "from the one that starts it",
-                         name.c_str(), w.quickTotal, names.c_str()));
+    out.push_back(
+        format("%s's tasks ended at the very instant they began %d times (%s): each one's event had already "
+               "occurred when it started, so the chain went round on the spot; make a task's end condition differ "
+               "from the one that starts it",
+               name.c_str(), w.quickTotal, names.c_str()));
   }
   for (const TaskRecord& t : running) {
     if (t.depth > 0 && t.start <= 0.1 * end && end > 5.0) {
-      out.push_back(format("%s's task '%s' ran from %.1f s to the end of the run: the event that should end it never occurred",
-                           name.c_str(), t.name.c_str(), t.start));
+      out.push_back(format("%s's task '%s' ran from %.1f s to the end of the run: the event that should end it never occurred", name.c_str(),
+                           t.name.c_str(), t.start));
     }
   }
   return out;

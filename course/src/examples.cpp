@@ -15,7 +15,8 @@ std::vector<Example> examples() {
   for (const fs::directory_entry& e : fs::directory_iterator(layout().examples, ec)) {
     const std::string stem = e.path().stem().string();
     if (e.path().extension() != ".cpp" || stem.size() < 4 || !std::isdigit(static_cast<unsigned char>(stem[0])) ||
-        !std::isdigit(static_cast<unsigned char>(stem[1]))) continue;
+        !std::isdigit(static_cast<unsigned char>(stem[1])))
+      continue;
     list.push_back({stem, e.path(), layout().exampleModules / (stem + ".so")});
   }
   std::sort(list.begin(), list.end(), [](const Example& a, const Example& b) { return a.name < b.name; });

@@ -15,8 +15,8 @@ using worlds::WorldDef;
 
 namespace {
 
-constexpr double kRadius = 0.23;     // the Nomad's body, which the promises are kept for
-constexpr double kClearance = 0.1;   // around the body at the start and the goal
+constexpr double kRadius = 0.23;        // the Nomad's body, which the promises are kept for
+constexpr double kClearance = 0.1;      // around the body at the start and the goal
 constexpr double kTrapClearance = 1.5;  // round an obstacle field's L trap: more than a wall follower's reach
 
 // SplitMix64, with reals from the top 53 bits: the same numbers from every standard library.
@@ -95,12 +95,12 @@ double gapBetween(const WallDef& a, const WallDef& b) {
 }
 
 WorldDef obstacles(Random& r, std::uint64_t seed) {
-  WorldDef w = base("Generated obstacle field: blocks, pillars and a trap between the start and the goal", {15, 15}, seed,
-                    {1.5, 1.5}, 45, {13.5, 13.5});
+  WorldDef w =
+      base("Generated obstacle field: blocks, pillars and a trap between the start and the goal", {15, 15}, seed, {1.5, 1.5}, 45, {13.5, 13.5});
   const double apart = 2 * kRadius + 0.3;  // a wall follower passes between two obstacles without touching either
   std::vector<WallDef> placed;
   std::optional<WallDef> trapArea;  // the square an L spans: the trap stands alone, with nothing in it or near it
-  if (r.next() % 2 == 0) {  // an L whose inside corner faces the start: the trap BUG must leave
+  if (r.next() % 2 == 0) {          // an L whose inside corner faces the start: the trap BUG must leave
     const Point2 c = Point2(r.uniform(5.5, 9.5), r.uniform(5.5, 9.5));
     const double s = r.uniform(1.2, 1.8);
     placed.push_back(worlds::polylineWall({c + Point2(-s, s), c + Point2(s, s), c + Point2(s, -s)}));
@@ -157,8 +157,10 @@ WorldDef maze(Random& r, std::uint64_t seed) {
   for (int y = 0; y < rows; ++y) {
     for (int x = 0; x < cols; ++x) {
       const int c = y * cols + x;
-      if (x + 1 < cols && !eastOpen[c]) w.walls.push_back(worlds::segmentWall(Point2((x + 1) * cell, y * cell), Point2((x + 1) * cell, (y + 1) * cell)));
-      if (y + 1 < rows && !northOpen[c]) w.walls.push_back(worlds::segmentWall(Point2(x * cell, (y + 1) * cell), Point2((x + 1) * cell, (y + 1) * cell)));
+      if (x + 1 < cols && !eastOpen[c])
+        w.walls.push_back(worlds::segmentWall(Point2((x + 1) * cell, y * cell), Point2((x + 1) * cell, (y + 1) * cell)));
+      if (y + 1 < rows && !northOpen[c])
+        w.walls.push_back(worlds::segmentWall(Point2(x * cell, (y + 1) * cell), Point2((x + 1) * cell, (y + 1) * cell)));
     }
   }
   return w;
@@ -167,8 +169,7 @@ WorldDef maze(Random& r, std::uint64_t seed) {
 WorldDef rooms(Random& r, std::uint64_t seed) {
   const double width = r.uniform(9, 12), height = r.uniform(7, 9);
   const double split = r.uniform(0.4, 0.6) * width, across = r.uniform(0.4, 0.6) * height;
-  WorldDef w = base("Generated floor of rooms with doorways and furniture", {width, height}, seed, {1.0, 1.0}, 0,
-                    {width - 1.0, height - 1.0});
+  WorldDef w = base("Generated floor of rooms with doorways and furniture", {width, height}, seed, {1.0, 1.0}, 0, {width - 1.0, height - 1.0});
   // A wall down the middle and one across each half, each with a doorway of 1.2 to 1.6 m.
   const auto wallWithDoor = [&](const Point2& a, const Point2& b) {
     const double length = (b - a).norm(), door = r.uniform(1.2, 1.6), at = r.uniform(0.6, length - door - 0.6);
@@ -194,15 +195,15 @@ WorldDef rooms(Random& r, std::uint64_t seed) {
 
 WorldDef loop(Random& r, std::uint64_t seed) {
   const double width = r.uniform(10, 14), height = r.uniform(7, 10), corridor = r.uniform(1.2, 2.0);
-  WorldDef w = base("Generated corridor loop round a block, with convex and concave corners", {width, height}, seed,
-                    {width / 2, corridor / 2}, 0, {width / 2, height - corridor / 2});
+  WorldDef w = base("Generated corridor loop round a block, with convex and concave corners", {width, height}, seed, {width / 2, corridor / 2}, 0,
+                    {width / 2, height - corridor / 2});
   // The block, as a closed outline with a notch in its bottom side (its concave corners).
   const Point2 lo(corridor, corridor), hi(width - corridor, height - corridor);
   const double notchAt = r.uniform(lo.x() + 1.0, hi.x() - 2.5), notchWidth = r.uniform(0.8, 1.5), notchDepth = r.uniform(0.5, 1.2);
-  w.walls.push_back(worlds::polylineWall({lo, Point2(notchAt, lo.y()), Point2(notchAt, lo.y() + notchDepth),
-                                          Point2(notchAt + notchWidth, lo.y() + notchDepth), Point2(notchAt + notchWidth, lo.y()),
-                                          Point2(hi.x(), lo.y()), hi, Point2(lo.x(), hi.y())},
-                                         true));
+  w.walls.push_back(
+      worlds::polylineWall({lo, Point2(notchAt, lo.y()), Point2(notchAt, lo.y() + notchDepth), Point2(notchAt + notchWidth, lo.y() + notchDepth),
+                            Point2(notchAt + notchWidth, lo.y()), Point2(hi.x(), lo.y()), hi, Point2(lo.x(), hi.y())},
+                           true));
   // Outer corners cut at 45 degrees on some sides: the corridor's convex corners become concave.
   if (r.next() % 2 == 0) w.walls.push_back(worlds::segmentWall({0, corridor * 0.6}, {corridor * 0.6, 0}));
   if (r.next() % 2 == 0) w.walls.push_back(worlds::segmentWall({width - corridor * 0.6, height}, {width, height - corridor * 0.6}));
@@ -227,10 +228,14 @@ std::optional<WorldKind> worldKind(std::string_view name) {
 
 const char* toString(WorldKind kind) {
   switch (kind) {
-    case WorldKind::Obstacles: return "obstacles";
-    case WorldKind::Maze: return "maze";
-    case WorldKind::Rooms: return "rooms";
-    case WorldKind::Loop: return "loop";
+    case WorldKind::Obstacles:
+      return "obstacles";
+    case WorldKind::Maze:
+      return "maze";
+    case WorldKind::Rooms:
+      return "rooms";
+    case WorldKind::Loop:
+      return "loop";
   }
   return "?";
 }
@@ -255,14 +260,21 @@ std::string toToml(const WorldDef& w) {
        "\nseed = " + std::to_string(w.seed) + "\n\n[points]\n";
   for (const worlds::Landmark& p : w.points) t += p.name + " = " + point(p.position) + "\n";
   for (const worlds::RobotDef& r : w.robots) {
-    t += "\n[[robot]]\nname = \"" + r.name + "\"\nstart = " + point(r.start.position) + "\nheading_deg = " + number(r.start.heading * 180.0 / pi) + "\n";
+    t += "\n[[robot]]\nname = \"" + r.name + "\"\nstart = " + point(r.start.position) + "\nheading_deg = " + number(r.start.heading * 180.0 / pi) +
+         "\n";
   }
   for (const WallDef& wall : w.walls) {
     t += "\n[[wall]]\n";
     switch (wall.shape) {
-      case worlds::WallShape::Segment: t += "from = " + point(wall.points[0]) + "\nto = " + point(wall.points[1]) + "\n"; break;
-      case worlds::WallShape::Rectangle: t += "rect = [" + point(wall.points[0]) + ", " + point(wall.points[1]) + "]\n"; break;
-      case worlds::WallShape::Circle: t += "circle = " + point(wall.points[0]) + "\nradius = " + number(wall.radius) + "\n"; break;
+      case worlds::WallShape::Segment:
+        t += "from = " + point(wall.points[0]) + "\nto = " + point(wall.points[1]) + "\n";
+        break;
+      case worlds::WallShape::Rectangle:
+        t += "rect = [" + point(wall.points[0]) + ", " + point(wall.points[1]) + "]\n";
+        break;
+      case worlds::WallShape::Circle:
+        t += "circle = " + point(wall.points[0]) + "\nradius = " + number(wall.radius) + "\n";
+        break;
       case worlds::WallShape::Polyline: {
         t += "polyline = [";
         for (std::size_t i = 0; i < wall.points.size(); ++i) t += (i ? ", " : "") + point(wall.points[i]);

@@ -32,8 +32,7 @@ struct Ran {
 // contacts and reported result.
 Ran drive(worlds::Run& run, const worlds::WorldDef& world, std::int64_t steps) {
   const worlds::Simulation& sim = run.simulation();
-  Ran ran{.record = {.size = world.size, .walls = sim.walls(), .enclosureWalls = world.enclosed ? 4u : 0u,
-                     .points = world.points, .dt = sim.dt()}};
+  Ran ran{.record = {.size = world.size, .walls = sim.walls(), .enclosureWalls = world.enclosed ? 4u : 0u, .points = world.points, .dt = sim.dt()}};
   for (std::size_t i = 0; i < sim.robotCount(); ++i) {
     ran.record.robots.push_back({.name = sim.robotName(i), .radius = sim.robot(i).radius, .path = {sim.truePose(i).position}});
   }
@@ -113,9 +112,8 @@ void writeLog(const fs::path& path, const Rubric& rubric, const Check& check, co
   const fs::path partial = path.string() + ".partial";
   std::FILE* f = std::fopen(partial.c_str(), "w");
   if (f == nullptr) return;
-  std::fprintf(f, "frob-replay 1\nrubric %s\ncheck %s\nworld %s\nseed %" PRIu64 "\nsteps %zu\nrobots %zu\n",
-               fs::absolute(rubric.file).c_str(), check.name.c_str(), world.name.c_str(), seed, ran.wheels.size(),
-               ran.record.robots.size());
+  std::fprintf(f, "frob-replay 1\nrubric %s\ncheck %s\nworld %s\nseed %" PRIu64 "\nsteps %zu\nrobots %zu\n", fs::absolute(rubric.file).c_str(),
+               check.name.c_str(), world.name.c_str(), seed, ran.wheels.size(), ran.record.robots.size());
   if (world.generated) std::fprintf(f, "generated %s %" PRIu64 "\n", toString(*world.generated), world.worldSeed);
   for (std::size_t i = 0; i < ran.record.robots.size(); ++i) {
     const Track& t = ran.record.robots[i];
@@ -224,19 +222,24 @@ Result<Replay> replay(const fs::path& log) {
   while (std::getline(in, line) && line != "wheels") {
     const std::size_t space = line.find(' ');
     const std::string key = line.substr(0, space), value = space == std::string::npos ? "" : line.substr(space + 1);
-    if (key == "rubric") rubricFile = value;
-    else if (key == "check") checkName = value;
-    else if (key == "world") worldName = value;
-    else if (key == "seed") seed = std::stoull(value);
-    else if (key == "steps") steps = std::stoull(value);
-    else if (key == "robots") robots = std::stoull(value);
+    if (key == "rubric")
+      rubricFile = value;
+    else if (key == "check")
+      checkName = value;
+    else if (key == "world")
+      worldName = value;
+    else if (key == "seed")
+      seed = std::stoull(value);
+    else if (key == "steps")
+      steps = std::stoull(value);
+    else if (key == "robots")
+      robots = std::stoull(value);
     else if (key == "generated") {
       const std::size_t gap = value.find(' ');
       const std::optional<WorldKind> kind = worldKind(value.substr(0, gap));
       if (!kind || gap == std::string::npos) return bad("line '" + line + "'");
       generated = WorldRef{.generated = kind, .worldSeed = std::stoull(value.substr(gap + 1))};
-    }
-    else if (key == "failure" || key == "returned") {
+    } else if (key == "failure" || key == "returned") {
       const std::size_t gap = value.find(' ');
       (key == "failure" ? failures : returned).emplace_back(std::stoull(value.substr(0, gap)), value.substr(gap + 1));
     } else {
@@ -263,7 +266,8 @@ Result<Replay> replay(const fs::path& log) {
   if (check == rubric.value().checks.end()) return Status::failure(rubricFile + ": has no check '" + checkName + "' any more");
   // A generated world comes back from its kind and seed (a hidden one's seed is the secret's, not in the rubric).
   const auto ref = std::find_if(check->worlds.begin(), check->worlds.end(), [&](const WorldRef& w) { return w.name == worldName; });
-  if (!generated && ref == check->worlds.end()) return Status::failure(rubricFile + ": check '" + checkName + "' has no world '" + worldName + "' any more");
+  if (!generated && ref == check->worlds.end())
+    return Status::failure(rubricFile + ": check '" + checkName + "' has no world '" + worldName + "' any more");
   Result<worlds::WorldDef> world = loadWorldRef(generated ? *generated : *ref);
   if (!world) return world.status();
   if (world.value().robots.size() != robots) return bad("the world now has another number of robots");

@@ -1,8 +1,7 @@
 // Grading a class: its submissions found and sharded, graded a few at a time; and the pieces a
 // report needs around one grade (its assignment's rubric, a film of a run).
-#include "frob/course/grade.hpp"
-
 #include "frob/base/layout.hpp"
+#include "frob/course/grade.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/world_file.hpp"
 
@@ -79,8 +78,7 @@ Result<fs::path> findRubric(const std::string& name) {
   return Status::failure("unknown assignment '" + name + "': not a folder of assignments/ (see frob list), and no rubric.toml there");
 }
 
-Status filmRun(const GradeDef& def, const fs::path& submission, const std::string& checkName, const RunGrade& run,
-               const RunOutputs& outputs) {
+Status filmRun(const GradeDef& def, const fs::path& submission, const std::string& checkName, const RunGrade& run, const RunOutputs& outputs) {
   const auto check = std::find_if(def.rubric.checks.begin(), def.rubric.checks.end(), [&](const Check& c) { return c.name == checkName; });
   if (check == def.rubric.checks.end()) return Status::failure("no check '" + checkName + "'");
   const std::vector<WorldRef> all = worldsOf(*check, def.secret);
@@ -92,8 +90,12 @@ Status filmRun(const GradeDef& def, const fs::path& submission, const std::strin
   if (!compiled) return compiled.status();
   Result<LoadedController> controller = describeInHost(compiled.value(), def.isolation);
   if (!controller) return controller.status();
-  Result<Summary> s = runSession({.world = world.value(), .worldName = run.world, .options = {.dt = def.rubric.dt, .seed = run.seed},
-                                  .controllers = {controller.value()}, .isolation = def.isolation, .seconds = check->seconds,
+  Result<Summary> s = runSession({.world = world.value(),
+                                  .worldName = run.world,
+                                  .options = {.dt = def.rubric.dt, .seed = run.seed},
+                                  .controllers = {controller.value()},
+                                  .isolation = def.isolation,
+                                  .seconds = check->seconds,
                                   .outputs = outputs});
   if (!s) return s.status();
   if (s.value().failed()) return Status::failure("the run failed, so it has no video: " + s.value().robots.front().failure);

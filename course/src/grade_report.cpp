@@ -10,9 +10,8 @@
 
 #include "frob/course/grade_report.hpp"
 
-#include "grade_files.hpp"
-
 #include "frob/render/output_file.hpp"
+#include "grade_files.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -57,9 +56,12 @@ Outcome outcomeOf(const CheckGrade& c) {
 
 const char* toString(Outcome o) {
   switch (o) {
-    case Outcome::Pass: return "PASS";
-    case Outcome::Fail: return "FAIL";
-    case Outcome::Partial: return "PARTIAL";
+    case Outcome::Pass:
+      return "PASS";
+    case Outcome::Fail:
+      return "FAIL";
+    case Outcome::Partial:
+      return "PARTIAL";
   }
   return "FAIL";
 }
@@ -69,7 +71,6 @@ double rounded(double points) {
   const double r = std::round(points * 1e4) / 1e4;
   return r == 0.0 ? 0.0 : r;  // no "-0"
 }
-
 
 // The lines of `text`, without their "\n" or "\r\n"; "" gives none.
 std::vector<std::string> linesOf(const std::string& text) {
@@ -106,8 +107,8 @@ std::string summaryOf(const Grade& g) {
       score += c.score;
       points += c.points;
     }
-    s = std::to_string(passed) + " of " + std::to_string(visible) + (unseen > 0 ? " visible" : "") +
-        (visible == 1 ? " check" : " checks") + " passed: " + number(score) + " / " + number(points) + " points.\n";
+    s = std::to_string(passed) + " of " + std::to_string(visible) + (unseen > 0 ? " visible" : "") + (visible == 1 ? " check" : " checks") +
+        " passed: " + number(score) + " / " + number(points) + " points.\n";
     if (unseen > 0) {
       s += std::to_string(unseen) + (unseen == 1 ? " more check is" : " more checks are") + " graded but not shown here.\n";
     }
@@ -193,9 +194,7 @@ std::string terminalSafe(std::string_view text) {
 
 // Columns a terminalSafe string takes (one per code point).
 std::size_t widthOf(std::string_view text) {
-  return static_cast<std::size_t>(std::count_if(text.begin(), text.end(), [](char ch) {
-    return (static_cast<unsigned char>(ch) & 0xC0) != 0x80;
-  }));
+  return static_cast<std::size_t>(std::count_if(text.begin(), text.end(), [](char ch) { return (static_cast<unsigned char>(ch) & 0xC0) != 0x80; }));
 }
 
 // `text` as XML 1.0 or HTML character data or, with `attribute`, a double-quoted attribute value.
@@ -208,15 +207,32 @@ std::string markupEscape(std::string_view text, bool attribute = false) {
   out.reserve(text.size());
   forEachCodePoint(text, [&](char32_t c) {
     switch (c) {
-      case '&': out += "&amp;"; return;
-      case '<': out += "&lt;"; return;
-      case '>': out += "&gt;"; return;
-      case '"': out += "&quot;"; return;
-      case '\'': out += "&#39;"; return;
-      case '\r': out += "&#13;"; return;
-      case '\n': out += attribute ? "&#10;" : "\n"; return;
-      case '\t': out += attribute ? "&#9;" : "\t"; return;
-      default: break;
+      case '&':
+        out += "&amp;";
+        return;
+      case '<':
+        out += "&lt;";
+        return;
+      case '>':
+        out += "&gt;";
+        return;
+      case '"':
+        out += "&quot;";
+        return;
+      case '\'':
+        out += "&#39;";
+        return;
+      case '\r':
+        out += "&#13;";
+        return;
+      case '\n':
+        out += attribute ? "&#10;" : "\n";
+        return;
+      case '\t':
+        out += attribute ? "&#9;" : "\t";
+        return;
+      default:
+        break;
     }
     if (c == kInvalid || isControl(c) || c == 0xFFFE || c == 0xFFFF) {
       appendUtf8(out, 0xFFFD);
@@ -234,8 +250,7 @@ std::string base64(std::string_view bytes) {
   std::size_t i = 0;
   for (; i + 3 <= bytes.size(); i += 3) {
     const std::uint32_t v = static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i])) << 16 |
-                            static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i + 1])) << 8 |
-                            static_cast<unsigned char>(bytes[i + 2]);
+                            static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i + 1])) << 8 | static_cast<unsigned char>(bytes[i + 2]);
     out += kDigits[v >> 18];
     out += kDigits[(v >> 12) & 63];
     out += kDigits[(v >> 6) & 63];
@@ -253,8 +268,6 @@ std::string base64(std::string_view bytes) {
 }
 
 // ---- Files -------------------------------------------------------------------------------------
-
-
 
 std::string dump(const Json& doc) {
   // Malformed UTF-8 (a compiler quoting a Latin-1 source) becomes U+FFFD instead of an exception.
@@ -279,9 +292,7 @@ Json prairieLearnResults(const Grade& g, std::size_t limit) {
   if (gradable && max > 0.0) {
     fraction = std::clamp(g.score() / max, 0.0, 1.0);
   } else if (gradable) {  // nothing to earn: all or nothing on the checks' outcomes
-    fraction = std::all_of(g.checks.begin(), g.checks.end(), [](const CheckGrade& c) { return outcomeOf(c) == Outcome::Pass; })
-                   ? 1.0
-                   : 0.0;
+    fraction = std::all_of(g.checks.begin(), g.checks.end(), [](const CheckGrade& c) { return outcomeOf(c) == Outcome::Pass; }) ? 1.0 : 0.0;
   }
   doc["gradable"] = gradable;
   doc["score"] = fraction;
@@ -312,8 +323,7 @@ Json prairieLearnResults(const Grade& g, std::size_t limit) {
     t["points"] = rounded(c.score);
     t["max_points"] = rounded(c.points);
     t["output"] = clip(c.output(), limit);
-    t["message"] = c.runs.empty() ? std::string("not run")
-                                  : std::to_string(passedRuns(c)) + " of " + std::to_string(c.runs.size()) + " runs passed";
+    t["message"] = c.runs.empty() ? std::string("not run") : std::to_string(passedRuns(c)) + " of " + std::to_string(c.runs.size()) + " runs passed";
     tests.push_back(std::move(t));
   }
   if (hidden > 0) {
@@ -375,7 +385,10 @@ std::string scoreTable(const Grade& g) {
   };
   std::vector<Row> rows;
   for (const CheckGrade& c : g.checks) {
-    Row r{.name = terminalSafe(c.name), .score = number(c.score), .points = number(c.points), .result = toString(outcomeOf(c)),
+    Row r{.name = terminalSafe(c.name),
+          .score = number(c.score),
+          .points = number(c.points),
+          .result = toString(outcomeOf(c)),
           .marker = c.visibility == Visibility::Visible ? "" : std::string("[") + course::toString(c.visibility) + "]",
           .reasons = {}};
     for (const std::string& line : linesOf(c.output())) r.reasons.push_back(terminalSafe(line));
@@ -457,8 +470,8 @@ Status writePrairieLearn(const Grade& g, const fs::path& path) {
     text = dump(prairieLearnResults(g, limit));
   }
   if (text.size() > kMaxBytes) {
-    return Status::failure("prairielearn results: cannot write '" + path.string() + "': the results take " +
-                           std::to_string(text.size()) + " bytes, more than PrairieLearn's 1 MB");
+    return Status::failure("prairielearn results: cannot write '" + path.string() + "': the results take " + std::to_string(text.size()) +
+                           " bytes, more than PrairieLearn's 1 MB");
   }
   return writeWhole(path, "prairielearn results", text);
 }
@@ -530,7 +543,9 @@ Status writeHtmlReport(const Grade& g, const HtmlMedia& media, const fs::path& p
       "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; img-src data:; media-src data:; "
       "style-src 'unsafe-inline'\">\n"
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-      "<title>" + title + "</title>\n"
+      "<title>" +
+      title +
+      "</title>\n"
       "<style>\n"
       "body { font-family: sans-serif; margin: 1.5em; color: #222; }\n"
       "table { border-collapse: collapse; }\n"
@@ -550,8 +565,8 @@ Status writeHtmlReport(const Grade& g, const HtmlMedia& media, const fs::path& p
     if (c.visibility != Visibility::Visible) {
       html += " <span class=\"visibility\">(" + std::string(course::toString(c.visibility)) + ")</span>";
     }
-    html += "</td><td class=\"num\">" + number(c.score) + "</td><td class=\"num\">" + number(c.points) + "</td><td class=\"status\">" +
-            status + "</td><td>";
+    html += "</td><td class=\"num\">" + number(c.score) + "</td><td class=\"num\">" + number(c.points) + "</td><td class=\"status\">" + status +
+            "</td><td>";
     const std::vector<std::string> reasons = linesOf(c.output());
     for (std::size_t i = 0; i < reasons.size(); ++i) html += (i > 0 ? "<br>" : "") + markupEscape(reasons[i]);
     html += "</td></tr>\n";

@@ -1,7 +1,6 @@
 // The class gradebook: RFC 4180 CSV (fields with a comma, quote, CR or LF quoted, quotes doubled,
 // records ended by CRLF), one row per submission; and the merge of the shards' gradebooks.
 #include "frob/course/grade_report.hpp"
-
 #include "grade_files.hpp"
 
 #include <algorithm>
@@ -49,12 +48,8 @@ struct CsvRow {
 
 // Reads RFC 4180 text (records ended by CRLF or LF; quoted fields may hold both).
 Result<std::vector<CsvRow>> parseCsv(std::string_view text, const std::string& file) {
-  const auto endsRecord = [&](std::size_t k) {
-    return text[k] == '\n' || (text[k] == '\r' && k + 1 < text.size() && text[k + 1] == '\n');
-  };
-  const auto error = [&](int at, const std::string& what) {
-    return Status::failure("gradebook: " + file + ":" + std::to_string(at) + ": " + what);
-  };
+  const auto endsRecord = [&](std::size_t k) { return text[k] == '\n' || (text[k] == '\r' && k + 1 < text.size() && text[k + 1] == '\n'); };
+  const auto error = [&](int at, const std::string& what) { return Status::failure("gradebook: " + file + ":" + std::to_string(at) + ": " + what); };
   std::vector<CsvRow> rows;
   std::size_t i = 0;
   int line = 1;
@@ -101,8 +96,7 @@ Status writeGradebook(const std::vector<Grade>& grades, const fs::path& path) {
   std::stable_sort(sorted.begin(), sorted.end(), [](const Grade* a, const Grade* b) { return a->submission < b->submission; });
   for (std::size_t i = 1; i < sorted.size(); ++i) {
     if (sorted[i]->submission == sorted[i - 1]->submission) {
-      return Status::failure("gradebook: cannot write '" + path.string() + "': submission '" + sorted[i]->submission +
-                             "' is graded twice");
+      return Status::failure("gradebook: cannot write '" + path.string() + "': submission '" + sorted[i]->submission + "' is graded twice");
     }
   }
   // The checks' columns: every check of every grade, in the order they first appear.
@@ -142,8 +136,7 @@ Result<std::vector<std::string>> mergeGradebooks(const std::vector<fs::path>& sh
     const std::vector<CsvRow>& records = parsed.value();
     if (records.empty()) return Status::failure("gradebook: " + shard.string() + " is empty (no header)");
     if (records[0].fields.size() < 3 || records[0].fields[0] != "submission") {
-      return Status::failure("gradebook: " + shard.string() +
-                             ":1: not a gradebook (the header must start with submission,score,max_score)");
+      return Status::failure("gradebook: " + shard.string() + ":1: not a gradebook (the header must start with submission,score,max_score)");
     }
     if (header.empty()) {
       header = records[0].fields;

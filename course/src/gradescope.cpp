@@ -74,9 +74,7 @@ class Zip {
     zip_source_t* src = ::zip_source_buffer(zip_, copy(text), text.size(), 1);
     return add(name, src, executable);
   }
-  bool addFile(const std::string& name, const fs::path& file) {
-    return add(name, ::zip_source_file(zip_, file.c_str(), 0, -1), false);
-  }
+  bool addFile(const std::string& name, const fs::path& file) { return add(name, ::zip_source_file(zip_, file.c_str(), 0, -1), false); }
   // Writes the archive; false with the reason in `error`.
   bool close(std::string& error) {
     if (::zip_close(zip_) == 0) return zip_ = nullptr, true;
@@ -104,7 +102,8 @@ class Zip {
 
 Status writeGradescopeZip(const GradescopeZipDef& def, const fs::path& out) {
   const fs::path source = layout().sourceTree;
-  if (source.empty()) return Status::failure("the Gradescope autograder is built from Frob Sandbox's source tree, and this frob is installed without one");
+  if (source.empty())
+    return Status::failure("the Gradescope autograder is built from Frob Sandbox's source tree, and this frob is installed without one");
   if (Status s = render::checkWritable(out.string(), "zip"); !s) return s;
   const std::string partial = render::partialPath(out.string());
   Zip zip(partial);
@@ -121,7 +120,8 @@ Status writeGradescopeZip(const GradescopeZipDef& def, const fs::path& out) {
   }
   const fs::path assignment = def.rubric.parent_path();
   for (auto it = fs::recursive_directory_iterator(assignment, ec); ok && it != fs::recursive_directory_iterator(); it.increment(ec)) {
-    if (it->is_regular_file()) ok = zip.addFile("assignments/" + def.assignment + "/" + fs::relative(it->path(), assignment).generic_string(), it->path());
+    if (it->is_regular_file())
+      ok = zip.addFile("assignments/" + def.assignment + "/" + fs::relative(it->path(), assignment).generic_string(), it->path());
   }
   std::string error;
   if (!ok || !zip.close(error)) {

@@ -30,7 +30,7 @@ using sandbox::Activity;
 namespace {
 
 constexpr std::size_t kSetupBytes = 1 << 20;
-constexpr std::size_t kFrameBytes = 64 << 10;  // a frame: its sonars, bumps and keys
+constexpr std::size_t kFrameBytes = 64 << 10;   // a frame: its sonars, bumps and keys
 constexpr std::size_t kReplyBytes = 256 << 10;  // a reply: wheels, task records, a picture
 constexpr std::uint32_t kNobody = 65534;
 
@@ -48,9 +48,12 @@ std::string when(double time, Activity activity) {
   std::snprintf(at, sizeof at, " at t = %.2f s", time);
   switch (activity) {
     case Activity::Starting:
-    case Activity::Loading: return std::string(at) + " (in a global constructor)";
-    case Activity::Building: return std::string(at) + " (while building its controller)";
-    default: return at;
+    case Activity::Loading:
+      return std::string(at) + " (in a global constructor)";
+    case Activity::Building:
+      return std::string(at) + " (while building its controller)";
+    default:
+      return at;
   }
 }
 
@@ -123,15 +126,24 @@ struct ControllerHost::Impl {
     }
     const int sig = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
     switch (sig) {
-      case SIGSYS: return "tried to " + (h.trappedSyscall >= 0 ? sandbox::describeSyscall(h.trappedSyscall) : std::string("make a forbidden system call")) + " (not allowed)";
-      case SIGSEGV: return h.stackOverflow != 0 ? "crashed with SIGSEGV: its stack overflowed (a recursion that never ends?)"
-                                                : "crashed with SIGSEGV (a bad pointer, or an index out of range?)";
-      case SIGFPE: return "crashed with SIGFPE (an integer division by zero?)";
-      case SIGABRT: return "crashed with SIGABRT (abort(), a failed assert, or an exception nothing caught)";
-      case SIGXCPU: return "used more than " + seconds(def.runSeconds) + " of CPU in the run";
-      case SIGXFSZ: return "wrote a file larger than " + megabytes(def.fileBytes) + " (not allowed)";
-      case SIGKILL: return "was killed (SIGKILL): out of memory?";
-      default: return "crashed with signal " + std::to_string(sig) + " (" + ::strsignal(sig) + ")";
+      case SIGSYS:
+        return "tried to " + (h.trappedSyscall >= 0 ? sandbox::describeSyscall(h.trappedSyscall) : std::string("make a forbidden system call")) +
+               " (not allowed)";
+      case SIGSEGV:
+        return h.stackOverflow != 0 ? "crashed with SIGSEGV: its stack overflowed (a recursion that never ends?)"
+                                    : "crashed with SIGSEGV (a bad pointer, or an index out of range?)";
+      case SIGFPE:
+        return "crashed with SIGFPE (an integer division by zero?)";
+      case SIGABRT:
+        return "crashed with SIGABRT (abort(), a failed assert, or an exception nothing caught)";
+      case SIGXCPU:
+        return "used more than " + seconds(def.runSeconds) + " of CPU in the run";
+      case SIGXFSZ:
+        return "wrote a file larger than " + megabytes(def.fileBytes) + " (not allowed)";
+      case SIGKILL:
+        return "was killed (SIGKILL): out of memory?";
+      default:
+        return "crashed with signal " + std::to_string(sig) + " (" + ::strsignal(sig) + ")";
     }
   }
 
@@ -140,7 +152,8 @@ struct ControllerHost::Impl {
     sandbox::Doorbell& bell = header().reply;
     if (sandbox::spinUntil(bell, seq, def.spinNanoseconds)) return {};
     const Clock::time_point start = Clock::now();
-    const Clock::time_point deadline = std::min(runDeadline, start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit)));
+    const Clock::time_point deadline =
+        std::min(runDeadline, start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit)));
     bell.sleeping.store(1, std::memory_order_seq_cst);
     std::optional<std::pair<Clock::time_point, double>> cpuFrom;  // when the step had run a while, and its CPU then
     std::string why;
@@ -149,8 +162,7 @@ struct ControllerHost::Impl {
       const Clock::time_point now = Clock::now();
       if (now >= deadline) {
         // A sleeper uses next to no CPU; a loop gets its share of a core even on a crowded machine.
-        const bool busy = cpuFrom && cpuSeconds(process.pid()) - cpuFrom->second >
-                                         0.1 * std::chrono::duration<double>(now - cpuFrom->first).count();
+        const bool busy = cpuFrom && cpuSeconds(process.pid()) - cpuFrom->second > 0.1 * std::chrono::duration<double>(now - cpuFrom->first).count();
         if (deadline == runDeadline) {
           why = "the run took longer than " + seconds(def.runSeconds) + " of wall-clock time";
         } else if (starting) {
@@ -200,8 +212,8 @@ struct ControllerHost::Impl {
   }
 };
 
-Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<fs::path>& modules,
-                                                             const std::vector<std::string>& sources, IsolationDef def) {
+Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<fs::path>& modules, const std::vector<std::string>& sources,
+                                                              IsolationDef def) {
   auto impl = std::make_unique<Impl>();
   impl->def = std::move(def);
   impl->sources = sources;
@@ -233,8 +245,10 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
 
   const IsolationDef& d = impl->def;
   JailDef jail{.command = command,
-               .limits = {.cpuSeconds = static_cast<std::uint64_t>(std::ceil(d.runSeconds)), .memoryBytes = d.memoryBytes,
-                          .fileBytes = d.fileBytes, .openFiles = 64},
+               .limits = {.cpuSeconds = static_cast<std::uint64_t>(std::ceil(d.runSeconds)),
+                          .memoryBytes = d.memoryBytes,
+                          .fileBytes = d.fileBytes,
+                          .openFiles = 64},
                .files = {.read = {"/usr", "/lib", "/lib64", "/etc/ld.so.cache"}, .write = {scratch}},
                .cwd = scratch,
                .fds = {-1, out[1], out[1], impl->channel.fd(), impl->wake}};
@@ -242,8 +256,9 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
     // Memory is watched by its size instead of limited (see kSanitizedBuild); crashes are left to
     // the kernel so that they read as the signals they are.
     // Real stacks (no fake ones for use-after-return), so that an overflow faults next to the stack.
-    jail.env = {"ASAN_OPTIONS=detect_leaks=0:handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_abort=0:symbolize=0:"
-                "detect_stack_use_after_return=0"};
+    jail.env = {
+        "ASAN_OPTIONS=detect_leaks=0:handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_abort=0:symbolize=0:"
+        "detect_stack_use_after_return=0"};
     jail.files.read.push_back("/proc");
   }
   impl->memoryLimited = !kSanitizedBuild;
@@ -297,8 +312,8 @@ int ControllerHost::processId() const { return impl_->process.pid(); }
 std::vector<std::string> ControllerHost::notes() const {
   impl_->drainOutput();
   if (impl_->outputSeen <= impl_->def.outputBytes) return {};
-  return {"the controller wrote " + megabytes(impl_->outputSeen) + " to stdout and stderr; only the first " +
-          megabytes(impl_->def.outputBytes) + " were shown"};
+  return {"the controller wrote " + megabytes(impl_->outputSeen) + " to stdout and stderr; only the first " + megabytes(impl_->def.outputBytes) +
+          " were shown"};
 }
 
 namespace {
@@ -308,8 +323,13 @@ class IsolatedDriver final : public worlds::ControllerDriver {
  public:
   IsolatedDriver(std::shared_ptr<ControllerHost> owner, ControllerHost::Impl& host, const worlds::Simulation& sim,
                  const std::vector<std::size_t>& modules, bool pictures)
-      : owner_(std::move(owner)), host_(host), sim_(sim), pictures_(pictures), timelines_(sim.robotCount()),
-        started_(sim.robotCount(), 0), stopped_(sim.robotCount(), false) {
+      : owner_(std::move(owner)),
+        host_(host),
+        sim_(sim),
+        pictures_(pictures),
+        timelines_(sim.robotCount()),
+        started_(sim.robotCount(), 0),
+        stopped_(sim.robotCount(), false) {
     const auto n = static_cast<std::uint32_t>(sim.robotCount());
     FROB_ASSERT(!host.driving, "a controller host drives one run");
     FROB_ASSERT(modules.size() == 1 || modules.size() == n, "give one module per robot, or one for all");
@@ -450,8 +470,8 @@ std::string missingLayers(const std::vector<sandbox::Layer>& layers) {
 Result<LoadedController> describeInHost(const CompiledController& compiled, const IsolationDef& def) {
   Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start({compiled.module}, {compiled.source}, def);
   if (!host) return host.status();
-  return LoadedController{.entry = host.value()->entries().at(0), .source = compiled.source, .module = compiled.module,
-                          .compiled = compiled.compiled};
+  return LoadedController{
+      .entry = host.value()->entries().at(0), .source = compiled.source, .module = compiled.module, .compiled = compiled.compiled};
 }
 
 worlds::DriverFactory ControllerHost::driver(std::vector<std::size_t> modulePerRobot, bool pictures) {

@@ -22,8 +22,15 @@ Result<Jailed> Jailed::start(const JailDef& def) {
   int report[2];
   if (::pipe2(report, O_CLOEXEC) != 0) return Status::failure(std::string("cannot start the sandbox: ") + std::strerror(errno));
   const int keep = static_cast<int>(def.fds.size());
-  std::vector<std::string> args{layout().jail.string(), "--keep-fds", std::to_string(keep), "--report-fd", std::to_string(keep),
-                                "--parent", std::to_string(::getpid()), "--cwd", def.cwd};
+  std::vector<std::string> args{layout().jail.string(),
+                                "--keep-fds",
+                                std::to_string(keep),
+                                "--report-fd",
+                                std::to_string(keep),
+                                "--parent",
+                                std::to_string(::getpid()),
+                                "--cwd",
+                                def.cwd};
   const auto add = [&](const char* flag, auto value) {
     if (value != 0) args.insert(args.end(), {flag, std::to_string(value)});
   };

@@ -31,11 +31,11 @@ struct JailDef {
   std::vector<std::string> command;  ///< the program (absolute path) and its arguments
   sandbox::Limits limits;            ///< memoryBytes is dropped in a sanitizer build (kSanitizedBuild)
   sandbox::FileAccess files;
-  std::string cwd;                   ///< its working folder
-  std::vector<std::string> env;      ///< its whole environment, NAME=VALUE
-  bool dropUser = true;              ///< as root, run as nobody
-  bool noNetwork = false;            ///< seccomp: no sockets (the controller host filters itself)
-  std::vector<int> fds;              ///< fds[k] becomes descriptor k of the program; -1: /dev/null
+  std::string cwd;               ///< its working folder
+  std::vector<std::string> env;  ///< its whole environment, NAME=VALUE
+  bool dropUser = true;          ///< as root, run as nobody
+  bool noNetwork = false;        ///< seccomp: no sockets (the controller host filters itself)
+  std::vector<int> fds;          ///< fds[k] becomes descriptor k of the program; -1: /dev/null
 };
 
 /// A confined program, running. Kills its process group when destroyed, unless reaped.
@@ -67,15 +67,14 @@ class Jailed {
 
 /// How a confined program that ran to its end (or its deadline) did.
 struct JailedRun {
-  int status = -1;         ///< its wait status
-  bool timedOut = false;   ///< killed at the deadline
-  std::string output;      ///< its stdout and stderr together, cut at the limit
+  int status = -1;        ///< its wait status
+  bool timedOut = false;  ///< killed at the deadline
+  std::string output;     ///< its stdout and stderr together, cut at the limit
   std::vector<sandbox::Layer> layers;
 };
 
 /// Runs `def` to its end with its stdout and stderr captured (def.fds[1], [2] are set here), killed
 /// after `seconds` of wall-clock time; keeps the first `outputBytes` of what it printed.
 [[nodiscard]] Result<JailedRun> runJailed(JailDef def, double seconds, std::size_t outputBytes);
-
 
 }  // namespace frob::course

@@ -46,9 +46,12 @@ std::size_t closestTo(const std::vector<Point2>& path, const Point2& p, std::siz
 double perimeter(const WallDef& w) {
   const auto& v = w.points;
   switch (w.shape) {
-    case WallShape::Segment: return 2 * (v[1] - v[0]).norm();
-    case WallShape::Rectangle: return 2 * ((v[1] - v[0]).x() + (v[1] - v[0]).y());
-    case WallShape::Circle: return 2 * pi * w.radius;
+    case WallShape::Segment:
+      return 2 * (v[1] - v[0]).norm();
+    case WallShape::Rectangle:
+      return 2 * ((v[1] - v[0]).x() + (v[1] - v[0]).y());
+    case WallShape::Circle:
+      return 2 * pi * w.radius;
     case WallShape::Polyline: {
       double d = 0;
       for (std::size_t i = 0; i + 1 < v.size(); ++i) d += (v[i + 1] - v[i]).norm();
@@ -94,25 +97,33 @@ class Judge {
   // Why robot `t` fails the criterion; "" when it meets it.
   std::string robot(const Track& t) {
     switch (c_.kind) {
-      case Kind::Goal: return goal(t);
-      case Kind::Waypoints: return waypoints(t);
+      case Kind::Goal:
+        return goal(t);
+      case Kind::Waypoints:
+        return waypoints(t);
       case Kind::Stopped: {
         const std::size_t n = t.path.size();
         const double speed = n < 2 ? 0.0 : (t.path[n - 1] - t.path[n - 2]).norm() / run_.dt;
         return speed < c_.speed ? "" : format("was still moving at %.2f m/s at the end; it should stop (below %.2f m/s)", speed, c_.speed);
       }
-      case Kind::Collisions: return collisions(t);
-      case Kind::Clearance: return clearance(t);
-      case Kind::WallDistance: return wallDistance(t);
-      case Kind::Coverage: return coverage(t);
+      case Kind::Collisions:
+        return collisions(t);
+      case Kind::Clearance:
+        return clearance(t);
+      case Kind::WallDistance:
+        return wallDistance(t);
+      case Kind::Coverage:
+        return coverage(t);
       case Kind::PathRatio:
-      case Kind::Bug1Bound: return pathLength(t);
+      case Kind::Bug1Bound:
+        return pathLength(t);
       case Kind::Returns:
         if (!t.returned) return "its task never returned a value (reported by the controller)";
         if (*t.returned == c_.value) return "";
         return "its task returned " + (t.returned->empty() ? std::string("no value") : *t.returned) + ", not " + c_.value +
                " (reported by the controller)";
-      case Kind::RobotsApart: break;
+      case Kind::RobotsApart:
+        break;
     }
     return "";
   }
@@ -124,8 +135,8 @@ class Judge {
     const std::optional<std::size_t> k = firstWithin(t.path, *g, c_.distance);
     if (!k) {
       const std::size_t near = closestTo(t.path, *g);
-      return format("never came within %.2f m of %s (closest %.2f m, at %s)", c_.distance, name.c_str(),
-                    (t.path[near] - *g).norm(), secondsText(timeOf(near)).c_str());
+      return format("never came within %.2f m of %s (closest %.2f m, at %s)", c_.distance, name.c_str(), (t.path[near] - *g).norm(),
+                    secondsText(timeOf(near)).c_str());
     }
     return late(*k) ? "reached " + name + " at " + secondsText(timeOf(*k)) + "; " + allowed() : "";
   }
@@ -165,8 +176,8 @@ class Judge {
     for (std::size_t k = 0; k < t.path.size(); ++k) {
       const double gap = walls.distance(t.path[k]) - t.radius;
       if (gap < c_.distance - 1e-9) {
-        return format("came within %.2f m of a wall at %s at %s; at least %.2f m required", std::max(gap, 0.0),
-                      secondsText(timeOf(k)).c_str(), at(t.path[k]).c_str(), c_.distance);
+        return format("came within %.2f m of a wall at %s at %s; at least %.2f m required", std::max(gap, 0.0), secondsText(timeOf(k)).c_str(),
+                      at(t.path[k]).c_str(), c_.distance);
       }
     }
     return "";
@@ -185,9 +196,9 @@ class Judge {
     }
     const double share = counted == 0 ? 0.0 : static_cast<double>(within) / static_cast<double>(counted);
     if (share >= c_.fraction) return "";
-    return format("kept %.2f ± %.2f m from the wall for %.0f%% of the time after %s; %.0f%% required (furthest off: %.2f m at %s at %s)",
-                  c_.distance, c_.tolerance, 100 * share, secondsText(c_.after).c_str(), 100 * c_.fraction, worstOff,
-                  secondsText(timeOf(worst)).c_str(), at(t.path[worst]).c_str());
+    return format("kept %.2f ± %.2f m from the wall for %.0f%% of the time after %s; %.0f%% required (furthest off: %.2f m at %s at %s)", c_.distance,
+                  c_.tolerance, 100 * share, secondsText(c_.after).c_str(), 100 * c_.fraction, worstOff, secondsText(timeOf(worst)).c_str(),
+                  at(t.path[worst]).c_str());
   }
 
   std::string coverage(const Track& t) {
@@ -202,8 +213,8 @@ class Judge {
     }
     const double share = free == 0 ? 0.0 : static_cast<double>(seen) / static_cast<double>(free);
     if (share >= c_.fraction) return "";
-    return format("covered %.0f%% of the floor it could reach (%zu of %zu cells of %.2f m); %.0f%% required", 100 * share, seen, free,
-                  c_.cell, 100 * c_.fraction);
+    return format("covered %.0f%% of the floor it could reach (%zu of %zu cells of %.2f m); %.0f%% required", 100 * share, seen, free, c_.cell,
+                  100 * c_.fraction);
   }
 
   std::string pathLength(const Track& t) {
@@ -218,8 +229,8 @@ class Judge {
     if (c_.kind == Kind::PathRatio) {
       const double shortest = FreeGrid(run_.walls, run_.size, t.radius, 0.05).shortestPath(t.path.front(), *g);
       if (travelled <= c_.ratio * shortest + 1e-9) return "";
-      return format("drove %.2f m to %s; the shortest path is %.2f m and at most %.2f× that (%.2f m) is allowed", travelled,
-                    name.c_str(), shortest, c_.ratio, c_.ratio * shortest);
+      return format("drove %.2f m to %s; the shortest path is %.2f m and at most %.2f× that (%.2f m) is allowed", travelled, name.c_str(), shortest,
+                    c_.ratio, c_.ratio * shortest);
     }
     // BUG1: the obstacles met are the walls (not the enclosure) the body came within 0.3 m of.
     const std::size_t inner = run_.walls.size() - run_.enclosureWalls;
@@ -232,8 +243,8 @@ class Judge {
     }
     const double bound = direct + 1.5 * perimeters;
     if (travelled <= bound + 1e-9) return "";
-    return format("drove %.2f m to %s; the BUG1 bound is %.2f m (%.2f m direct + 1.5 × %.2f m of perimeter of the %zu obstacles met)",
-                  travelled, name.c_str(), bound, direct, perimeters, met);
+    return format("drove %.2f m to %s; the BUG1 bound is %.2f m (%.2f m direct + 1.5 × %.2f m of perimeter of the %zu obstacles met)", travelled,
+                  name.c_str(), bound, direct, perimeters, met);
   }
 
   Verdict robotsApart() {

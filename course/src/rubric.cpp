@@ -101,10 +101,14 @@ class RubricReader : worlds::TomlReader {
     if (const toml::node* v = t.get("visibility")) {
       std::string text;
       if (!string(*v, field + "visibility", text)) return false;
-      if (text == "visible") c.visibility = Visibility::Visible;
-      else if (text == "hidden") c.visibility = Visibility::Hidden;
-      else if (text == "after_due_date") c.visibility = Visibility::AfterDueDate;
-      else return fail(*v, field + "visibility", "expected \"visible\", \"hidden\" or \"after_due_date\"");
+      if (text == "visible")
+        c.visibility = Visibility::Visible;
+      else if (text == "hidden")
+        c.visibility = Visibility::Hidden;
+      else if (text == "after_due_date")
+        c.visibility = Visibility::AfterDueDate;
+      else
+        return fail(*v, field + "visibility", "expected \"visible\", \"hidden\" or \"after_due_date\"");
     }
     if (!readGenerated(t, field, c) || !readWorlds(t, field, c) || !readSeeds(t, field, c)) return false;
     if (c.criteria.empty()) return fail(c.line, field + "name", "check '" + c.name + "' has no criterion");
@@ -125,7 +129,8 @@ class RubricReader : worlds::TomlReader {
     if (!string(*k, field + "generated.kind", kind)) return false;
     if (!worldKind(kind)) return fail(*k, field + "generated.kind", "unknown kind '" + kind + "' (one of " + worldKindNames() + ")");
     gen.kind = *worldKind(kind);
-    if (!seedList(*g, "seeds", field + "generated.seeds", gen.seeds) || !optInteger(*g, "secret", field + "generated.secret", 0, 1000, gen.secret)) return false;
+    if (!seedList(*g, "seeds", field + "generated.seeds", gen.seeds) || !optInteger(*g, "secret", field + "generated.secret", 0, 1000, gen.secret))
+      return false;
     if (gen.seeds.empty() && gen.secret == 0) return fail(*n, field + "generated", "give seeds, or a number of secret ones");
     c.generated = gen;
     return true;
@@ -196,18 +201,24 @@ class RubricReader : worlds::TomlReader {
         }
         return need(t, "within", field, c.distance) && optNumber(t, "by", field + "by", c.seconds);
       }
-      case Kind::Stopped: return optNumber(t, "speed", field + "speed", c.speed);
-      case Kind::Collisions: return optInteger(t, "max", field + "max", 0, 1'000'000, c.count);
-      case Kind::Clearance: return need(t, "min", field, c.distance, true);
+      case Kind::Stopped:
+        return optNumber(t, "speed", field + "speed", c.speed);
+      case Kind::Collisions:
+        return optInteger(t, "max", field + "max", 0, 1'000'000, c.count);
+      case Kind::Clearance:
+        return need(t, "min", field, c.distance, true);
       case Kind::WallDistance:
         return need(t, "target", field, c.distance) && need(t, "tolerance", field, c.tolerance) && fraction(c.fraction) &&
                optNumber(t, "after", field + "after", c.after);
-      case Kind::Coverage: return fraction(c.fraction) && optNumber(t, "cell", field + "cell", c.cell);
-      case Kind::RobotsApart: return optNumber(t, "min", field + "min", c.distance);
+      case Kind::Coverage:
+        return fraction(c.fraction) && optNumber(t, "cell", field + "cell", c.cell);
+      case Kind::RobotsApart:
+        return optNumber(t, "min", field + "min", c.distance);
       case Kind::PathRatio:
         return need(t, "max", field, c.ratio) && optString(t, "point", field + "point", c.point) &&
                optNumber(t, "within", field + "within", c.distance);
-      case Kind::Bug1Bound: return optString(t, "point", field + "point", c.point) && optNumber(t, "within", field + "within", c.distance);
+      case Kind::Bug1Bound:
+        return optString(t, "point", field + "point", c.point) && optNumber(t, "within", field + "within", c.distance);
       case Kind::Returns: {
         const toml::node* n = t.get("value");
         if (n == nullptr) return fail(c.line, field + "value", "missing");
@@ -266,9 +277,11 @@ std::vector<WorldRef> worldsOf(const Check& check, const std::string& secret) {
   if (!check.generated) return all;
   const GeneratedWorlds& g = *check.generated;
   const std::string kind = toString(g.kind);
-  for (std::uint64_t seed : g.seeds) all.push_back({.name = "generated " + kind + ", seed " + std::to_string(seed), .generated = g.kind, .worldSeed = seed});
+  for (std::uint64_t seed : g.seeds)
+    all.push_back({.name = "generated " + kind + ", seed " + std::to_string(seed), .generated = g.kind, .worldSeed = seed});
   for (int k = 0; k < g.secret; ++k) {
-    all.push_back({.name = "generated " + kind + ", hidden world " + std::to_string(k + 1), .generated = g.kind,
+    all.push_back({.name = "generated " + kind + ", hidden world " + std::to_string(k + 1),
+                   .generated = g.kind,
                    .worldSeed = secretSeed(secret, "world\n", check, k)});
   }
   return all;
@@ -284,9 +297,12 @@ Result<worlds::WorldDef> loadWorldRef(const WorldRef& w) {
 
 const char* toString(Visibility v) {
   switch (v) {
-    case Visibility::Visible: return "visible";
-    case Visibility::Hidden: return "hidden";
-    case Visibility::AfterDueDate: return "after_due_date";
+    case Visibility::Visible:
+      return "visible";
+    case Visibility::Hidden:
+      return "hidden";
+    case Visibility::AfterDueDate:
+      return "after_due_date";
   }
   return "visible";
 }

@@ -1,7 +1,6 @@
 #include "frob/course/session.hpp"
 
 #include "frob/course/diagnose.hpp"
-
 #include "frob/render/output_file.hpp"
 #include "frob/render/run_view.hpp"
 #include "frob/render/video.hpp"
@@ -107,8 +106,7 @@ Status validate(const RunDef& def) {
   if (def.controllers.empty()) return Status::failure("no controller given");
   if (def.controllers.size() != 1 && def.controllers.size() != robots) {
     return Status::failure("the world '" + def.worldName + "' has " + std::to_string(robots) +
-                           " robots: give one controller for all of them or one per robot (" +
-                           std::to_string(def.controllers.size()) + " given)");
+                           " robots: give one controller for all of them or one per robot (" + std::to_string(def.controllers.size()) + " given)");
   }
   if (!(def.seconds > 0.0) || !std::isfinite(def.seconds)) return Status::failure("--seconds must be a positive number of seconds");
   if (!(def.options.dt > 0.0) || def.options.dt > 0.1) return Status::failure("--dt must be a step in (0, 0.1] seconds");
@@ -122,8 +120,7 @@ Status validate(const RunDef& def) {
     if (Status s = render::validate(videoDef(def)); !s) return s;
   }
   if (!out.frames.empty()) {
-    Status s = std::filesystem::is_directory(out.frames) ? render::validateOutputDirectory(out.frames)
-                                                         : render::checkWritable(out.frames, "frames");
+    Status s = std::filesystem::is_directory(out.frames) ? render::validateOutputDirectory(out.frames) : render::checkWritable(out.frames, "frames");
     if (!s) return s;
   }
   for (const std::string& name : out.plotSignals) {
@@ -139,7 +136,8 @@ Status validate(const RunDef& def) {
   }
   for (const LoadedController& c : def.controllers) {
     if (def.isolation ? c.module.empty() : !c.entry.make) {
-      return Status::failure("the controller '" + c.source + "' " + (def.isolation ? "has no module to run in a sandbox" : "cannot run in this process"));
+      return Status::failure("the controller '" + c.source + "' " +
+                             (def.isolation ? "has no module to run in a sandbox" : "cannot run in this process"));
     }
   }
   return {};
@@ -260,8 +258,12 @@ Result<Summary> runSession(const RunDef& def) {
     if (allFinished) break;
   }
 
-  Summary summary{.world = def.worldName, .seed = sim.seed(), .dt = sim.dt(), .simulatedSeconds = sim.time(),
-                  .steps = sim.stepCount(), .trajectoryHash = run.recorder().trajectoryHash()};
+  Summary summary{.world = def.worldName,
+                  .seed = sim.seed(),
+                  .dt = sim.dt(),
+                  .simulatedSeconds = sim.time(),
+                  .steps = sim.stepCount(),
+                  .trajectoryHash = run.recorder().trajectoryHash()};
   if (host) summary.notes = host->notes(), summary.sandbox = host->layers();
   if (view) {
     for (const std::string& name : def.outputs.plotSignals) {

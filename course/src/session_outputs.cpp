@@ -58,9 +58,8 @@ TraceFile::~TraceFile() {
 void TraceFile::row(double time, std::size_t robot, const worlds::RobotRecord& rec, const std::string& task) {
   std::string& l = line_;
   l.clear();
-  for (double x : {time, static_cast<double>(robot), rec.truePose.position.x(), rec.truePose.position.y(),
-                   rec.truePose.heading, rec.odometry.position.x(), rec.odometry.position.y(), rec.odometry.heading,
-                   rec.wheels.forward, rec.wheels.turn}) {
+  for (double x : {time, static_cast<double>(robot), rec.truePose.position.x(), rec.truePose.position.y(), rec.truePose.heading,
+                   rec.odometry.position.x(), rec.odometry.position.y(), rec.odometry.heading, rec.wheels.forward, rec.wheels.turn}) {
     appendNumber(l, x);
     l += ',';
   }
@@ -85,8 +84,7 @@ Status TraceFile::commit() {
   return render::commitPartial(path_, "trace");
 }
 
-Status writeTimeline(const std::string& path, const std::vector<std::string>& robots,
-                     const std::vector<std::vector<TaskRecord>>& records) {
+Status writeTimeline(const std::string& path, const std::vector<std::string>& robots, const std::vector<std::vector<TaskRecord>>& records) {
   if (Status s = render::checkWritable(path, "timeline"); !s) return s;
   nlohmann::json events = nlohmann::json::array();
   for (std::size_t pid = 0; pid < records.size(); ++pid) {
@@ -94,9 +92,8 @@ Status writeTimeline(const std::string& path, const std::vector<std::string>& ro
     // Tasks sorted by start (outer first) go on the first track where they nest inside what is open.
     std::vector<const TaskRecord*> tasks;
     for (const TaskRecord& r : records[pid]) tasks.push_back(&r);
-    std::stable_sort(tasks.begin(), tasks.end(), [](const TaskRecord* a, const TaskRecord* b) {
-      return a->start != b->start ? a->start < b->start : a->end > b->end;
-    });
+    std::stable_sort(tasks.begin(), tasks.end(),
+                     [](const TaskRecord* a, const TaskRecord* b) { return a->start != b->start ? a->start < b->start : a->end > b->end; });
     std::vector<std::vector<double>> openEnds;  // per track, the ends of the tasks open on it, innermost last
     for (const TaskRecord* t : tasks) {
       std::size_t track = 0;
@@ -107,8 +104,13 @@ Status writeTimeline(const std::string& path, const std::vector<std::string>& ro
       }
       if (track == openEnds.size()) openEnds.emplace_back();
       openEnds[track].push_back(t->end);
-      events.push_back({{"ph", "X"}, {"name", t->name}, {"cat", "task"}, {"pid", pid}, {"tid", track},
-                        {"ts", std::llround(t->start * 1e6)}, {"dur", std::llround((t->end - t->start) * 1e6)},
+      events.push_back({{"ph", "X"},
+                        {"name", t->name},
+                        {"cat", "task"},
+                        {"pid", pid},
+                        {"tid", track},
+                        {"ts", std::llround(t->start * 1e6)},
+                        {"dur", std::llround((t->end - t->start) * 1e6)},
                         {"args", {{"where", t->where}, {"ended", toString(t->how)}, {"detail", t->detail}}}});
     }
   }

@@ -2,9 +2,9 @@
 // The text files of a run (trace CSV, timeline JSON) and its frame folder, each written aside and
 // moved into place only when complete.
 
+#include "frob/base/result.hpp"
 #include "frob/debug.hpp"
 #include "frob/render/image.hpp"
-#include "frob/base/result.hpp"
 #include "frob/worlds/recorder.hpp"
 
 #include <cstdio>

@@ -16,8 +16,8 @@ std::string format(const char* fmt, double a, double b = 0.0) {
 
 // One timeline entry: "  12.30 - 15.00 s  circleOnce  returned: (3.1, 4.2)".
 std::string taskLine(const TaskRecord& t) {
-  std::string line = format("      %7.2f - %7.2f s  ", t.start, t.end) + std::string(static_cast<std::size_t>(2 * t.depth), ' ') + t.name +
-                     "  " + toString(t.how);
+  std::string line =
+      format("      %7.2f - %7.2f s  ", t.start, t.end) + std::string(static_cast<std::size_t>(2 * t.depth), ' ') + t.name + "  " + toString(t.how);
   if (!t.detail.empty()) line += ": " + t.detail;
   return line + "\n";
 }
@@ -32,8 +32,7 @@ std::string formatSummary(const Summary& s, double wallSeconds) {
     text += "  " + r.name + ": " + r.controller + "\n";
     text += format("    distance %.2f m, collisions %.0f", r.distance, r.collisions);
     if (r.goalDistance) {
-      text += r.goalTime ? format(", goal reached at %.2f s", *r.goalTime)
-                         : format(", goal not reached (closest %.2f m)", *r.goalDistance);
+      text += r.goalTime ? format(", goal reached at %.2f s", *r.goalTime) : format(", goal not reached (closest %.2f m)", *r.goalDistance);
     }
     if (r.finishedAt) text += format(", finished at %.2f s", *r.finishedAt);
     text += "\n";
@@ -52,14 +51,24 @@ std::string summaryJson(const Summary& s, double wallSeconds) {
   for (const RobotSummary& r : s.robots) {
     nlohmann::ordered_json tasks = nlohmann::ordered_json::array();
     for (const TaskRecord& t : r.lastTasks) {
-      tasks.push_back({{"name", t.name}, {"where", t.where}, {"start", t.start}, {"end", t.end},
-                       {"ended", toString(t.how)}, {"detail", t.detail}, {"depth", t.depth}});
+      tasks.push_back({{"name", t.name},
+                       {"where", t.where},
+                       {"start", t.start},
+                       {"end", t.end},
+                       {"ended", toString(t.how)},
+                       {"detail", t.detail},
+                       {"depth", t.depth}});
     }
     auto optional = [](const std::optional<double>& x) { return x ? nlohmann::ordered_json(*x) : nlohmann::ordered_json(nullptr); };
-    robots.push_back({{"name", r.name}, {"controller", r.controller}, {"distance", r.distance},
-                      {"collisions", r.collisions}, {"goal_distance", optional(r.goalDistance)},
-                      {"goal_reached", r.goalTime.has_value()}, {"goal_time", optional(r.goalTime)},
-                      {"finished_at", optional(r.finishedAt)}, {"last_tasks", tasks},
+    robots.push_back({{"name", r.name},
+                      {"controller", r.controller},
+                      {"distance", r.distance},
+                      {"collisions", r.collisions},
+                      {"goal_distance", optional(r.goalDistance)},
+                      {"goal_reached", r.goalTime.has_value()},
+                      {"goal_time", optional(r.goalTime)},
+                      {"finished_at", optional(r.finishedAt)},
+                      {"last_tasks", tasks},
                       {"failure", r.failure.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.failure)},
                       {"hints", r.hints}});
   }
@@ -67,11 +76,19 @@ std::string summaryJson(const Summary& s, double wallSeconds) {
   for (const sandbox::Layer& l : s.sandbox) sandbox.push_back({{"layer", l.name}, {"applied", l.applied}, {"note", l.note}});
   char hash[24];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(s.trajectoryHash));
-  nlohmann::ordered_json doc = {{"world", s.world}, {"seed", s.seed}, {"dt", s.dt},
-                        {"simulated_seconds", s.simulatedSeconds}, {"steps", s.steps},
-                        {"wall_seconds", wallSeconds}, {"real_time_factor", wallSeconds > 0 ? s.simulatedSeconds / wallSeconds : 0.0},
-                        {"trajectory_hash", hash}, {"failed", s.failed()}, {"robots", robots}, {"written", s.written},
-                        {"notes", s.notes}, {"sandbox", sandbox}};
+  nlohmann::ordered_json doc = {{"world", s.world},
+                                {"seed", s.seed},
+                                {"dt", s.dt},
+                                {"simulated_seconds", s.simulatedSeconds},
+                                {"steps", s.steps},
+                                {"wall_seconds", wallSeconds},
+                                {"real_time_factor", wallSeconds > 0 ? s.simulatedSeconds / wallSeconds : 0.0},
+                                {"trajectory_hash", hash},
+                                {"failed", s.failed()},
+                                {"robots", robots},
+                                {"written", s.written},
+                                {"notes", s.notes},
+                                {"sandbox", sandbox}};
   return doc.dump(1) + "\n";
 }
 

@@ -6,11 +6,16 @@ namespace frob {
 
 const char* toString(TaskEnd end) {
   switch (end) {
-    case TaskEnd::Running: return "running";
-    case TaskEnd::Returned: return "returned";
-    case TaskEnd::Failed: return "failed";
-    case TaskEnd::Aborted: return "aborted";
-    case TaskEnd::Replaced: return "replaced";
+    case TaskEnd::Running:
+      return "running";
+    case TaskEnd::Returned:
+      return "returned";
+    case TaskEnd::Failed:
+      return "failed";
+    case TaskEnd::Aborted:
+      return "aborted";
+    case TaskEnd::Replaced:
+      return "replaced";
   }
   return "?";
 }
@@ -19,8 +24,9 @@ std::int64_t Timeline::start(std::int64_t parent, std::string name, std::string 
   std::int64_t id = next_++;
   auto p = running_.find(parent);
   int depth = p == running_.end() ? 0 : p->second.depth + 1;
-  const auto at = running_.emplace(id, TaskRecord{.id = id, .parent = parent, .depth = depth, .name = std::move(name),
-                                                  .where = std::move(where), .start = time}).first;
+  const auto at =
+      running_.emplace(id, TaskRecord{.id = id, .parent = parent, .depth = depth, .name = std::move(name), .where = std::move(where), .start = time})
+          .first;
   if (observer_) observer_(at->second);
   return id;
 }

@@ -1,4 +1,5 @@
 #include "frob/errors.hpp"
+
 #include "frob/switching.hpp"
 
 #include <cstdio>

@@ -1,7 +1,8 @@
+#include "frob/instant.hpp"
+
 #include "frob/detail/node.hpp"
 #include "frob/errors.hpp"
 #include "frob/event.hpp"
-#include "frob/instant.hpp"
 
 #include <algorithm>
 #include <cmath>

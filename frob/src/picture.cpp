@@ -16,22 +16,12 @@ Picture& Picture::operator+=(const Picture& b) {
 Picture circle(double r) { return single({.kind = Shape::Kind::Circle, .points = {Point2::Zero()}, .radius = r}); }
 Picture disc(double r) { return single({.kind = Shape::Kind::Disc, .points = {Point2::Zero()}, .radius = r}); }
 Picture line(const Point2& a, const Point2& b) { return single({.kind = Shape::Kind::Polyline, .points = {a, b}}); }
-Picture polyline(std::vector<Point2> points) {
-  return single({.kind = Shape::Kind::Polyline, .points = std::move(points)});
-}
-Picture polygon(std::vector<Point2> points) {
-  return single({.kind = Shape::Kind::Polygon, .points = std::move(points)});
-}
-Picture arrow(const Point2& tail, const Point2& tip) {
-  return single({.kind = Shape::Kind::Arrow, .points = {tail, tip}});
-}
-Picture text(std::string s) {
-  return single({.kind = Shape::Kind::Text, .points = {Point2::Zero()}, .text = std::move(s)});
-}
+Picture polyline(std::vector<Point2> points) { return single({.kind = Shape::Kind::Polyline, .points = std::move(points)}); }
+Picture polygon(std::vector<Point2> points) { return single({.kind = Shape::Kind::Polygon, .points = std::move(points)}); }
+Picture arrow(const Point2& tail, const Point2& tip) { return single({.kind = Shape::Kind::Arrow, .points = {tail, tip}}); }
+Picture text(std::string s) { return single({.kind = Shape::Kind::Text, .points = {Point2::Zero()}, .text = std::move(s)}); }
 
-Picture plotValue(std::string name, double v) {
-  return single({.kind = Shape::Kind::Value, .text = std::move(name), .value = v});
-}
+Picture plotValue(std::string name, double v) { return single({.kind = Shape::Kind::Value, .text = std::move(name), .value = v}); }
 
 Picture withColor(const Color& c, Picture p) {
   std::vector<Shape> shapes = p.shapes();

@@ -10,8 +10,7 @@
 namespace frob {
 
 void detail::sonarOutOfRange(std::size_t index, std::size_t size) {
-  throw std::out_of_range("Robot: sonar " + std::to_string(index) + " read from a frame of " + std::to_string(size) +
-                          " sonars");
+  throw std::out_of_range("Robot: sonar " + std::to_string(index) + " read from a frame of " + std::to_string(size) + " sonars");
 }
 
 namespace {
@@ -45,8 +44,7 @@ class FixedFrameNode final : public detail::BehaviorNode<const SensorFrame*> {
 template <class T>
 class FrameListEvent final : public detail::EventNode<T> {
  public:
-  FrameListEvent(std::shared_ptr<detail::BehaviorNode<const SensorFrame*>> frame,
-                 std::vector<T> SensorFrame::*list)
+  FrameListEvent(std::shared_ptr<detail::BehaviorNode<const SensorFrame*>> frame, std::vector<T> SensorFrame::*list)
       : frame_(std::move(frame)), list_(list) {}
 
  protected:
@@ -101,9 +99,7 @@ struct Robot::Sensors {
   Reading<T> read(detail::FrameField<T> field) const {
     return Reading<T>(field, detail::FrameArg{&frame.node()->value(), !inPlace, frame.node()});
   }
-  Reading<double> read(detail::FrameSlot slot, std::size_t index = 0) const {
-    return read(detail::FrameField<double>{slot, index});
-  }
+  Reading<double> read(detail::FrameSlot slot, std::size_t index = 0) const { return read(detail::FrameField<double>{slot, index}); }
 };
 
 RobotSpec nomadSpec(int count) {
@@ -113,8 +109,7 @@ RobotSpec nomadSpec(int count) {
   return spec;
 }
 
-Robot::Robot(RobotSpec spec, std::shared_ptr<detail::BehaviorNode<const SensorFrame*>> frameNode,
-             bool inPlace) {
+Robot::Robot(RobotSpec spec, std::shared_ptr<detail::BehaviorNode<const SensorFrame*>> frameNode, bool inPlace) {
   FROB_ASSERT(!spec.sonarAngles.empty(), "Robot: the spec has no sonars");
   Behavior<const SensorFrame*> frame(frameNode);
   sensors_ = std::make_shared<const Sensors>(Sensors{
@@ -127,11 +122,9 @@ Robot::Robot(RobotSpec spec, std::shared_ptr<detail::BehaviorNode<const SensorFr
   });
 }
 
-Robot::Robot(RobotSpec spec, FrameSource source)
-    : Robot(std::move(spec), makeFrameNode(std::move(source)), false) {}
+Robot::Robot(RobotSpec spec, FrameSource source) : Robot(std::move(spec), makeFrameNode(std::move(source)), false) {}
 
-Robot::Robot(RobotSpec spec, std::shared_ptr<const SensorFrame> frame)
-    : Robot(std::move(spec), makeFixedFrameNode(std::move(frame)), true) {}
+Robot::Robot(RobotSpec spec, std::shared_ptr<const SensorFrame> frame) : Robot(std::move(spec), makeFixedFrameNode(std::move(frame)), true) {}
 
 Robot::Robot(RobotSpec spec, ScriptedSensors sensors) : Robot(spec, scriptedSource(spec, std::move(sensors))) {}
 
@@ -140,9 +133,8 @@ const RobotSpec& Robot::spec() const { return sensors_->spec; }
 Reading<double> Robot::sonar(int i, std::source_location loc) const {
   int n = static_cast<int>(sensors_->spec.sonarAngles.size());
   if (i < 0 || i >= n) {
-    throw UsageError(std::string(loc.file_name()) + ":" + std::to_string(loc.line()) + ": sonar(r, " +
-                     std::to_string(i) + ") does not exist: the ring has " + std::to_string(n) + " sonars, 0 (front) to " +
-                     std::to_string(n - 1) + " counter-clockwise");
+    throw UsageError(std::string(loc.file_name()) + ":" + std::to_string(loc.line()) + ": sonar(r, " + std::to_string(i) +
+                     ") does not exist: the ring has " + std::to_string(n) + " sonars, 0 (front) to " + std::to_string(n - 1) + " counter-clockwise");
   }
   return sensors_->read(detail::FrameSlot::sonar, static_cast<std::size_t>(i));
 }
@@ -153,8 +145,7 @@ int Robot::sonarNearest(double angle) const {
   const std::vector<double>& angles = sensors_->spec.sonarAngles;
   int best = 0;
   for (int i = 1; i < static_cast<int>(angles.size()); ++i) {
-    if (std::abs(angleDiff(angles[static_cast<std::size_t>(i)], angle)) <
-        std::abs(angleDiff(angles[static_cast<std::size_t>(best)], angle))) {
+    if (std::abs(angleDiff(angles[static_cast<std::size_t>(i)], angle)) < std::abs(angleDiff(angles[static_cast<std::size_t>(best)], angle))) {
       best = i;
     }
   }

@@ -89,10 +89,11 @@ std::string tooDeepMessage(const std::vector<std::string>& chain, int limit) {
     if (n > count[self]) self = name;
   }
   std::string call = "co_await " + self + "();";
-  return "task '" + self + "' is running inside itself " + std::to_string(count[self]) + " times over (tasks nested " +
-         "more than " + std::to_string(limit) + " deep): a task that ends with " + call +
+  return "task '" + self + "' is running inside itself " + std::to_string(count[self]) + " times over (tasks nested " + "more than " +
+         std::to_string(limit) + " deep): a task that ends with " + call +
          " waits for that call, so every earlier call stays in memory for as long as the robot runs. End it with "
-         "co_await become(" + self + "()); instead: the new call then takes the old one's place.";
+         "co_await become(" +
+         self + "()); instead: the new call then takes the old one's place.";
 }
 
 std::optional<RoboErr> roboErrIn(const std::exception_ptr& e) {

@@ -7,9 +7,7 @@ namespace frob::render::detail {
 
 namespace {
 std::uint8_t channel(double v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); }
-double cross(const Vec2& o, const Vec2& a, const Vec2& b) {
-  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
-}
+double cross(const Vec2& o, const Vec2& a, const Vec2& b) { return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x()); }
 }  // namespace
 
 std::vector<Vec2> simplifyPolyline(std::span<const Vec2> pts, double tol) {
@@ -43,9 +41,7 @@ std::vector<Vec2> simplifyPolyline(std::span<const Vec2> pts, double tol) {
   return out;
 }
 
-Rgba8 rgba8(const Color& c, double alpha) {
-  return {channel(c.r), channel(c.g), channel(c.b), channel(c.a * alpha)};
-}
+Rgba8 rgba8(const Color& c, double alpha) { return {channel(c.r), channel(c.g), channel(c.b), channel(c.a * alpha)}; }
 
 // A chord of a circle with n segments strays r (1 - cos(pi / n)) ~ r pi^2 / (2 n^2) from it; keep
 // that under a quarter pixel. Fewer, fatter triangles matter: llvmpipe pays per triangle.
@@ -66,9 +62,7 @@ void Canvas::quad(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d, Rg
   triangle(a, c, d, col);
 }
 
-void Canvas::rect(double x0, double y0, double x1, double y1, Rgba8 col) {
-  quad({x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}, col);
-}
+void Canvas::rect(double x0, double y0, double x1, double y1, Rgba8 col) { quad({x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}, col); }
 
 void Canvas::line(const Vec2& a, const Vec2& b, double width, Rgba8 col, bool cap) {
   Vec2 d = b - a;

@@ -34,11 +34,11 @@ enum class Mode { Opaque, Blend };
 // glyph quads cost llvmpipe microseconds each; copying glyph bitmaps costs nanoseconds.
 struct OverlayOp {
   enum class Kind { Text, Fill } kind = Kind::Text;
-  int font = 0;                    // Text: which face
+  int font = 0;                        // Text: which face
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // Text: pen at (x0, y0) on the baseline; Fill: the rectangle
   std::string text;
   Rgba8 color;
-  int clip[4] = {0, 0, 0, 0};      // x0, y0, x1, y1 of the region it may touch
+  int clip[4] = {0, 0, 0, 0};  // x0, y0, x1, y1 of the region it may touch
 };
 
 struct Run {
@@ -95,9 +95,7 @@ class Canvas {
   void begin(Mode mode) {
     if (runs_.empty() || runs_.back().mode != mode) runs_.push_back({mode, vertices_.size()});
   }
-  void vertex(double x, double y, Rgba8 col) {
-    vertices_.push_back({static_cast<float>(x), static_cast<float>(y), 0.0f, col});
-  }
+  void vertex(double x, double y, Rgba8 col) { vertices_.push_back({static_cast<float>(x), static_cast<float>(y), 0.0f, col}); }
   std::vector<Vertex> vertices_;
   std::vector<Run> runs_;
   std::vector<OverlayOp> overlay_;

@@ -35,8 +35,7 @@ void prism(Canvas& c, const std::vector<Point2>& foot, double z0, double z1, con
     tri(c, col, a, e, f);
   }
   for (std::size_t i = 1; i + 1 < n; ++i) {
-    tri(c, col, V3(foot[0].x(), foot[0].y(), z1), V3(foot[i].x(), foot[i].y(), z1),
-        V3(foot[i + 1].x(), foot[i + 1].y(), z1));
+    tri(c, col, V3(foot[0].x(), foot[0].y(), z1), V3(foot[i].x(), foot[i].y(), z1), V3(foot[i + 1].x(), foot[i + 1].y(), z1));
   }
 }
 
@@ -67,8 +66,8 @@ Eigen::Matrix4d perspective(double fovy, double aspect, double zNear, double zFa
 
 }  // namespace
 
-void buildChase(ChaseLayers& layers, Canvas& overlay, const FontAtlas& fonts, const RenderDef& def,
-                const FrameScene& scene, const Mesh& robot, const Viewport& vp) {
+void buildChase(ChaseLayers& layers, Canvas& overlay, const FontAtlas& fonts, const RenderDef& def, const FrameScene& scene, const Mesh& robot,
+                const Viewport& vp) {
   // Camera: behind and above the followed robot, looking a little ahead of it. With no robot,
   // from the south of the world looking at its centre.
   V3 eye, target;
@@ -109,8 +108,7 @@ void buildChase(ChaseLayers& layers, Canvas& overlay, const FontAtlas& fonts, co
   for (const Block& k : scene.blocks) {
     const Vec2 u = unitVector(k.angle), v(-u.y(), u.x());
     const Vec2 ex = u * k.halfExtents.x(), ey = v * k.halfExtents.y();
-    prism(c, {k.center - ex - ey, k.center + ex - ey, k.center + ex + ey, k.center - ex + ey}, 0.0, def.wallHeight,
-          palette::obstacle);
+    prism(c, {k.center - ex - ey, k.center + ex - ey, k.center + ex + ey, k.center - ex + ey}, 0.0, def.wallHeight, palette::obstacle);
   }
   for (const Pillar& p : scene.pillars) {
     std::vector<Point2> foot;
@@ -122,12 +120,10 @@ void buildChase(ChaseLayers& layers, Canvas& overlay, const FontAtlas& fonts, co
     const Color body = palette::robot(r, ri);
     const double s = r.spec.radius, ch = std::cos(r.pose.heading), sh = std::sin(r.pose.heading);
     auto place = [&](const V3& v) {
-      return V3(r.pose.position.x() + s * (ch * v.x() - sh * v.y()), r.pose.position.y() + s * (sh * v.x() + ch * v.y()),
-                s * v.z());
+      return V3(r.pose.position.x() + s * (ch * v.x() - sh * v.y()), r.pose.position.y() + s * (sh * v.x() + ch * v.y()), s * v.z());
     };
     for (std::size_t t = 0; t < robot.colors.size(); ++t) {
-      tri(c, robot.tinted[t] ? body : robot.colors[t], place(robot.corners[3 * t]), place(robot.corners[3 * t + 1]),
-          place(robot.corners[3 * t + 2]));
+      tri(c, robot.tinted[t] ? body : robot.colors[t], place(robot.corners[3 * t]), place(robot.corners[3 * t + 1]), place(robot.corners[3 * t + 2]));
     }
   }
 }

@@ -9,13 +9,13 @@
 namespace frob::render::detail {
 
 struct ChaseLayers {
-  Canvas ground;                 // floor decals (grid, paths, sonar, pictures), 3D at z = 0, drawn in order
-  Canvas solid;                  // walls, obstacles and robots, drawn with the depth test
-  Eigen::Matrix4d viewProj;      // world to clip space
+  Canvas ground;             // floor decals (grid, paths, sonar, pictures), 3D at z = 0, drawn in order
+  Canvas solid;              // walls, obstacles and robots, drawn with the depth test
+  Eigen::Matrix4d viewProj;  // world to clip space
 };
 
 // Fills `layers` for `scene` seen in viewport `vp`; labels are projected and drawn into `overlay`.
-void buildChase(ChaseLayers& layers, Canvas& overlay, const FontAtlas& fonts, const RenderDef& def,
-                const FrameScene& scene, const Mesh& robot, const Viewport& vp);
+void buildChase(ChaseLayers& layers, Canvas& overlay, const FontAtlas& fonts, const RenderDef& def, const FrameScene& scene, const Mesh& robot,
+                const Viewport& vp);
 
 }  // namespace frob::render::detail

@@ -60,9 +60,8 @@ using TextSink = std::function<void(const Point2& at, const std::string& text, C
 // cleared to the floor colour and only the part of that viewport outside the floor is painted.
 // With `staticEnd`, it receives the canvas's vertex count once the static world (floor, grid,
 // obstacles, walls, point markers) is drawn: those triangles depend on nothing that moves.
-void drawGround(Canvas& canvas, const FontAtlas& fonts, const RenderDef& def, const FrameScene& scene,
-                const Mapping& m, bool bodies, const TextSink& text, const Viewport* clearedFloor = nullptr,
-                std::size_t* staticEnd = nullptr);
+void drawGround(Canvas& canvas, const FontAtlas& fonts, const RenderDef& def, const FrameScene& scene, const Mapping& m, bool bodies,
+                const TextSink& text, const Viewport* clearedFloor = nullptr, std::size_t* staticEnd = nullptr);
 // One Picture in world coordinates.
 void drawPicture(Canvas& canvas, const Picture& picture, const Mapping& m, const TextSink& text);
 // Time, and per robot its task, wheel command and front sonar reading, in the top-left of `vp`.

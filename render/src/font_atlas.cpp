@@ -1,4 +1,5 @@
 #include "font_atlas.hpp"
+
 #include "raster.hpp"
 
 #include <ft2build.h>
@@ -23,8 +24,7 @@ struct FtFace {
 };
 }  // namespace
 
-Result<std::unique_ptr<FontAtlas>> FontAtlas::create(const std::string& sansFile, const std::string& monoFile,
-                                                     int pixels) {
+Result<std::unique_ptr<FontAtlas>> FontAtlas::create(const std::string& sansFile, const std::string& monoFile, int pixels) {
   if (pixels < 6 || pixels > 64) {
     return Status::failure("render: text size " + std::to_string(pixels) + " px is outside 6..64");
   }
@@ -37,9 +37,8 @@ Result<std::unique_ptr<FontAtlas>> FontAtlas::create(const std::string& sansFile
   for (int f = 0; f < 2; ++f) {
     FtFace face;
     if (const FT_Error err = FT_New_Face(ft.lib, files[f]->c_str(), 0, &face.face); err != 0) {
-      return Status::failure("render: cannot load font '" + *files[f] + "' (FreeType error " +
-                             std::to_string(err) + "); install fonts-dejavu-core or set RenderDef::" +
-                             (f == 0 ? "fontFile" : "monoFontFile"));
+      return Status::failure("render: cannot load font '" + *files[f] + "' (FreeType error " + std::to_string(err) +
+                             "); install fonts-dejavu-core or set RenderDef::" + (f == 0 ? "fontFile" : "monoFontFile"));
     }
     FT_Set_Pixel_Sizes(face.face, 0, static_cast<FT_UInt>(pixels));
     Face& out = atlas->faces_[f];
@@ -61,8 +60,7 @@ Result<std::unique_ptr<FontAtlas>> FontAtlas::create(const std::string& sansFile
       }
       if (y + gl.h + 1 >= kSize) return Status::failure("render: text size too large for the glyph atlas");
       for (int r = 0; r < gl.h; ++r)
-        for (int col = 0; col < gl.w; ++col)
-          atlas->alpha_[(y + r) * kSize + x + col] = g->bitmap.buffer[r * g->bitmap.pitch + col];
+        for (int col = 0; col < gl.w; ++col) atlas->alpha_[(y + r) * kSize + x + col] = g->bitmap.buffer[r * g->bitmap.pitch + col];
       gl.ax = x;
       gl.ay = y;
       x += gl.w + 1;

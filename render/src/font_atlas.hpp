@@ -18,8 +18,7 @@ enum class Font { Sans = 0, Mono = 1 };
 class FontAtlas {
  public:
   // Loads both fonts at `pixels` size and packs their glyphs. Fails with the font file named.
-  [[nodiscard]] static Result<std::unique_ptr<FontAtlas>> create(const std::string& sansFile,
-                                                                 const std::string& monoFile, int pixels);
+  [[nodiscard]] static Result<std::unique_ptr<FontAtlas>> create(const std::string& sansFile, const std::string& monoFile, int pixels);
   // Queues `text` on `canvas` with its baseline starting at `pen` (pixels, y down). Returns the end x.
   double draw(Canvas& canvas, Font font, Vec2 pen, std::string_view text, Rgba8 col) const;
   [[nodiscard]] double width(Font font, std::string_view text) const;
@@ -31,8 +30,8 @@ class FontAtlas {
  private:
   struct Glyph {
     int left = 0, top = 0, w = 0, h = 0;  // bitmap placement from the pen, pixels (top: above baseline)
-    int advance = 0;                       // pixels
-    int ax = 0, ay = 0;                    // top-left of its bitmap in the atlas
+    int advance = 0;                      // pixels
+    int ax = 0, ay = 0;                   // top-left of its bitmap in the atlas
   };
   struct Face {
     std::array<Glyph, 96> glyphs;  // ' ' .. '~' and '?' for anything else (index 95 unused)

@@ -9,8 +9,7 @@ namespace frob::render::detail {
 
 Result<std::unique_ptr<GlContext>> GlContext::create(int width, int height, bool depth, int rasterThreads) {
   if (width <= 0 || height <= 0 || width > 8192 || height > 8192) {
-    return Status::failure("render: frame size " + std::to_string(width) + "x" + std::to_string(height) +
-                           " is outside 1..8192 pixels");
+    return Status::failure("render: frame size " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1..8192 pixels");
   }
   // llvmpipe reads LP_NUM_THREADS once, when the first context is created. With 0 it rasterizes
   // on the calling thread, which measured fastest for our small frames on a shared 2-core machine.

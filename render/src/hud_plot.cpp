@@ -27,13 +27,11 @@ std::pair<double, double> niceRange(double lo, double hi) {
   const double span = hi - lo;
   if (!(span > 0.0) || !std::isfinite(span)) return {lo, hi};
   const auto nearZero = [&](double v) { return std::abs(v) < 1e-3 * span ? 0.0 : v; };  // rounding noise round 0
-  const double step = std::pow(10.0, std::floor(std::log10(span)) - 1.0);  // two significant digits of the span
+  const double step = std::pow(10.0, std::floor(std::log10(span)) - 1.0);               // two significant digits of the span
   return {std::floor(nearZero(lo) / step) * step, std::ceil(nearZero(hi) / step) * step};
 }
 
-Color palette::series(const Series& s, std::size_t index) {
-  return s.color.value_or(kSeriesColors[index % std::size(kSeriesColors)]);
-}
+Color palette::series(const Series& s, std::size_t index) { return s.color.value_or(kSeriesColors[index % std::size(kSeriesColors)]); }
 
 void drawHud(Canvas& c, const FontAtlas& fonts, const FrameScene& scene, const Viewport& vp) {
   std::vector<std::pair<std::string, Color>> lines;
@@ -43,11 +41,9 @@ void drawHud(Canvas& c, const FontAtlas& fonts, const FrameScene& scene, const V
     const std::string name = r.name.empty() ? format("robot %zu", i) : r.name;
     lines.emplace_back(name + ": " + (r.task.empty() ? std::string("-") : r.task), palette::robot(r, i));
     const int f = frontSonarIndex(r.spec);
-    const std::string front = (f >= 0 && static_cast<std::size_t>(f) < r.sonar.size())
-                                  ? format("%.2f m", r.sonar[static_cast<std::size_t>(f)])
-                                  : std::string("-");
-    lines.emplace_back(format("  fwd %+.2f m/s turn %+.2f rad/s front ", r.wheels.forward, r.wheels.turn) + front,
-                       white);
+    const std::string front =
+        (f >= 0 && static_cast<std::size_t>(f) < r.sonar.size()) ? format("%.2f m", r.sonar[static_cast<std::size_t>(f)]) : std::string("-");
+    lines.emplace_back(format("  fwd %+.2f m/s turn %+.2f rad/s front ", r.wheels.forward, r.wheels.turn) + front, white);
   }
   const double lh = fonts.lineHeight(Font::Mono);
   double w = 0;

@@ -27,8 +27,8 @@ bool writePngStream(std::FILE* f, const Image& image) {
   png_set_compression_level(png, 1);
   png_set_filter(png, 0, PNG_FILTER_NONE);
   // Frames are opaque: store RGB, a quarter less to compress; libpng skips each fourth byte.
-  png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 8,
-               PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
   png_set_filler(png, 0, PNG_FILLER_AFTER);
   for (int y = 0; y < image.height; ++y) {
@@ -42,8 +42,7 @@ bool writePngStream(std::FILE* f, const Image& image) {
 }  // namespace
 
 Status writePng(const std::string& path, const Image& image) {
-  if (image.width <= 0 || image.height <= 0 ||
-      image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4) {
+  if (image.width <= 0 || image.height <= 0 || image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4) {
     return Status::failure("png: cannot write '" + path + "': the image is empty or its size does not match its pixels");
   }
   if (Status s = checkWritable(path, "png"); !s) return s;
@@ -76,9 +75,7 @@ Result<Image> readPng(const std::string& path) {
   return image;
 }
 
-Status validateOutputDirectory(const std::string& dir) {
-  return checkWritable((std::filesystem::path(dir) / "frame_000000.png").string(), "frames");
-}
+Status validateOutputDirectory(const std::string& dir) { return checkWritable((std::filesystem::path(dir) / "frame_000000.png").string(), "frames"); }
 
 std::string framePath(const std::string& dir, long index) {
   char name[32];

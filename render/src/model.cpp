@@ -1,6 +1,7 @@
 #include "model.hpp"
 
 #include <assimp/Importer.hpp>
+
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>

@@ -1,8 +1,8 @@
 #pragma once
 // A robot mesh loaded with assimp: flat triangles with a colour each.
 
-#include "frob/picture.hpp"
 #include "frob/base/result.hpp"
+#include "frob/picture.hpp"
 
 #include <Eigen/Core>
 

@@ -19,8 +19,7 @@ Status checkWritable(const std::string& path, const std::string& what) {
                            (exists ? "' is not a directory" : "' does not exist"));
   }
   if (::access(dir.c_str(), W_OK | X_OK) != 0) {
-    return Status::failure(what + ": cannot write '" + path + "': directory '" + dir.string() +
-                           "' is not writable (" + std::strerror(errno) + ")");
+    return Status::failure(what + ": cannot write '" + path + "': directory '" + dir.string() + "' is not writable (" + std::strerror(errno) + ")");
   }
   if (fs::is_directory(path, ec)) return Status::failure(what + ": cannot write '" + path + "': it is a directory");
   return {};

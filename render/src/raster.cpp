@@ -30,7 +30,7 @@ struct P {
 // endpoints in a canonical order, so the two triangles sharing an edge get the very same value and
 // split the pixels on it (the left bound includes its crossing, the right bound excludes it).
 struct Edge {
-  P a, b;        // a before b in (y, x) order
+  P a, b;  // a before b in (y, x) order
   bool horizontal;
   bool leftBound;  // interior lies at larger x (row bound from below)
   bool below;      // horizontal edge: interior lies at larger y
@@ -71,14 +71,12 @@ void span(std::uint8_t* row, int x0, int x1, Rgba8 c, bool blend) {
   const unsigned a = c.a;
   const std::uint16_t add[4] = {static_cast<std::uint16_t>(c.r * a + 127), static_cast<std::uint16_t>(c.g * a + 127),
                                 static_cast<std::uint16_t>(c.b * a + 127), static_cast<std::uint16_t>(255 * 255 + 127)};
-  const std::uint16_t keep[4] = {static_cast<std::uint16_t>(255 - a), static_cast<std::uint16_t>(255 - a),
-                                 static_cast<std::uint16_t>(255 - a), 0};
+  const std::uint16_t keep[4] = {static_cast<std::uint16_t>(255 - a), static_cast<std::uint16_t>(255 - a), static_cast<std::uint16_t>(255 - a), 0};
 #if defined(__SSE2__)
-  const __m128i vadd = _mm_set_epi16(static_cast<short>(add[3]), static_cast<short>(add[2]), static_cast<short>(add[1]),
-                                     static_cast<short>(add[0]), static_cast<short>(add[3]), static_cast<short>(add[2]),
-                                     static_cast<short>(add[1]), static_cast<short>(add[0]));
-  const __m128i vkeep = _mm_set_epi16(0, static_cast<short>(keep[0]), static_cast<short>(keep[0]), static_cast<short>(keep[0]),
-                                      0, static_cast<short>(keep[0]), static_cast<short>(keep[0]), static_cast<short>(keep[0]));
+  const __m128i vadd = _mm_set_epi16(static_cast<short>(add[3]), static_cast<short>(add[2]), static_cast<short>(add[1]), static_cast<short>(add[0]),
+                                     static_cast<short>(add[3]), static_cast<short>(add[2]), static_cast<short>(add[1]), static_cast<short>(add[0]));
+  const __m128i vkeep = _mm_set_epi16(0, static_cast<short>(keep[0]), static_cast<short>(keep[0]), static_cast<short>(keep[0]), 0,
+                                      static_cast<short>(keep[0]), static_cast<short>(keep[0]), static_cast<short>(keep[0]));
   const __m128i zero = _mm_setzero_si128(), one = _mm_set1_epi16(1);
   auto div255 = [&](__m128i v) { return _mm_srli_epi16(_mm_add_epi16(_mm_add_epi16(v, one), _mm_srli_epi16(v, 8)), 8); };
   for (; j + 16 <= n; j += 16) {
@@ -96,8 +94,7 @@ void span(std::uint8_t* row, int x0, int x1, Rgba8 c, bool blend) {
 
 namespace {
 
-void triangle(const Vertex& v0, const Vertex& v1, const Vertex& v2, bool blend, std::uint8_t* rgba, int width,
-              int height) {
+void triangle(const Vertex& v0, const Vertex& v1, const Vertex& v2, bool blend, std::uint8_t* rgba, int width, int height) {
   const P p0{snap(v0.x), snap(v0.y)}, p1{snap(v1.x), snap(v1.y)}, p2{snap(v2.x), snap(v2.y)};
   for (const P& p : {p0, p1, p2})
     if (!(std::abs(p.x) < 1e7 && std::abs(p.y) < 1e7)) return;  // non-finite or absurd: nothing sensible to draw
@@ -125,7 +122,7 @@ void triangle(const Vertex& v0, const Vertex& v1, const Vertex& v2, bool blend, 
         continue;
       }
       const double xc = e.a.x + (yc - e.a.y) * e.slope;  // where the edge's line crosses the row
-      const double c = ceilFast(xc - 0.5);                // first column whose centre is at or right of it
+      const double c = ceilFast(xc - 0.5);               // first column whose centre is at or right of it
       if (e.leftBound) {
         if (c > lo) lo = c > hi ? hi : static_cast<int>(c);
       } else {
@@ -178,8 +175,7 @@ void fillRgba(std::uint8_t* rgba, int width, int height, Rgba8 clear) {
   }
 }
 
-void rasterize(const Canvas& canvas, std::uint8_t* rgba, int width, int height, std::size_t firstVertex,
-               std::size_t endVertex) {
+void rasterize(const Canvas& canvas, std::uint8_t* rgba, int width, int height, std::size_t firstVertex, std::size_t endVertex) {
   const std::vector<Vertex>& v = canvas.vertices();
   const std::vector<Run>& runs = canvas.runs();
   endVertex = std::min(endVertex, v.size());

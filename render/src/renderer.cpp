@@ -1,11 +1,10 @@
 #include "frob/render/renderer.hpp"
 
-#include "frob/base/layout.hpp"
-#include "frob/worlds/fnv.hpp"
-
 #include "chase_view.hpp"
 #include "draw.hpp"
 #include "font_atlas.hpp"
+#include "frob/base/layout.hpp"
+#include "frob/worlds/fnv.hpp"
 #include "gl_context.hpp"
 #include "model.hpp"
 #include "raster.hpp"
@@ -30,8 +29,7 @@ RenderDef withDefaults(RenderDef def) {
 
 Status checkSizes(const RenderDef& def) {
   if (def.width < 16 || def.height < 16 || def.width > 8192 || def.height > 8192) {
-    return Status::failure("render: frame size " + std::to_string(def.width) + "x" + std::to_string(def.height) +
-                           " is outside 16..8192 pixels");
+    return Status::failure("render: frame size " + std::to_string(def.width) + "x" + std::to_string(def.height) + " is outside 16..8192 pixels");
   }
   if (def.layout != PanelLayout::WorldOnly && !(def.plotShare >= 0.05 && def.plotShare <= 0.95)) {
     return Status::failure("render: plotShare " + std::to_string(def.plotShare) + " is outside 0.05..0.95");
@@ -46,7 +44,10 @@ void drawBatch(const detail::Canvas& canvas) {
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const std::size_t first = runs[i].first, end = i + 1 < runs.size() ? runs[i + 1].first : v.size();
     if (end == first) continue;
-    if (runs[i].mode == detail::Mode::Opaque) glDisable(GL_BLEND); else glEnable(GL_BLEND);
+    if (runs[i].mode == detail::Mode::Opaque)
+      glDisable(GL_BLEND);
+    else
+      glEnable(GL_BLEND);
     // Pointers start at the run so that Mesa uploads only this run's vertices.
     glVertexPointer(3, GL_FLOAT, sizeof(detail::Vertex), &v[first].x);
     glColorPointer(4, GL_UNSIGNED_BYTE, sizeof(detail::Vertex), &v[first].color);
@@ -216,7 +217,10 @@ Image Renderer::render(const FrameScene& scene, const PlotSet& plots) {
 void Renderer::renderInto(const FrameScene& scene, const PlotSet& plots, Image& out) {
   Impl& m = *impl_;
   const bool topDown = m.def.view == ViewMode::TopDown;
-  if (topDown) m.begin2d(detail::palette::floor, out); else m.begin(detail::palette::background, out);
+  if (topDown)
+    m.begin2d(detail::palette::floor, out);
+  else
+    m.begin(detail::palette::background, out);
   const detail::Panels panels = detail::layoutPanels(m.def);
   const auto& w = panels.world;
   m.overlay.setClip(static_cast<int>(w.x), static_cast<int>(w.y), static_cast<int>(w.x + w.w), static_cast<int>(w.y + w.h));
@@ -241,8 +245,7 @@ void Renderer::renderInto(const FrameScene& scene, const PlotSet& plots, Image& 
   } else {
     detail::buildChase(m.chase, m.overlay, *m.fonts, m.def, scene, *m.model, panels.world);
     const auto& vp = panels.world;
-    glViewport(static_cast<GLint>(vp.x), static_cast<GLint>(m.def.height - vp.y - vp.h), static_cast<GLsizei>(vp.w),
-               static_cast<GLsizei>(vp.h));
+    glViewport(static_cast<GLint>(vp.x), static_cast<GLint>(m.def.height - vp.y - vp.h), static_cast<GLsizei>(vp.w), static_cast<GLsizei>(vp.h));
     glMatrixMode(GL_PROJECTION);
     const Eigen::Matrix4f proj = m.chase.viewProj.cast<float>();
     glLoadMatrixf(proj.data());
@@ -274,8 +277,7 @@ Image Renderer::renderPlots(const PlotSet& plots, double now) {
   Impl& m = *impl_;
   Image out;
   m.begin2d(white, out);
-  detail::drawPlots(m.overlay, *m.fonts, plots, now,
-                    {0, 0, static_cast<double>(m.def.width), static_cast<double>(m.def.height)});
+  detail::drawPlots(m.overlay, *m.fonts, plots, now, {0, 0, static_cast<double>(m.def.width), static_cast<double>(m.def.height)});
   m.finish2d(out);
   return out;
 }

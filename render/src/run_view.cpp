@@ -12,12 +12,17 @@ constexpr double kWallThickness = 0.05;  // thin walls are Box2D segments; drawn
 
 void addWall(FrameScene& s, const worlds::WallDef& w) {
   worlds::forEachEdge(
-      w, [&](const Point2& a, const Point2& b) { s.walls.push_back({a, b, kWallThickness}); },
+      w,
+      [&](const Point2& a, const Point2& b) {
+        s.walls.push_back({a, b, kWallThickness});
+      },
       [&](const Point2& p, const Point2& q) {
         const Point2 lo = p.cwiseMin(q), hi = p.cwiseMax(q);
         s.blocks.push_back({(lo + hi) / 2, (hi - lo) / 2, 0.0});
       },
-      [&](const Point2& centre, double radius) { s.pillars.push_back({centre, radius}); });
+      [&](const Point2& centre, double radius) {
+        s.pillars.push_back({centre, radius});
+      });
 }
 
 // Appends `p` to a path that keeps points at least `spacing` apart, plus the newest position as a
@@ -30,7 +35,10 @@ void extendPath(std::vector<Point2>& path, char& loose, const Point2& p, double 
   }
   const Point2& kept = loose && path.size() >= 2 ? path[path.size() - 2] : path.back();
   const bool keep = (p - kept).norm() >= spacing;
-  if (loose) path.back() = p; else path.push_back(p);
+  if (loose)
+    path.back() = p;
+  else
+    path.push_back(p);
   loose = keep ? 0 : 1;
 }
 

@@ -101,9 +101,9 @@ struct VideoWriter::Impl {
   std::condition_variable changed;
   std::deque<AVFrame*> queue;   // guarded by mutex: converted frames waiting for the encoder
   std::vector<AVFrame*> spare;  // guarded by mutex: encoded frames to reuse
-  Status workerStatus;       // guarded by mutex: the first encoding error
-  bool stopping = false;     // guarded by mutex
-  bool dropQueued = false;   // guarded by mutex: stop without encoding what waits
+  Status workerStatus;          // guarded by mutex: the first encoding error
+  bool stopping = false;        // guarded by mutex
+  bool dropQueued = false;      // guarded by mutex: stop without encoding what waits
 
   ~Impl() {
     stopWorker(true);
@@ -182,12 +182,11 @@ struct VideoWriter::Impl {
 
 Status validate(const VideoDef& def) {
   if (def.width <= 0 || def.height <= 0 || def.width > 8192 || def.height > 8192) {
-    return Status::failure("video: frame size " + std::to_string(def.width) + "x" + std::to_string(def.height) +
-                           " is outside 1..8192 pixels");
+    return Status::failure("video: frame size " + std::to_string(def.width) + "x" + std::to_string(def.height) + " is outside 1..8192 pixels");
   }
   if (def.width % 2 != 0 || def.height % 2 != 0) {
-    return Status::failure("video: H.264 in yuv420p needs an even width and height; got " + std::to_string(def.width) +
-                           "x" + std::to_string(def.height));
+    return Status::failure("video: H.264 in yuv420p needs an even width and height; got " + std::to_string(def.width) + "x" +
+                           std::to_string(def.height));
   }
   if (def.fps < 1 || def.fps > 240) return Status::failure("video: fps " + std::to_string(def.fps) + " is outside 1..240");
   if (def.threads < 0 || def.threads > 64) return Status::failure("video: threads " + std::to_string(def.threads) + " is outside 0..64");
@@ -205,7 +204,8 @@ Result<VideoWriter> VideoWriter::open(const VideoDef& def) {
   m->def = def;
   const std::string tmp = partialPath(def.path);
   // The muxer is named explicitly: the temporary's extension says nothing about the format.
-  if (int err = avformat_alloc_output_context2(&m->format, nullptr, "mp4", tmp.c_str()); err < 0) return m->abandon(m->error("cannot set up MP4", err));
+  if (int err = avformat_alloc_output_context2(&m->format, nullptr, "mp4", tmp.c_str()); err < 0)
+    return m->abandon(m->error("cannot set up MP4", err));
   const AVCodec* x264 = avcodec_find_encoder_by_name("libx264");
   m->stream = avformat_new_stream(m->format, nullptr);
   m->codec = avcodec_alloc_context3(x264);
@@ -246,11 +246,9 @@ std::int64_t VideoWriter::frameCount() const { return impl_->frames; }
 Status VideoWriter::write(const Image& image) {
   Impl& m = *impl_;
   if (m.finished) return Status::failure("video: '" + m.def.path + "' is already closed");
-  if (image.width != m.def.width || image.height != m.def.height ||
-      image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4) {
-    return Status::failure("video: frame of " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                           " does not match the video's " + std::to_string(m.def.width) + "x" +
-                           std::to_string(m.def.height));
+  if (image.width != m.def.width || image.height != m.def.height || image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4) {
+    return Status::failure("video: frame of " + std::to_string(image.width) + "x" + std::to_string(image.height) + " does not match the video's " +
+                           std::to_string(m.def.width) + "x" + std::to_string(m.def.height));
   }
   AVFrame* slot = nullptr;
   {
@@ -312,9 +310,7 @@ std::int64_t FramePicker::framesBefore(std::int64_t step) const {
   return static_cast<std::int64_t>(std::ceil(static_cast<double>(step) * framesPerStep_ - 1e-6));
 }
 
-int FramePicker::framesAt(std::int64_t step) const {
-  return static_cast<int>(framesBefore(step + 1) - framesBefore(step));
-}
+int FramePicker::framesAt(std::int64_t step) const { return static_cast<int>(framesBefore(step + 1) - framesBefore(step)); }
 
 std::vector<std::int64_t> FramePicker::steps(std::int64_t stepCount) const {
   std::vector<std::int64_t> out;

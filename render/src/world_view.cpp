@@ -108,8 +108,10 @@ void drawSonar(Canvas& c, const FrameScene& scene, const RenderDef& def, const R
     std::vector<Vec2> ends, edge;  // every ray's end; the run of ends that reach the reading
     const Rgba8 fill = rgba8(col, echo ? 0.16 : 0.06), rim = echo ? rgba8(darker(col), 0.85) : rgba8(col, 0.6);
     const auto drawEdge = [&] {
-      if (echo) c.polyline(edge, 2 * m.pixel, rim);
-      else c.dashed(edge, 1.5 * m.pixel, 4 * m.pixel, 4 * m.pixel, rim);
+      if (echo)
+        c.polyline(edge, 2 * m.pixel, rim);
+      else
+        c.dashed(edge, 1.5 * m.pixel, 4 * m.pixel, 4 * m.pixel, rim);
       edge.clear();
     };
     for (int k = 0; k <= kRays; ++k) {
@@ -117,8 +119,10 @@ void drawSonar(Canvas& c, const FrameScene& scene, const RenderDef& def, const R
       const Vec2 dir(std::cos(ak), std::sin(ak));
       const double reach = firstHit(scene, origin, dir, range);
       ends.push_back(m.map(origin + dir * reach));
-      if (reach < range) drawEdge();
-      else edge.push_back(ends.back());
+      if (reach < range)
+        drawEdge();
+      else
+        edge.push_back(ends.back());
       if (k > 0) c.triangle(o, ends[k - 1], ends[k], fill);
     }
     drawEdge();
@@ -149,9 +153,7 @@ void drawRobot(Canvas& c, const RobotView& r, const Mapping& m, Color col) {
 
 }  // namespace
 
-Color palette::robot(const RobotView& r, std::size_t index) {
-  return r.color.value_or(kRobotColors[index % std::size(kRobotColors)]);
-}
+Color palette::robot(const RobotView& r, std::size_t index) { return r.color.value_or(kRobotColors[index % std::size(kRobotColors)]); }
 
 Panels layoutPanels(const RenderDef& def) {
   const double w = def.width, h = def.height, share = std::clamp(def.plotShare, 0.05, 0.95);
@@ -164,7 +166,8 @@ Panels layoutPanels(const RenderDef& def) {
       const double ph = std::round(h * share);
       return {{0, 0, w, h - ph}, {0, h - ph, w, ph}};
     }
-    case PanelLayout::WorldOnly: break;
+    case PanelLayout::WorldOnly:
+      break;
   }
   return {{0, 0, w, h}, {}};
 }
@@ -187,21 +190,32 @@ void drawPicture(Canvas& c, const Picture& picture, const Mapping& m, const Text
     for (const Point2& p : s.points) pts.push_back(m.map(p));
     if (pts.empty()) continue;
     switch (s.kind) {
-      case Shape::Kind::Circle: c.ring(pts[0], s.radius * m.scale, 2 * m.pixel, ink); break;
-      case Shape::Kind::Disc: c.disc(pts[0], s.radius * m.scale, ink); break;
-      case Shape::Kind::Polyline: c.polyline(pts, 2 * m.pixel, ink); break;
-      case Shape::Kind::Polygon: c.polygon(pts, ink); break;
+      case Shape::Kind::Circle:
+        c.ring(pts[0], s.radius * m.scale, 2 * m.pixel, ink);
+        break;
+      case Shape::Kind::Disc:
+        c.disc(pts[0], s.radius * m.scale, ink);
+        break;
+      case Shape::Kind::Polyline:
+        c.polyline(pts, 2 * m.pixel, ink);
+        break;
+      case Shape::Kind::Polygon:
+        c.polygon(pts, ink);
+        break;
       case Shape::Kind::Arrow:
         if (pts.size() >= 2) c.arrow(pts[0], pts[1], 2 * m.pixel, 10 * m.pixel, ink);
         break;
-      case Shape::Kind::Text: text(s.points[0], s.text, col); break;
-      case Shape::Kind::Value: break;  // plotted, not drawn
+      case Shape::Kind::Text:
+        text(s.points[0], s.text, col);
+        break;
+      case Shape::Kind::Value:
+        break;  // plotted, not drawn
     }
   }
 }
 
-void drawGround(Canvas& c, const FontAtlas& fonts, const RenderDef& def, const FrameScene& scene, const Mapping& m,
-                bool bodies, const TextSink& text, const Viewport* clearedFloor, std::size_t* staticEnd) {
+void drawGround(Canvas& c, const FontAtlas& fonts, const RenderDef& def, const FrameScene& scene, const Mapping& m, bool bodies, const TextSink& text,
+                const Viewport* clearedFloor, std::size_t* staticEnd) {
   const Bounds& b = scene.bounds;
   const Vec2 lo = m.map(b.min), hi = m.map(b.max);
   if (clearedFloor == nullptr) {
@@ -223,8 +237,7 @@ void drawGround(Canvas& c, const FontAtlas& fonts, const RenderDef& def, const F
   for (const Block& k : scene.blocks) {
     const Vec2 u(std::cos(k.angle), std::sin(k.angle)), v(-u.y(), u.x());
     const Vec2 ex = u * k.halfExtents.x(), ey = v * k.halfExtents.y();
-    c.quad(m.map(k.center - ex - ey), m.map(k.center + ex - ey), m.map(k.center + ex + ey),
-           m.map(k.center - ex + ey), solid);
+    c.quad(m.map(k.center - ex - ey), m.map(k.center + ex - ey), m.map(k.center + ex + ey), m.map(k.center - ex + ey), solid);
   }
   for (const Pillar& p : scene.pillars) c.disc(m.map(p.center), p.radius * m.scale, solid);
   const Rgba8 wallInk = rgba8(palette::wall);

@@ -2,8 +2,9 @@
 // behavior it teaches. Bounds come from runs on several seeds and steps; the reasons are given.
 #include "run_frob.hpp"
 
-#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
@@ -135,8 +136,8 @@ TEST(Examples, OneControllerDrivesEveryRobotOfTheArena) {
 
 TEST(Examples, OneControllerPerRobotOfTheArena) {
   const std::filesystem::path dir = freshFolder("arena_each");
-  const FrobResult r = runFrob(dir, {"run", "01_run_around", "03_stopit", "07_with_task", "bug", "--world", "arena",
-                                     "--seconds", "2", "--json", "--quiet"});
+  const FrobResult r =
+      runFrob(dir, {"run", "01_run_around", "03_stopit", "07_with_task", "bug", "--world", "arena", "--seconds", "2", "--json", "--quiet"});
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json summary = nlohmann::json::parse(r.out);
   std::vector<std::string> controllers;

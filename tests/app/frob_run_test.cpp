@@ -2,8 +2,9 @@
 // message and leaves no output file behind; good runs write whole files and repeat exactly.
 #include "run_frob.hpp"
 
-#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
 
 namespace frob::testing {
 namespace {
@@ -12,8 +13,9 @@ namespace fs = std::filesystem;
 
 // A small controller file: drives forward at `forward` (an expression of the robot `r`) forever.
 std::string controller(const std::string& forward, const std::string& extra = "") {
-  return "#include <frob/frob.hpp>\nusing namespace frob;\n" + extra +
-         "Behavior<Wheels> drive([[maybe_unused]] const Robot& r) { return wheels(" + forward + ", 0.0); }\n"
+  return "#include <frob/frob.hpp>\nusing namespace frob;\n" + extra + "Behavior<Wheels> drive([[maybe_unused]] const Robot& r) { return wheels(" +
+         forward +
+         ", 0.0); }\n"
          "FROB_CONTROLLER(drive, .world = \"empty\", .seconds = 3)\n";
 }
 
@@ -32,8 +34,8 @@ std::vector<std::string> lines(const std::string& text) {
   return out;
 }
 
-const std::vector<std::string> kAllOutputs{"--video", "out.mp4", "--trace", "out.csv", "--timeline", "out.json",
-                                           "--plot", "out.png", "--frames", "frames"};
+const std::vector<std::string> kAllOutputs{"--video",  "out.mp4", "--trace", "out.csv",  "--timeline",
+                                           "out.json", "--plot",  "out.png", "--frames", "frames"};
 
 std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
   args.insert(args.end(), more.begin(), more.end());
@@ -138,16 +140,15 @@ TEST(FrobRun, ControllerThatThrows) {
 
 TEST(FrobRun, ControllerThatGivesNaN) {
   // NaN from t = 1.01 s: the message says how to keep the run up to then.
-  const std::string err = expectCleanFailure("nan", controller("lift([](double t) { return t > 1.0 ? std::nan(\"\") : 0.1; }, time())", "#include <cmath>\n"),
-                     "non-finite wheels");
-  EXPECT_NE(err.find("at t = 1.010 s; no output files were written (--seconds 1.00 keeps the run up to the failure)"),
-            std::string::npos) << err;
+  const std::string err = expectCleanFailure(
+      "nan", controller("lift([](double t) { return t > 1.0 ? std::nan(\"\") : 0.1; }, time())", "#include <cmath>\n"), "non-finite wheels");
+  EXPECT_NE(err.find("at t = 1.010 s; no output files were written (--seconds 1.00 keeps the run up to the failure)"), std::string::npos) << err;
 }
 
 TEST(FrobRun, AControllerThatCrashesIsOneLineAndFrobLivesOn) {
-  const std::string err = expectCleanFailure(
-      "crash", controller("lift([](double t) { if (t > 0.5) *static_cast<volatile int*>(nullptr) = 1; return 0.1; }, time())"),
-      "frob: the controller failed: nomad: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.51 s;");
+  const std::string err =
+      expectCleanFailure("crash", controller("lift([](double t) { if (t > 0.5) *static_cast<volatile int*>(nullptr) = 1; return 0.1; }, time())"),
+                         "frob: the controller failed: nomad: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.51 s;");
   EXPECT_EQ(err.rfind("frob: ", 0), 0u);
 }
 
@@ -183,8 +184,9 @@ TEST(FrobRun, FileWithoutControllerLine) {
 
 TEST(FrobRun, UndefinedFunctionIsNamed) {
   const fs::path dir = freshFolder("undefined");
-  write(dir, "undef.cpp", "#include <frob/frob.hpp>\nusing namespace frob;\nTask<Wheels> wander(double speed);\n"
-                          "Task<Wheels> start() { return wander(0.2); }\nFROB_CONTROLLER(start)\n");
+  write(dir, "undef.cpp",
+        "#include <frob/frob.hpp>\nusing namespace frob;\nTask<Wheels> wander(double speed);\n"
+        "Task<Wheels> start() { return wander(0.2); }\nFROB_CONTROLLER(start)\n");
   const FrobResult r = runFrob(dir, {"run", "undef.cpp", "--quiet"});
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("undefined symbol: wander(double) (declared but never defined?)"), std::string::npos) << r.err;
@@ -201,9 +203,11 @@ TEST(FrobRun, BadNamesAndPaths) {
       {{"run", "slow.cpp", "--world", "atlantis"}, "frob: unknown world 'atlantis': not a reference world (see frob list) and no such file"},
       {{"run", "nosuch"}, "frob: unknown controller 'nosuch': not a file and not an example (see frob list)"},
       {{"run", "missing.cpp"}, "frob: controller file 'missing.cpp' cannot be read: it does not exist"},
-      {{"run", "slow.cpp", "--video", "no/such/dir/out.mp4"}, "frob: video: cannot write 'no/such/dir/out.mp4': directory 'no/such/dir' does not exist"},
+      {{"run", "slow.cpp", "--video", "no/such/dir/out.mp4"},
+       "frob: video: cannot write 'no/such/dir/out.mp4': directory 'no/such/dir' does not exist"},
       {{"run", "slow.cpp", "--trace", "slow.cpp/x.csv"}, "frob: trace: cannot write 'slow.cpp/x.csv': 'slow.cpp' is not a directory"},
-      {{"run", "slow.cpp", "slow.cpp", "--world", "empty"}, "frob: the world 'empty' has 1 robots: give one controller for all of them or one per robot (2 given)"},
+      {{"run", "slow.cpp", "slow.cpp", "--world", "empty"},
+       "frob: the world 'empty' has 1 robots: give one controller for all of them or one per robot (2 given)"},
       {{"run", "slow.cpp", "--size", "big"}, "frob: --size must look like 854x480, not 'big'"},
   };
   for (const Case& c : cases) {

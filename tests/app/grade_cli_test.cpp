@@ -2,8 +2,9 @@
 // the same gradebook, replays of logged runs, generated worlds, and the assignments frob list shows.
 #include "run_frob.hpp"
 
-#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
 
 namespace frob::testing {
 namespace {

@@ -3,8 +3,9 @@
 // and results.json and the JUnit file are whole and valid.
 #include "run_frob.hpp"
 
-#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
 
 namespace frob::testing {
 namespace {
@@ -51,8 +52,7 @@ TEST_P(GradeHostile, FailsItsCheckWithTheReasonAndTheGraderStaysWhole) {
   EXPECT_EQ(results["tests"][0]["score"], c.beforePasses ? 1.0 : 0.0) << results.dump(1);
   EXPECT_EQ(results["tests"][1]["score"], 0.0) << results.dump(1);
   const std::string output = results["tests"][1]["output"];
-  EXPECT_TRUE(output.find(c.reason) != std::string::npos || (!c.orReason.empty() && output.find(c.orReason) != std::string::npos))
-      << results.dump(1);
+  EXPECT_TRUE(output.find(c.reason) != std::string::npos || (!c.orReason.empty() && output.find(c.orReason) != std::string::npos)) << results.dump(1);
   const std::string junit = readFile(dir / "junit.xml");
   EXPECT_EQ(junit.rfind("<?xml", 0), 0u);
   EXPECT_NE(junit.find("</testsuite>"), std::string::npos);
@@ -61,17 +61,18 @@ TEST_P(GradeHostile, FailsItsCheckWithTheReasonAndTheGraderStaysWhole) {
 
 INSTANTIATE_TEST_SUITE_P(
     Grade, GradeHostile,
-    ::testing::Values(Case{"segfault", "crashed with SIGSEGV"}, Case{"abort", "crashed with SIGABRT"},
-                      Case{"stack_overflow", "its stack overflowed"}, Case{"endless_loop", "used more than 1 s of CPU in one step"},
-                      Case{"sleeps", "did not answer within 1 s in one step"}, // Filling 1 GiB of fresh pages can take more than the 1 s a step may take on a busy machine.
-                      Case{"memory_bomb", "memory", "used more than 1 s of CPU in one step"},
-                      Case{"forks", "tried to start another process"}, Case{"runs_shell", "tried to start another process"},
-                      Case{"opens_socket", "tried to open a network socket"}, Case{"signals_parent", "tried to signal another process"},
-                      Case{"reads_outside", "tried to read /etc/passwd"}, Case{"writes_outside", "tried to write /tmp/frob-hostile-was-here"},
-                      Case{"forged_exit", "ended its program with exit status 0"}, Case{"throws_int", "an exception of unknown type"},
-                      Case{"commands_nan", "non-finite wheels"},
-                      Case{"endless_constructor", "did not finish starting within 10 s (an endless loop?)", "", false},
-                      Case{"crash_in_constructor", "crashed with SIGSEGV", "", false}),
+    ::testing::Values(
+        Case{"segfault", "crashed with SIGSEGV"}, Case{"abort", "crashed with SIGABRT"}, Case{"stack_overflow", "its stack overflowed"},
+        Case{"endless_loop", "used more than 1 s of CPU in one step"},
+        Case{"sleeps",
+             "did not answer within 1 s in one step"},  // Filling 1 GiB of fresh pages can take more than the 1 s a step may take on a busy machine.
+        Case{"memory_bomb", "memory", "used more than 1 s of CPU in one step"}, Case{"forks", "tried to start another process"},
+        Case{"runs_shell", "tried to start another process"}, Case{"opens_socket", "tried to open a network socket"},
+        Case{"signals_parent", "tried to signal another process"}, Case{"reads_outside", "tried to read /etc/passwd"},
+        Case{"writes_outside", "tried to write /tmp/frob-hostile-was-here"}, Case{"forged_exit", "ended its program with exit status 0"},
+        Case{"throws_int", "an exception of unknown type"}, Case{"commands_nan", "non-finite wheels"},
+        Case{"endless_constructor", "did not finish starting within 10 s (an endless loop?)", "", false},
+        Case{"crash_in_constructor", "crashed with SIGSEGV", "", false}),
     [](const ::testing::TestParamInfo<Case>& info) { return info.param.submission; });
 
 }  // namespace

@@ -1,11 +1,10 @@
 #pragma once
 // Runs the built `frob` command in a fresh folder of its own and keeps what it printed.
 
+#include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-#include <fcntl.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -20,9 +19,9 @@ extern char** environ;
 namespace frob::testing {
 
 struct FrobResult {
-  int status = -1;   // exit status
-  std::string out;   // stdout
-  std::string err;   // stderr
+  int status = -1;  // exit status
+  std::string out;  // stdout
+  std::string err;  // stderr
 };
 
 // A folder under the build's temp dir, emptied, named after the test.
@@ -41,8 +40,7 @@ inline std::string readFile(const std::filesystem::path& path) {
 }
 
 // Runs `frob args...` with `dir` as its working folder; controllers compile into `cache`.
-inline FrobResult runFrob(const std::filesystem::path& dir, const std::vector<std::string>& args,
-                          const std::string& cache = FROB_TEST_CACHE_DIR) {
+inline FrobResult runFrob(const std::filesystem::path& dir, const std::vector<std::string>& args, const std::string& cache = FROB_TEST_CACHE_DIR) {
   std::vector<std::string> all{FROB_EXECUTABLE};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;

@@ -7,9 +7,9 @@
 // controller's overhead as a share of a one-robot simulator step (the maze, 16 sonars of 5 rays).
 // Run by hand for figures:
 //   build/tests/bench/frob_core_bench --benchmark_repetitions=5
+#include "cpu_figures.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/simulation.hpp"
-#include "cpu_figures.hpp"
 #include "wall_follower.hpp"
 
 #include <benchmark/benchmark.h>
@@ -130,7 +130,9 @@ void BM_BuildWallFollowerGraph(benchmark::State& state) {
 BENCHMARK(BM_BuildWallFollowerGraph);
 
 // One untilB firing per iteration: a switch to a freshly built behavior, then its first sample.
-Behavior<double> flipper() { return untilB(time(), after(0.005).map([] { return flipper(); })); }
+Behavior<double> flipper() {
+  return untilB(time(), after(0.005).map([] { return flipper(); }));
+}
 
 void BM_UntilBSwitch(benchmark::State& state) {
   Behavior<double> b = flipper();  // at dt = 0.01 each copy's timer fires at its second sample: one switch per step
@@ -151,10 +153,9 @@ class OverheadReporter : public bench::CpuFiguresReporter {
     if (frob < 0 || hand < 0 || frobOnly < 0 || handOnly < 0 || sim < 0) return;
     std::printf("\nWall follower per step (CPU time), Frob against hand-written:\n");
     std::printf("  with the sensor-frame fill:  %7.1f ns vs %7.1f ns  (%.2fx)\n", frob, hand, frob / hand);
-    std::printf("  controller only:             %7.1f ns vs %7.1f ns  (%.2fx, %.1f ns more)\n", frobOnly, handOnly,
-                frobOnly / handOnly, frobOnly - handOnly);
-    std::printf("  that overhead is %.2f%% of a one-robot simulator step (%.1f us)\n",
-                100.0 * (frobOnly - handOnly) / sim, sim / 1e3);
+    std::printf("  controller only:             %7.1f ns vs %7.1f ns  (%.2fx, %.1f ns more)\n", frobOnly, handOnly, frobOnly / handOnly,
+                frobOnly - handOnly);
+    std::printf("  that overhead is %.2f%% of a one-robot simulator step (%.1f us)\n", 100.0 * (frobOnly - handOnly) / sim, sim / 1e3);
   }
 };
 

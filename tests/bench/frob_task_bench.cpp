@@ -44,8 +44,7 @@ BENCHMARK(BM_BareBehaviorStep);
 // The same behavior as the body of a running task that never ends.
 void BM_BehaviorInTaskStep(benchmark::State& state) {
   Robot r = benchRobot();
-  Behavior<Wheels> c =
-      runTask(r, mkTask([](const TaskState& ts) { return std::pair{typical(ts.robot()), never()}; }));
+  Behavior<Wheels> c = runTask(r, mkTask([](const TaskState& ts) { return std::pair{typical(ts.robot()), never()}; }));
   Clock clock(0.01);
   for (auto _ : state) benchmark::DoNotOptimize(c.at(clock.advance()));
 }
@@ -68,8 +67,7 @@ BENCHMARK(BM_BareWallFollowerStep);
 void BM_WallFollowerInTaskStep(benchmark::State& state) {
   auto frame = std::make_shared<SensorFrame>();
   Robot robot(nomadSpec(), std::shared_ptr<const SensorFrame>(frame));
-  Behavior<Wheels> c =
-      runTask(robot, mkTask([](const TaskState& ts) { return std::pair{wallFollower(ts.robot()), never()}; }));
+  Behavior<Wheels> c = runTask(robot, mkTask([](const TaskState& ts) { return std::pair{wallFollower(ts.robot()), never()}; }));
   Clock clock(0.01);
   for (auto _ : state) {
     const Instant& now = clock.advance();

@@ -71,7 +71,10 @@ void Class(benchmark::State& state) {
 }
 
 BENCHMARK(OneSubmissionTenRuns)->Unit(benchmark::kSecond)->UseRealTime();
-BENCHMARK(Class)->Arg(std::getenv("FROB_BENCH_CLASS") != nullptr ? std::atoi(std::getenv("FROB_BENCH_CLASS")) : 2)
-    ->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
+BENCHMARK(Class)
+    ->Arg(std::getenv("FROB_BENCH_CLASS") != nullptr ? std::atoi(std::getenv("FROB_BENCH_CLASS")) : 2)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->Iterations(1);
 
 }  // namespace

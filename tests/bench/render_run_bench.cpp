@@ -3,13 +3,12 @@
 // rates of a mid-run scene, with parts switched off to see where a frame's time goes, and a 60 s
 // run (100 Hz) simulated, viewed, rendered with plots and encoded to a 30 fps 640x480 MP4.
 // Run by hand: build/tests/bench/render_run_bench (figures in the render2 branch's report).
+#include "../support/wanderer.hpp"
 #include "frob/frob.hpp"
 #include "frob/render/renderer.hpp"
 #include "frob/render/run_view.hpp"
 #include "frob/render/video.hpp"
 #include "frob/worlds/registry.hpp"
-
-#include "../support/wanderer.hpp"
 
 #include <benchmark/benchmark.h>
 #include <unistd.h>

@@ -21,8 +21,8 @@ constexpr double kVmax = 0.4;
 inline void fillFrame(SensorFrame& f, std::int64_t step) {
   double t = static_cast<double>(step) * 0.01;
   f.sonar.assign(16, 2.0);
-  f.sonar[4] = 0.6 + 0.2 * std::sin(t);   // left
-  f.sonar[0] = 1.5 + std::cos(0.3 * t);   // front
+  f.sonar[4] = 0.6 + 0.2 * std::sin(t);  // left
+  f.sonar[0] = 1.5 + std::cos(0.3 * t);  // front
   f.velocity = 0.3 + 0.05 * std::sin(2 * t);
 }
 

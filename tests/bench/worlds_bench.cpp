@@ -5,15 +5,16 @@
 //   build/tests/bench/worlds_bench --benchmark_min_time=2 --benchmark_repetitions=5
 // At the end a table pairs each of our runs with the Enki runs of the same rays and robots, says
 // what each side computes, and gives the fair ratio as the headline.
+#include "cpu_figures.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/simulation.hpp"
-#include "cpu_figures.hpp"
 #include "ray_caster.hpp"  // private header of worlds/, for the ray-cast micro benchmark
+
+#include <enki/robots/e-puck/EPuck.h>
 
 #include <benchmark/benchmark.h>
 #include <box2d/box2d.h>
 #include <enki/PhysicalEngine.h>
-#include <enki/robots/e-puck/EPuck.h>
 
 #include <algorithm>
 #include <array>
@@ -64,8 +65,8 @@ Wheels wander(const SensorFrame& f) {
 
 // Our simulator: one iteration is one 10 ms step (sense, controllers, physics).
 void Ours(benchmark::State& state) {
-  const int robots = static_cast<int>(state.range(0)), sonars = static_cast<int>(state.range(1)),
-            rays = static_cast<int>(state.range(2)), threads = static_cast<int>(state.range(3));
+  const int robots = static_cast<int>(state.range(0)), sonars = static_cast<int>(state.range(1)), rays = static_cast<int>(state.range(2)),
+            threads = static_cast<int>(state.range(3));
   Simulation sim(mazeWith(robots, sonars, rays), {.dt = kDt, .threads = threads});
   std::vector<Wheels> wheels(sim.robotCount());
   auto step = [&] {
@@ -76,25 +77,31 @@ void Ours(benchmark::State& state) {
   for (int k = 0; k < kWarmUpSteps; ++k) step();
   for (auto _ : state) step();
   state.counters["rtf"] = benchmark::Counter(kDt, benchmark::Counter::kIsIterationInvariantRate);
-  state.counters["rays/s"] =
-      benchmark::Counter(double(robots) * sonars * rays, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["rays/s"] = benchmark::Counter(double(robots) * sonars * rays, benchmark::Counter::kIsIterationInvariantRate);
 }
 // Args: robots, sonars, rays per sonar, threads.
-BENCHMARK(Ours)->ArgNames({"robots", "sonars", "rays", "threads"})
-    ->Args({1, 16, 5, 1})     // the target: >= 2000x real time
+BENCHMARK(Ours)
+    ->ArgNames({"robots", "sonars", "rays", "threads"})
+    ->Args({1, 16, 5, 1})  // the target: >= 2000x real time
     ->Args({100, 16, 5, 1})
-    ->Args({100, 16, 5, 2})   // the target: >= 30x real time on both cores
-    ->Args({1, 8, 3, 1})      // as many rays as an Enki e-puck (8 IR sensors x 3 rays)
+    ->Args({100, 16, 5, 2})  // the target: >= 30x real time on both cores
+    ->Args({1, 8, 3, 1})     // as many rays as an Enki e-puck (8 IR sensors x 3 rays)
     ->Args({100, 8, 3, 1})
-    ->Args({1, 16, 3, 1})     // as many rays as an e-puck given 16 long-range sensors
+    ->Args({1, 16, 3, 1})  // as many rays as an e-puck given 16 long-range sensors
     ->Args({100, 16, 3, 1})
-    ->UseRealTime()->Unit(benchmark::kMicrosecond);
+    ->UseRealTime()
+    ->Unit(benchmark::kMicrosecond);
 // A fixed number of steps from the same start, so that instruction counts (valgrind --tool=callgrind,
 // which counts independent of load) compare between builds:
 //   valgrind --tool=callgrind build/tests/bench/worlds_bench --benchmark_filter=OursFixedSteps
-BENCHMARK(Ours)->Name("OursFixedSteps")->ArgNames({"robots", "sonars", "rays", "threads"})
-    ->Args({1, 16, 5, 1})->Args({100, 16, 5, 1})->Iterations(300)
-    ->UseRealTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(Ours)
+    ->Name("OursFixedSteps")
+    ->ArgNames({"robots", "sonars", "rays", "threads"})
+    ->Args({1, 16, 5, 1})
+    ->Args({100, 16, 5, 1})
+    ->Iterations(300)
+    ->UseRealTime()
+    ->Unit(benchmark::kMicrosecond);
 
 // A 100 x 100 m hall with a 10 x 10 grid of 2 x 2 m blocks, and `robots` robots between them.
 WorldDef hallWith(int robots) {
@@ -179,8 +186,7 @@ Enki::Polygon wallRectangle(const WallDef& wall) {
   const Point2 a = wall.points[0] * 100, b = wall.points[1] * 100;
   const Vec2 t = (b - a).normalized(), n(-t.y(), t.x());
   Enki::Polygon p;
-  for (const Point2& c : {Point2(a - t - n), Point2(b + t - n), Point2(b + t + n), Point2(a - t + n)})
-    p.push_back(Enki::Point(c.x(), c.y()));
+  for (const Point2& c : {Point2(a - t - n), Point2(b + t - n), Point2(b + t + n), Point2(a - t + n)}) p.push_back(Enki::Point(c.x(), c.y()));
   return p;
 }
 
@@ -192,7 +198,7 @@ void addMaze(Enki::World& world, EnkiWalls walls) {
       all.push_back(part);
       continue;
     }
-    auto* o = new Enki::PhysicalObject;  // the world owns and deletes it
+    auto* o = new Enki::PhysicalObject;                        // the world owns and deletes it
     o->setCustomHull(Enki::PhysicalObject::Hull(part), -1.0);  // negative mass: static
     world.addObject(o);
   }
@@ -217,15 +223,15 @@ struct EnkiMaze {
       e->pos = Enki::Point(r.start.position.x() * 100, r.start.position.y() * 100);
       e->angle = r.start.heading;
       if (sensing == kIrOnly) {
-        for (Enki::IRSensor* ir : {&e->infraredSensor0, &e->infraredSensor1, &e->infraredSensor2, &e->infraredSensor3,
-                                   &e->infraredSensor4, &e->infraredSensor5, &e->infraredSensor6, &e->infraredSensor7})
+        for (Enki::IRSensor* ir : {&e->infraredSensor0, &e->infraredSensor1, &e->infraredSensor2, &e->infraredSensor3, &e->infraredSensor4,
+                                   &e->infraredSensor5, &e->infraredSensor6, &e->infraredSensor7})
           e->addLocalInteraction(ir);
       }
       if (sensing == kLongRange16) {
         for (int k = 0; k < 16; ++k) {
           const double a = 2 * pi * k / 16;
-          extra.push_back(std::make_unique<Enki::IRSensor>(e, Enki::Vector(3.7 * std::cos(a), 3.7 * std::sin(a)), 2.5, a,
-                                                           650.0, 3731.0, 0.3, 0.7, 0.0));
+          extra.push_back(
+              std::make_unique<Enki::IRSensor>(e, Enki::Vector(3.7 * std::cos(a), 3.7 * std::sin(a)), 2.5, a, 650.0, 3731.0, 0.3, 0.7, 0.0));
           e->addLocalInteraction(extra.back().get());
         }
       }
@@ -256,13 +262,20 @@ void Enki(benchmark::State& state) {
 }
 // Args: robots, sensing, walls (see above). One object saves Enki the pairs of walls but puts every
 // part in range of every robot; measured after the warm-up it was the faster layout in every pairing.
-BENCHMARK(Enki)->ArgNames({"robots", "sensing", "walls"})
-    ->Args({1, kTurretAndIr, kSeparate})->Args({100, kTurretAndIr, kSeparate})  // the earlier, unfair setup
-    ->Args({1, kIrOnly, kSeparate})->Args({100, kIrOnly, kSeparate})
-    ->Args({1, kIrOnly, kOneObject})->Args({100, kIrOnly, kOneObject})
-    ->Args({1, kLongRange16, kSeparate})->Args({100, kLongRange16, kSeparate})
-    ->Args({1, kLongRange16, kOneObject})->Args({100, kLongRange16, kOneObject})
-    ->UseRealTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(Enki)
+    ->ArgNames({"robots", "sensing", "walls"})
+    ->Args({1, kTurretAndIr, kSeparate})
+    ->Args({100, kTurretAndIr, kSeparate})  // the earlier, unfair setup
+    ->Args({1, kIrOnly, kSeparate})
+    ->Args({100, kIrOnly, kSeparate})
+    ->Args({1, kIrOnly, kOneObject})
+    ->Args({100, kIrOnly, kOneObject})
+    ->Args({1, kLongRange16, kSeparate})
+    ->Args({100, kLongRange16, kSeparate})
+    ->Args({1, kLongRange16, kOneObject})
+    ->Args({100, kLongRange16, kOneObject})
+    ->UseRealTime()
+    ->Unit(benchmark::kMicrosecond);
 
 // The two wall layouts give the same ray distances: 100 e-pucks with 16 long-range sensors stand
 // still for one step in each, and every ray of every sensor is compared. Fails (and so fails the
@@ -315,8 +328,7 @@ void RayCastBox2D(benchmark::State& state) {
   Simulation sim(maze());
   for (const WallDef& w : sim.walls()) {
     b2EdgeShape e;
-    e.SetTwoSided(b2Vec2(float(w.points[0].x()), float(w.points[0].y())),
-                  b2Vec2(float(w.points[1].x()), float(w.points[1].y())));
+    e.SetTwoSided(b2Vec2(float(w.points[0].x()), float(w.points[0].y())), b2Vec2(float(w.points[1].x()), float(w.points[1].y())));
     ground->CreateFixture(&e, 0.0f);
   }
   struct Closest : b2RayCastCallback {
@@ -404,25 +416,21 @@ class PairingReporter : public bench::CpuFiguresReporter {
         "  Enki: its own physics over all pairs of objects, per IR sensor 3 rays (12 cm, or 6.5 m for the\n"
         "        16-sensor e-pucks) through a response function with noise, the same wander rule; the maze\n"
         "        as 225 wall objects or as one object of 225 parts (the same ray distances).\n");
-    std::printf("  %-7s %-38s %9s %12s %12s %8s\n", "robots", "rays per robot", "ours", "Enki walls", "Enki 1 obj",
-                "ratio");
+    std::printf("  %-7s %-38s %9s %12s %12s %8s\n", "robots", "rays per robot", "ours", "Enki walls", "Enki 1 obj", "ratio");
     auto find = [&](const std::string& name) {
       const double s = seconds(name + "/real_time");
       return s > 0 ? kDt / s : -1.0;
     };
     double headline = -1;
     for (const Pairing& p : pairs) {
-      const double ours = find(p.ours), separate = find(std::string(p.enki) + "/walls:0"),
-                   one = find(std::string(p.enki) + "/walls:1");
+      const double ours = find(p.ours), separate = find(std::string(p.enki) + "/walls:0"), one = find(std::string(p.enki) + "/walls:1");
       const double enki = std::max(separate, one);  // the faster layout
       if (ours < 0 || enki <= 0) continue;
       std::printf("  %-7d %-38s %8.1fx %11.2fx %11.2fx %8.2f\n", p.robots, p.what, ours, separate, one, ours / enki);
       if (&p == &pairs[1]) headline = ours / enki;
     }
     std::printf("  (ratio: ours against Enki's faster layout; a layout not run shows as -1)\n");
-    if (headline > 0)
-      std::printf("Headline (fair): 100 robots, 8 x 3 rays each, against Enki's faster layout: ours %.1fx as fast\n",
-                  headline);
+    if (headline > 0) std::printf("Headline (fair): 100 robots, 8 x 3 rays each, against Enki's faster layout: ours %.1fx as fast\n", headline);
   }
 };
 

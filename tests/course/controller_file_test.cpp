@@ -77,8 +77,7 @@ TEST(ControllerFile, AnIncludeOutsideItsFolderCannotBeReadAndNoLineOfItIsShown) 
   Result<CompiledController> c = compileControllerFile(dir / "submission" / "steal.cpp", setupIn(dir), &messages);
   ASSERT_FALSE(c.ok());
   EXPECT_EQ(c.error(), "could not compile '" + (dir / "submission" / "steal.cpp").string() + "' (the compiler's messages are above)");
-  EXPECT_NE(messages.find("cannot open file '" + (dir / "instructor_key.txt").string() + "': Permission denied"), std::string::npos)
-      << messages;
+  EXPECT_NE(messages.find("cannot open file '" + (dir / "instructor_key.txt").string() + "': Permission denied"), std::string::npos) << messages;
   EXPECT_EQ(messages.find("THE-SECRET-SOLUTION"), std::string::npos) << messages;
   EXPECT_EQ(messages.find("answer"), std::string::npos) << messages;
 }
@@ -118,8 +117,8 @@ TEST(ControllerFile, ACompileThatNeverEndsIsStoppedAtItsTimeLimit) {
   setup.seconds = 2;
   Result<CompiledController> c = compileControllerFile(dir / "bomb.cpp", setup);
   ASSERT_FALSE(c.ok());
-  EXPECT_EQ(c.error(), "compiling '" + (dir / "bomb.cpp").string() +
-                           "' took longer than 2 s, so it was stopped (an #include or a macro that never ends?)");
+  EXPECT_EQ(c.error(),
+            "compiling '" + (dir / "bomb.cpp").string() + "' took longer than 2 s, so it was stopped (an #include or a macro that never ends?)");
 }
 
 }  // namespace

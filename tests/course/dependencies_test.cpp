@@ -1,6 +1,7 @@
 // The course target brings the whole stack and nlohmann::json for result files.
-#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
 
 namespace {
 

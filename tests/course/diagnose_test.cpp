@@ -2,6 +2,7 @@
 // gives the hint that names the fix; a good run gives none. And the paper's runAround written
 // literally (one front sonar) is told why it keeps pushing against walls.
 #include "frob/course/diagnose.hpp"
+
 #include "frob/course/session.hpp"
 #include "frob/frob.hpp"
 #include "frob/worlds/registry.hpp"
@@ -39,9 +40,10 @@ TEST(Diagnosis, PushingAgainstAWallWithNoEchoSaysLookWithSeveralSonars) {
   }
   const std::vector<std::string> h = d.hints(0, "ada", {}, 10.0);
   ASSERT_EQ(h.size(), 1u);
-  EXPECT_EQ(h[0], "ada pushed against a wall for 7 s of the run while commanding forward speed (the first time from 2.7 s at (5.8, 2.0)); "
-                  "its front sonar read 6.5 m (no echo) there: a sonar misses a wall met at a grazing angle, so look ahead with several "
-                  "sonars (the nearest echo of sonars 14, 15, 0, 1 and 2) and end the task on the bumper too");
+  EXPECT_EQ(h[0],
+            "ada pushed against a wall for 7 s of the run while commanding forward speed (the first time from 2.7 s at (5.8, 2.0)); "
+            "its front sonar read 6.5 m (no echo) there: a sonar misses a wall met at a grazing angle, so look ahead with several "
+            "sonars (the nearest echo of sonars 14, 15, 0, 1 and 2) and end the task on the bumper too");
 }
 
 TEST(Diagnosis, PushingWhileTheSonarSawTheWallSaysEndTheTaskOnIt) {
@@ -66,8 +68,9 @@ TEST(Diagnosis, SpinningInPlace) {
   const std::vector<TaskRecord> running{{.id = 1, .parent = 0, .depth = 1, .name = "lookAround", .start = 0.0}};
   const std::vector<std::string> h = d.hints(0, "ada", running, 40.0);
   ASSERT_EQ(h.size(), 2u);
-  EXPECT_EQ(h[0], "ada spun in place 5 times from 0.1 s at (3.0, 2.0): a turn that waits for a condition that never comes (a sonar that "
-                  "cannot see the way out?)");
+  EXPECT_EQ(h[0],
+            "ada spun in place 5 times from 0.1 s at (3.0, 2.0): a turn that waits for a condition that never comes (a sonar that "
+            "cannot see the way out?)");
   EXPECT_EQ(h[1], "ada's task 'lookAround' ran from 0.0 s to the end of the run: the event that should end it never occurred");
 }
 
@@ -98,15 +101,15 @@ Task<Wheels> runAround() {
 }
 
 TEST(Diagnosis, ThePapersLiteralRunAroundIsToldWhyItPushesAgainstWalls) {
-  Result<Summary> s = runSession({.world = *worlds::loadReferenceWorld("empty"), .worldName = "empty",
+  Result<Summary> s = runSession({.world = *worlds::loadReferenceWorld("empty"),
+                                  .worldName = "empty",
                                   .controllers = {{.entry = {.name = "runAround", .make = makeController(runAround)}, .source = "test"}},
                                   .seconds = 60});
   ASSERT_TRUE(s.ok()) << s.error();
   const std::vector<std::string>& hints = s.value().robots.at(0).hints;
   ASSERT_FALSE(hints.empty());
   EXPECT_NE(hints[0].find("nomad pushed against a wall for"), std::string::npos) << hints[0];
-  EXPECT_NE(hints[0].find("its front sonar read 6.5 m (no echo) there: a sonar misses a wall met at a grazing angle"), std::string::npos)
-      << hints[0];
+  EXPECT_NE(hints[0].find("its front sonar read 6.5 m (no echo) there: a sonar misses a wall met at a grazing angle"), std::string::npos) << hints[0];
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // distances and a flood fill of our own, not the generator's), writes a file that loads back to
 // the same world, and the same kind and seed give the same world (golden hashes).
 #include "frob/course/generate.hpp"
+
 #include "frob/worlds/fnv.hpp"
 #include "frob/worlds/world_file.hpp"
 

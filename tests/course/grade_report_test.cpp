@@ -6,7 +6,10 @@
 #include "frob/render/image.hpp"
 #include "frob/render/video.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <libxml/HTMLparser.h>
 #include <libxml/parser.h>
 #include <libxml/tree.h>
@@ -14,9 +17,6 @@
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdlib>
@@ -55,9 +55,11 @@ Grade sample() {
   g.wallSeconds = 12.6;
   g.checks = {
       {.name = "reaches the goal", .points = 2, .score = 2, .runs = {pass("empty", 1), pass("maze", 2)}},
-      {.name = "avoids walls", .points = 1, .score = 0.5,
-       .runs = {fail("maze", 3, "touched a wall at 41.2 s at (3.1, 4.5)"), pass("maze", 4)}},
-      {.name = "secret worlds", .points = 2, .score = 0, .visibility = Visibility::Hidden,
+      {.name = "avoids walls", .points = 1, .score = 0.5, .runs = {fail("maze", 3, "touched a wall at 41.2 s at (3.1, 4.5)"), pass("maze", 4)}},
+      {.name = "secret worlds",
+       .points = 2,
+       .score = 0,
+       .visibility = Visibility::Hidden,
        .runs = {fail("rooms", 7, "not within 0.3 m of goal by 60 s")}},
   };
   g.notes = {"the controller printed more than 1 MB; the rest was cut"};
@@ -121,8 +123,8 @@ using Doc = std::unique_ptr<xmlDoc, DocFree>;
 
 // A strict XML 1.0 parse: any well-formedness error (a bad character, a bad escape) gives null.
 Doc parseXml(const std::string& text) {
-  return Doc(xmlReadMemory(text.data(), static_cast<int>(text.size()), "report.xml", "UTF-8",
-                           XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING));
+  return Doc(
+      xmlReadMemory(text.data(), static_cast<int>(text.size()), "report.xml", "UTF-8", XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING));
 }
 
 // An HTML parse, as lenient as a browser's (for Chromium's serialized DOM).
@@ -197,7 +199,10 @@ TEST(ScoreTable, ExactText) {
 TEST(ScoreTable, CompileErrorAndControlCharacters) {
   Grade g = uncompiled("bob.cpp:3:1: error: expected ';'\r\n  int x = 1\n          ^\n");
   g.checks[0].name = "esc\x1b[2J";  // an escape sequence would clear the terminal
-  g.checks.push_back({.name = "third of a point", .points = 1, .score = 1.0 / 3.0, .visibility = Visibility::AfterDueDate,
+  g.checks.push_back({.name = "third of a point",
+                      .points = 1,
+                      .score = 1.0 / 3.0,
+                      .visibility = Visibility::AfterDueDate,
                       .runs = {pass("maze", 1), fail("maze", 2, "bad \x07 bell"), fail("maze", 3, "x")}});
   EXPECT_EQ(scoreTable(g),
             "go_to_goal: students/bob.cpp\n"
@@ -233,12 +238,27 @@ TEST(Gradescope, FieldsAsTheSpecificationNamesThem) {
        "Note: the controller printed more than 1 MB; the rest was cut\n"},
       {"output_format", "text"},
       {"tests",
-       {{{"name", "reaches the goal"}, {"score", 2}, {"max_score", 2}, {"status", "passed"}, {"output", ""},
-         {"visibility", "visible"}, {"tags", {"empty", "maze"}}},
-        {{"name", "avoids walls"}, {"score", 0.5}, {"max_score", 1}, {"status", "failed"},
-         {"output", "in maze, seed 3: touched a wall at 41.2 s at (3.1, 4.5)\n"}, {"visibility", "visible"}, {"tags", {"maze"}}},
-        {{"name", "secret worlds"}, {"score", 0}, {"max_score", 2}, {"status", "failed"},
-         {"output", "in rooms, seed 7: not within 0.3 m of goal by 60 s\n"}, {"visibility", "hidden"}, {"tags", {"rooms"}}}}},
+       {{{"name", "reaches the goal"},
+         {"score", 2},
+         {"max_score", 2},
+         {"status", "passed"},
+         {"output", ""},
+         {"visibility", "visible"},
+         {"tags", {"empty", "maze"}}},
+        {{"name", "avoids walls"},
+         {"score", 0.5},
+         {"max_score", 1},
+         {"status", "failed"},
+         {"output", "in maze, seed 3: touched a wall at 41.2 s at (3.1, 4.5)\n"},
+         {"visibility", "visible"},
+         {"tags", {"maze"}}},
+        {{"name", "secret worlds"},
+         {"score", 0},
+         {"max_score", 2},
+         {"status", "failed"},
+         {"output", "in rooms, seed 7: not within 0.3 m of goal by 60 s\n"},
+         {"visibility", "hidden"},
+         {"tags", {"rooms"}}}}},
   };
   EXPECT_EQ(doc, want) << doc.dump(2);
   EXPECT_TRUE(doc["execution_time"].is_number_integer());
@@ -248,8 +268,7 @@ TEST(Gradescope, CompileErrorIsTheOutputAndBadUtf8IsReplaced) {
   const fs::path dir = scratch("gradescope_compile");
   ASSERT_TRUE(writeGradescope(uncompiled("bob.cpp:1:1: error: unknown type name 'caf\xe9'\n"), dir / "results.json").ok());
   const json doc = json::parse(readFile(dir / "results.json"));  // would throw on malformed UTF-8
-  EXPECT_EQ(doc["output"],
-            "The submission did not compile, so every check scores 0:\n\nbob.cpp:1:1: error: unknown type name 'caf\xEF\xBF\xBD'\n");
+  EXPECT_EQ(doc["output"], "The submission did not compile, so every check scores 0:\n\nbob.cpp:1:1: error: unknown type name 'caf\xEF\xBF\xBD'\n");
   EXPECT_EQ(doc["score"], 0);
   EXPECT_EQ(doc["execution_time"], 0);
   EXPECT_EQ(doc["tests"][0]["status"], "failed");
@@ -285,7 +304,9 @@ TEST(PrairieLearn, ScoreIsAFractionAndHiddenChecksAreSummed) {
       {"output", "Note: the controller printed more than 1 MB; the rest was cut\n"},
       {"tests",
        {{{"name", "reaches the goal"}, {"points", 2}, {"max_points", 2}, {"output", ""}, {"message", "2 of 2 runs passed"}},
-        {{"name", "avoids walls"}, {"points", 0.5}, {"max_points", 1},
+        {{"name", "avoids walls"},
+         {"points", 0.5},
+         {"max_points", 1},
          {"output", "in maze, seed 3: touched a wall at 41.2 s at (3.1, 4.5)\n"},
          {"message", "1 of 2 runs passed"}},
         {{"name", "Hidden checks"}, {"points", 0}, {"max_points", 2}, {"output", ""}, {"message", "1 check whose result is not shown"}}}},
@@ -374,8 +395,8 @@ TEST(JUnit, CompileErrorIsAFailedTestcase) {
 
 TEST(Gradebook, ExactBytesSortedAndQuoted) {
   const fs::path dir = scratch("gradebook");
-  const Status s = writeGradebook({scored("zed.cpp", 2, 1), scored("alice, \"the\" great.cpp", 2, 0.5), scored("bob.cpp", 0, 1.0 / 3.0)},
-                                  dir / "class.csv");
+  const Status s =
+      writeGradebook({scored("zed.cpp", 2, 1), scored("alice, \"the\" great.cpp", 2, 0.5), scored("bob.cpp", 0, 1.0 / 3.0)}, dir / "class.csv");
   ASSERT_TRUE(s.ok()) << s.error();
   EXPECT_EQ(readFile(dir / "class.csv"),
             "submission,score,max_score,reaches the goal,\"avoids walls, maze\"\r\n"
@@ -431,13 +452,13 @@ TEST(Gradebook, MergeErrorsNameTheFile) {
   const std::string out = (dir / "merged.csv").string();
 
   EXPECT_EQ(mergeGradebooks({a, b}, out).error(), "gradebook: submission 'bob.cpp' is in " + a + ":2 and in " + b + ":3");
-  EXPECT_EQ(mergeGradebooks({a, c}, out).error(),
-            "gradebook: " + c + ":1: its header \"submission,score,max_score,reaches the goal,stops\" differs from "
-            "\"submission,score,max_score,reaches the goal,\"avoids walls, maze\"\" of " + a + " (gradebooks of different rubrics?)");
+  EXPECT_EQ(mergeGradebooks({a, c}, out).error(), "gradebook: " + c +
+                                                      ":1: its header \"submission,score,max_score,reaches the goal,stops\" differs from "
+                                                      "\"submission,score,max_score,reaches the goal,\"avoids walls, maze\"\" of " +
+                                                      a + " (gradebooks of different rubrics?)");
   EXPECT_EQ(mergeGradebooks({dir / "open_quote.csv"}, out).error(),
             "gradebook: " + (dir / "open_quote.csv").string() + ":2: a quoted field is not closed");
-  EXPECT_EQ(mergeGradebooks({dir / "short.csv"}, out).error(),
-            "gradebook: " + (dir / "short.csv").string() + ":2: 2 fields where the header has 4");
+  EXPECT_EQ(mergeGradebooks({dir / "short.csv"}, out).error(), "gradebook: " + (dir / "short.csv").string() + ":2: 2 fields where the header has 4");
   EXPECT_EQ(mergeGradebooks({dir / "after_quote.csv"}, out).error(),
             "gradebook: " + (dir / "after_quote.csv").string() + ":3: text after a closing quote");
   EXPECT_EQ(mergeGradebooks({dir / "inner_quote.csv"}, out).error(),
@@ -486,8 +507,7 @@ Report writeReport(const std::string& name) {
 TEST(HtmlReport, SelfContainedAndEscaped) {
   const Report r = writeReport("html_text");
   const std::string page = readFile(r.html);
-  EXPECT_NE(page.find("bumped &lt;script&gt;alert(1)&lt;/script&gt; &amp; &quot;double&quot; &#39;single&#39; \xEF\xBF\xBD here"),
-            std::string::npos);
+  EXPECT_NE(page.find("bumped &lt;script&gt;alert(1)&lt;/script&gt; &amp; &quot;double&quot; &#39;single&#39; \xEF\xBF\xBD here"), std::string::npos);
   EXPECT_EQ(page.find("<script"), std::string::npos);
   EXPECT_EQ(page.find("http:"), std::string::npos);
   EXPECT_EQ(page.find("https:"), std::string::npos);
@@ -557,8 +577,16 @@ struct Ran {
 // Runs headless Chromium on `page` with `flags`, stdout to `out`, at most 60 s (then it and its
 // children are killed by timeout(1), which gives them a process group of their own).
 Ran chromium(const fs::path& dir, const std::vector<std::string>& flags, const fs::path& page, const fs::path& out) {
-  std::vector<std::string> all{"/usr/bin/timeout", "-k", "10", "60", kChromium, "--headless", "--no-sandbox", "--disable-gpu",
-                               "--no-first-run", "--user-data-dir=" + (dir / "profile").string()};
+  std::vector<std::string> all{"/usr/bin/timeout",
+                               "-k",
+                               "10",
+                               "60",
+                               kChromium,
+                               "--headless",
+                               "--no-sandbox",
+                               "--disable-gpu",
+                               "--no-first-run",
+                               "--user-data-dir=" + (dir / "profile").string()};
   all.insert(all.end(), flags.begin(), flags.end());
   all.push_back("file://" + fs::absolute(page).string());
   std::vector<char*> argv;
@@ -604,8 +632,7 @@ TEST(HtmlReportInChromium, ScreenshotShowsTheTableTheVideoAndThePlot) {
   requireChromium();
   const Report r = writeReport("chromium_screenshot");
   const fs::path shot = r.dir / "shot.png";
-  const Ran ran = chromium(r.dir, {"--screenshot=" + shot.string(), "--window-size=1000,800", "--hide-scrollbars"}, r.html,
-                           r.dir / "stdout.txt");
+  const Ran ran = chromium(r.dir, {"--screenshot=" + shot.string(), "--window-size=1000,800", "--hide-scrollbars"}, r.html, r.dir / "stdout.txt");
   ASSERT_EQ(ran.status, 0) << ran.err;
   const Result<render::Image> img = render::readPng(shot.string());
   ASSERT_TRUE(img.ok()) << img.error() << "\n" << ran.err;
@@ -632,8 +659,7 @@ TEST(HtmlReportInChromium, DomHasTheRowsTheTextAndTheDataUris) {
   EXPECT_EQ(one(dom.get(), "//title"), "go_to_goal: students/alice.cpp");
   EXPECT_EQ(one(dom.get(), "//p[@class='total']"), "Total: 2.5 / 5 points");
   EXPECT_EQ(select(dom.get(), "//table/thead/tr/th"), (std::vector<std::string>{"Check", "Score", "Points", "Status", "Reasons"}));
-  EXPECT_EQ(select(dom.get(), "//table/tbody/tr/td[1]"),
-            (std::vector<std::string>{"reaches the goal", "avoids walls", "secret worlds (hidden)"}));
+  EXPECT_EQ(select(dom.get(), "//table/tbody/tr/td[1]"), (std::vector<std::string>{"reaches the goal", "avoids walls", "secret worlds (hidden)"}));
   EXPECT_EQ(select(dom.get(), "//table/tbody/tr/td[2]"), (std::vector<std::string>{"2", "0.5", "0"}));
   EXPECT_EQ(select(dom.get(), "//table/tbody/tr/td[3]"), (std::vector<std::string>{"2", "1", "2"}));
   EXPECT_EQ(select(dom.get(), "//table/tbody/tr/td[4]"), (std::vector<std::string>{"PASS", "PARTIAL", "FAIL"}));

@@ -2,6 +2,7 @@
 // controller drives exactly as it does in this process; a hostile one fails its robot with a reason
 // a student can act on, and never the process that holds the world.
 #include "frob/course/isolation.hpp"
+
 #include "frob/frob.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/world_file.hpp"
@@ -76,9 +77,9 @@ worlds::WorldDef room(int robots = 1) {
 
 // What became of a hostile submission run for at most two simulated seconds.
 struct Outcome {
-  std::string startError;                          // why the host could not start, if it could not
+  std::string startError;                           // why the host could not start, if it could not
   std::vector<worlds::ControllerFailure> failures;  // as the run reports them
-  std::string output;                              // what it printed, as passed on
+  std::string output;                               // what it printed, as passed on
   std::vector<std::string> notes;
   Wheels lastWheels;
   std::vector<sandbox::Layer> layers;
@@ -127,22 +128,22 @@ TEST_P(Hostile, FailsItsRobotWithAReasonAndNothingElse) {
 
 INSTANTIATE_TEST_SUITE_P(
     Isolation, Hostile,
-    ::testing::Values(
-        Case{"segfault", "ada: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.50 s"},
-        Case{"abort", "ada: crashed with SIGABRT (abort(), a failed assert, or an exception nothing caught) at t = 0.50 s"},
-        Case{"stack_overflow", "ada: crashed with SIGSEGV: its stack overflowed (a recursion that never ends?) at t = 0.50 s"},
-        Case{"endless_loop", "ada: used more than 1 s of CPU in one step (an endless loop?) at t = 0.50 s"},
-        Case{"sleeps", "ada: did not answer within 1 s in one step (it waited or slept) at t = 0.50 s"},
-        Case{"forks", "ada: tried to start another process (not allowed) at t = 0.50 s"},
-        Case{"runs_shell", "ada: tried to start another process (not allowed) at t = 0.50 s"},
-        Case{"opens_socket", "ada: tried to open a network socket (not allowed) at t = 0.50 s"},
-        Case{"signals_parent", "ada: tried to signal another process (not allowed) at t = 0.50 s"},
-        Case{"reads_outside", "ada: tried to read /etc/passwd (not allowed) at t = 0.50 s"},
-        Case{"writes_outside", "ada: tried to write /tmp/frob-hostile-was-here (not allowed) at t = 0.50 s"},
-        Case{"forged_exit", "ada: ended its program with exit status 0 (a controller must not call exit; its results would "
-                            "not count) at t = 0.50 s"},
-        Case{"throws_int", "ada: an exception of unknown type"},
-        Case{"commands_nan", "ada: the controller commanded non-finite wheels {forward nan m/s, turn 0.000 rad/s} at t = 0.500 s"}),
+    ::testing::Values(Case{"segfault", "ada: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.50 s"},
+                      Case{"abort", "ada: crashed with SIGABRT (abort(), a failed assert, or an exception nothing caught) at t = 0.50 s"},
+                      Case{"stack_overflow", "ada: crashed with SIGSEGV: its stack overflowed (a recursion that never ends?) at t = 0.50 s"},
+                      Case{"endless_loop", "ada: used more than 1 s of CPU in one step (an endless loop?) at t = 0.50 s"},
+                      Case{"sleeps", "ada: did not answer within 1 s in one step (it waited or slept) at t = 0.50 s"},
+                      Case{"forks", "ada: tried to start another process (not allowed) at t = 0.50 s"},
+                      Case{"runs_shell", "ada: tried to start another process (not allowed) at t = 0.50 s"},
+                      Case{"opens_socket", "ada: tried to open a network socket (not allowed) at t = 0.50 s"},
+                      Case{"signals_parent", "ada: tried to signal another process (not allowed) at t = 0.50 s"},
+                      Case{"reads_outside", "ada: tried to read /etc/passwd (not allowed) at t = 0.50 s"},
+                      Case{"writes_outside", "ada: tried to write /tmp/frob-hostile-was-here (not allowed) at t = 0.50 s"},
+                      Case{"forged_exit",
+                           "ada: ended its program with exit status 0 (a controller must not call exit; its results would "
+                           "not count) at t = 0.50 s"},
+                      Case{"throws_int", "ada: an exception of unknown type"},
+                      Case{"commands_nan", "ada: the controller commanded non-finite wheels {forward nan m/s, turn 0.000 rad/s} at t = 0.500 s"}),
     [](const ::testing::TestParamInfo<Case>& info) { return info.param.module; });
 
 TEST(Isolation, NothingOutsideItsScratchFolderIsReadOrWritten) {
@@ -205,13 +206,16 @@ TEST(Isolation, AMemoryBombFailsOnItsLimit) {
 
 TEST(Isolation, AGlobalConstructorThatNeverEndsIsStopped) {
   const Outcome o = runHostile({"endless_constructor"}, {.startSeconds = 0.5});
-  EXPECT_EQ(o.startError, "the controller 'endless_constructor' failed: did not finish starting within 0.5 s (an endless loop?) at t = 0.00 s (in a global constructor)");
+  EXPECT_EQ(
+      o.startError,
+      "the controller 'endless_constructor' failed: did not finish starting within 0.5 s (an endless loop?) at t = 0.00 s (in a global constructor)");
 }
 
 TEST(Isolation, AGlobalConstructorThatCrashesIsNamed) {
   const Outcome o = runHostile({"crash_in_constructor"});
-  EXPECT_EQ(o.startError, "the controller 'crash_in_constructor' failed: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.00 s "
-                          "(in a global constructor)");
+  EXPECT_EQ(o.startError,
+            "the controller 'crash_in_constructor' failed: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.00 s "
+            "(in a global constructor)");
 }
 
 TEST(Isolation, AMultiRobotRunNamesTheRobotWhoseControllerFailed) {

@@ -46,8 +46,7 @@ TEST(Judge, WaypointsInOrder) {
   EXPECT_TRUE(run(ab, straight(1, 1.5, 0.5, 8)).passed);
   EXPECT_EQ(run(ab, straight(1, 2.5, 0.5, 8)).reason, "never came within 0.20 m of a (closest 1.00 m, at 2.0 s)");
   const Criterion ba{.kind = Kind::Waypoints, .points = {"b", "a"}, .distance = 0.2};
-  EXPECT_EQ(run(ba, straight(1, 1.5, 0.5, 8)).reason,
-            "reached b at 5.6 s, never came within 0.20 m of a after that (closest 1.80 m, at 5.6 s)");
+  EXPECT_EQ(run(ba, straight(1, 1.5, 0.5, 8)).reason, "reached b at 5.6 s, never came within 0.20 m of a after that (closest 1.80 m, at 5.6 s)");
 }
 
 TEST(Judge, StoppedAtTheEnd) {
@@ -131,7 +130,7 @@ TEST(Judge, Bug1BoundCountsThePerimetersOfTheObstaclesMet) {
   r.points = {{"goal", {5.0, 1.5}}};
   Track t{.name = "ada"};
   for (int k = 0; k <= 40; ++k) t.path.emplace_back(1 + 0.05 * k, 1.5);  // to the block
-  t.path.emplace_back(5.0, 1.5);                                           // and a jump to the goal
+  t.path.emplace_back(5.0, 1.5);                                         // and a jump to the goal
   // Drove 2 + 2 = 4 m (the jump included); the bound is 4 m direct + 1.5 × 6 m = 13 m.
   EXPECT_TRUE(run({.kind = Kind::Bug1Bound}, t, r).passed);
   // Dithering below the block: 1.20 m there, 399 jumps of 0.9 m, 3.23 m to the goal: 365.54 m.

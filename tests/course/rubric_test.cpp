@@ -119,8 +119,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "14: check[1].visibility: expected \"visible\", \"hidden\" or \"after_due_date\""},
         Mistake{"points = 4", "points = \"four\"", "6: check[0].points: expected a number"},
         Mistake{"name = \"hidden fields\"", "name = \"reaches the goal\"", "12: check[1].name: 'reaches the goal' names two checks"},
-        Mistake{"goal = { within = 0.2, by = 60 }\ncollisions = { max = 0 }\n", "",
-                "4: check[0].name: check 'reaches the goal' has no criterion"},
+        Mistake{"goal = { within = 0.2, by = 60 }\ncollisions = { max = 0 }\n", "", "4: check[0].name: check 'reaches the goal' has no criterion"},
         Mistake{"seconds = 90", "seconds = [", "4: syntax error: Error while parsing value: could not determine value type"}));
 
 TEST(Rubric, GeneratedWorldsFromSeedsAndFromTheSecret) {
@@ -161,8 +160,9 @@ TEST(Rubric, AWorldWithNoRobotIsRefused) {
   std::ofstream(dir / "empty.toml") << "size = [4.0, 4.0]\n";
   Result<worlds::WorldDef> w = loadWorldRef({.name = "worlds/empty.toml", .file = dir / "empty.toml"});
   ASSERT_FALSE(w.ok());
-  EXPECT_EQ(w.error(), "worlds/empty.toml: the world has no robot to drive: add one, e.g. a [[robot]] table with start = [1, 1] "
-                       "(the world format: worlds/data/README.md)");
+  EXPECT_EQ(w.error(),
+            "worlds/empty.toml: the world has no robot to drive: add one, e.g. a [[robot]] table with start = [1, 1] "
+            "(the world format: worlds/data/README.md)");
 }
 
 }  // namespace

@@ -4,8 +4,9 @@
 
 #include "frob/render/image.hpp"
 
-#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
@@ -22,8 +23,7 @@ TaskRecord task(std::int64_t id, std::int64_t parent, std::string name, double s
 TEST(Timeline, OverlappingTasksGetTracksOfTheirOwn) {
   const fs::path path = fs::path(::testing::TempDir()) / "timeline.json";
   // main holds drive then turn in sequence; watch runs beside them (withTask), overlapping both.
-  const std::vector<TaskRecord> records{task(1, 0, "drive", 0, 4), task(3, 0, "watch", 2, 6), task(2, 0, "turn", 4, 10),
-                                        task(0, -1, "main", 0, 10)};
+  const std::vector<TaskRecord> records{task(1, 0, "drive", 0, 4), task(3, 0, "watch", 2, 6), task(2, 0, "turn", 4, 10), task(0, -1, "main", 0, 10)};
   ASSERT_TRUE(writeTimeline(path.string(), {"bug"}, {records}).ok());
   const nlohmann::json doc = nlohmann::json::parse(std::ifstream(path));
   std::map<std::string, int> track;

@@ -1,6 +1,7 @@
 // runSession: the run loop behind `frob run`: when a run ends, what the summary says, and that the
 // trace holds exactly the recorded values. (The files' atomicity is tested end to end in tests/app.)
 #include "frob/course/session.hpp"
+
 #include "frob/frob.hpp"
 #include "frob/render/image.hpp"
 #include "frob/worlds/world_file.hpp"
@@ -27,7 +28,8 @@ goal = [3.0, 1.5]
 [[robot]]
 name = "r"
 start = [1.0, 1.5]
-)", "room.toml");
+)",
+                             "room.toml");
 }
 
 LoadedController inlineController(Controller make) { return {.entry = {.name = "inline", .make = std::move(make)}, .source = "test"}; }
@@ -45,9 +47,8 @@ fs::path tempPath(const std::string& name) {
 }
 
 TEST(Session, EndsWhenTheControllerTaskReturns) {
-  Result<Summary> s = runSession({.world = room(), .worldName = "room",
-                                  .controllers = {inlineController(makeController([] { return forwardFor(1.5); }))},
-                                  .seconds = 10});
+  Result<Summary> s = runSession(
+      {.world = room(), .worldName = "room", .controllers = {inlineController(makeController([] { return forwardFor(1.5); }))}, .seconds = 10});
   ASSERT_TRUE(s.ok()) << s.error();
   const RobotSummary& r = s.value().robots.at(0);
   ASSERT_TRUE(r.finishedAt.has_value());
@@ -61,9 +62,11 @@ TEST(Session, EndsWhenTheControllerTaskReturns) {
 // speed, drawn in blue, reaches the right end of its chart.
 TEST(Session, ThePlotEndsWhereTheRunEnded) {
   const fs::path plot = tempPath("session_plot_end.png");
-  Result<Summary> s = runSession({.world = room(), .worldName = "room",
+  Result<Summary> s = runSession({.world = room(),
+                                  .worldName = "room",
                                   .controllers = {inlineController(makeController([] { return forwardFor(1.5); }))},
-                                  .seconds = 10, .outputs = {.plot = plot.string()}});
+                                  .seconds = 10,
+                                  .outputs = {.plot = plot.string()}});
   ASSERT_TRUE(s.ok()) << s.error();
   Result<render::Image> img = render::readPng(plot.string());
   ASSERT_TRUE(img.ok()) << img.error();
@@ -107,31 +110,33 @@ int orangePixels(const fs::path& png) {
 TEST(Session, ThePlotChartsTheValuesTasksPublish) {
   const fs::path all = tempPath("session_plot_published.png"), others = tempPath("session_plot_not_published.png");
   for (const auto& [png, signals] : {std::pair{all, std::vector<std::string>{}}, {others, std::vector<std::string>{"s4"}}}) {
-    Result<Summary> s = runSession({.world = room(), .worldName = "room",
+    Result<Summary> s = runSession({.world = room(),
+                                    .worldName = "room",
                                     .controllers = {inlineController(makeController([] { return publishesLeftInOrange(); }))},
-                                    .seconds = 10, .outputs = {.plot = png.string(), .plotSignals = signals}});
+                                    .seconds = 10,
+                                    .outputs = {.plot = png.string(), .plotSignals = signals}});
     ASSERT_TRUE(s.ok()) << s.error();
   }
-  EXPECT_GT(orangePixels(all), 200);  // the chart of "left": a line across it and its legend
+  EXPECT_GT(orangePixels(all), 200);   // the chart of "left": a line across it and its legend
   EXPECT_EQ(orangePixels(others), 0);  // not asked for: --plot-signals s4 names sonar 4 only
 }
 
 TEST(Session, PlotSignalsNameSonarsInTheRingAndValuesThatWerePublished) {
-  RunDef def{.world = room(), .worldName = "room", .controllers = {inlineController(nullptr)}, .seconds = 1,
-             .outputs = {.plotSignals = {"s16"}}};
+  RunDef def{.world = room(), .worldName = "room", .controllers = {inlineController(nullptr)}, .seconds = 1, .outputs = {.plotSignals = {"s16"}}};
   EXPECT_EQ(validate(def).error(), "--plot-signals: there is no sonar s16: the ring has 16 (s0 to s15)");
 
-  Result<Summary> s = runSession({.world = room(), .worldName = "room",
+  Result<Summary> s = runSession({.world = room(),
+                                  .worldName = "room",
                                   .controllers = {inlineController(makeController([] { return plotsLeft(); }))},
-                                  .seconds = 10, .outputs = {.plot = tempPath("session_plot_names.png").string(), .plotSignals = {"s4", "left", "right"}}});
+                                  .seconds = 10,
+                                  .outputs = {.plot = tempPath("session_plot_names.png").string(), .plotSignals = {"s4", "left", "right"}}});
   ASSERT_TRUE(s.ok()) << s.error();
   EXPECT_EQ(s.value().notes, std::vector<std::string>{"--plot-signals: no task published 'right' (withPlot(\"right\", behavior, task))"});
 }
 
 TEST(Session, DistanceAndGoal) {
-  Result<Summary> s = runSession({.world = room(), .worldName = "room",
-                                  .controllers = {inlineController([](const Robot&) { return wheels(0.5, 0.0); })},
-                                  .seconds = 4});
+  Result<Summary> s = runSession(
+      {.world = room(), .worldName = "room", .controllers = {inlineController([](const Robot&) { return wheels(0.5, 0.0); })}, .seconds = 4});
   ASSERT_TRUE(s.ok()) << s.error();
   const RobotSummary& r = s.value().robots.at(0);
   // 0.5 m/s reached after 0.5 s at 1 m/s^2: 0.125 m then 0.5 m/s for the remaining 3.49 s.
@@ -155,8 +160,10 @@ std::vector<std::vector<double>> numbers(const fs::path& csv, std::string& heade
     std::string cell;
     for (int column = 0; std::getline(cells, cell, ','); ++column) {
       double x = 0;
-      if (std::from_chars(cell.data(), cell.data() + cell.size(), x).ec == std::errc() && !cell.empty()) row.push_back(x);
-      else if (column > 10 && !cell.empty()) tasks.push_back(cell);
+      if (std::from_chars(cell.data(), cell.data() + cell.size(), x).ec == std::errc() && !cell.empty())
+        row.push_back(x);
+      else if (column > 10 && !cell.empty())
+        tasks.push_back(cell);
     }
     rows.push_back(row);
   }
@@ -166,8 +173,8 @@ std::vector<std::vector<double>> numbers(const fs::path& csv, std::string& heade
 TEST(Session, TraceHoldsTheRecordedValuesExactly) {
   const fs::path csv = tempPath("session_trace.csv");
   Controller c = makeController([] { return forwardFor(0.5); });
-  Result<Summary> s = runSession({.world = room(), .worldName = "room", .controllers = {inlineController(c)},
-                                  .seconds = 1, .outputs = {.trace = csv.string()}});
+  Result<Summary> s =
+      runSession({.world = room(), .worldName = "room", .controllers = {inlineController(c)}, .seconds = 1, .outputs = {.trace = csv.string()}});
   ASSERT_TRUE(s.ok()) << s.error();
   worlds::Run run(room(), {}, {c});
   run.runUntil(0.51);
@@ -180,9 +187,16 @@ TEST(Session, TraceHoldsTheRecordedValuesExactly) {
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const worlds::StepRecord& rec = run.recorder().steps()[k];
     const worlds::RobotRecord& r = rec.robots[0];
-    const std::vector<double> expected{rec.time, 0, r.truePose.position.x(), r.truePose.position.y(), r.truePose.heading,
-                                       r.odometry.position.x(), r.odometry.position.y(), r.odometry.heading,
-                                       r.wheels.forward, r.wheels.turn};
+    const std::vector<double> expected{rec.time,
+                                       0,
+                                       r.truePose.position.x(),
+                                       r.truePose.position.y(),
+                                       r.truePose.heading,
+                                       r.odometry.position.x(),
+                                       r.odometry.position.y(),
+                                       r.odometry.heading,
+                                       r.wheels.forward,
+                                       r.wheels.turn};
     ASSERT_GE(rows[k].size(), 26u);
     EXPECT_EQ(std::vector<double>(rows[k].begin(), rows[k].begin() + 10), expected) << "row " << k;
     EXPECT_EQ(std::vector<double>(rows[k].begin() + 10, rows[k].begin() + 26), r.sonar) << "row " << k;
@@ -214,11 +228,12 @@ TEST(Session, TraceHoldsTheRecordedValuesExactly) {
 
 TEST(Session, FailingControllerWritesNothing) {
   const fs::path csv = tempPath("session_fail.csv"), json = tempPath("session_fail.json");
-  Controller c = [](const Robot&) {
-    return lift([](double t) { return t < 0.3 ? Wheels{0.1, 0} : throw RoboErr("gave up"); }, time());
-  };
-  Result<Summary> s = runSession({.world = room(), .worldName = "room", .controllers = {inlineController(c)},
-                                  .seconds = 2, .outputs = {.trace = csv.string(), .timeline = json.string()}});
+  Controller c = [](const Robot&) { return lift([](double t) { return t < 0.3 ? Wheels{0.1, 0} : throw RoboErr("gave up"); }, time()); };
+  Result<Summary> s = runSession({.world = room(),
+                                  .worldName = "room",
+                                  .controllers = {inlineController(c)},
+                                  .seconds = 2,
+                                  .outputs = {.trace = csv.string(), .timeline = json.string()}});
   ASSERT_TRUE(s.ok()) << s.error();
   EXPECT_TRUE(s.value().failed());
   EXPECT_NE(s.value().robots[0].failure.find("gave up"), std::string::npos) << s.value().robots[0].failure;
@@ -241,8 +256,10 @@ TEST(Session, ValidateNamesTheProblem) {
 
 // A world with no robot would run for one step and say nothing: it is refused, saying how to add one.
 TEST(Session, AWorldWithNoRobotIsRefused) {
-  RunDef def{.world = *worlds::parseWorld("size = [6.0, 3.0]\n", "empty.toml"), .worldName = "empty.toml",
-             .controllers = {inlineController(nullptr)}, .seconds = 1};
+  RunDef def{.world = *worlds::parseWorld("size = [6.0, 3.0]\n", "empty.toml"),
+             .worldName = "empty.toml",
+             .controllers = {inlineController(nullptr)},
+             .seconds = 1};
   EXPECT_EQ(validate(def).error(),
             "empty.toml: the world has no robot to drive: add one, e.g. a [[robot]] table with start = [1, 1] "
             "(the world format: worlds/data/README.md)");

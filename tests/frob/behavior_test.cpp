@@ -1,4 +1,5 @@
 #include "frob/behavior.hpp"
+
 #include "frob/calculus.hpp"
 #include "frob/sampling.hpp"
 
@@ -214,9 +215,9 @@ TEST(Behavior, ThePapersRerrorReadsLikeThePaper) {
   double thetamax = 30_deg;
   Behavior<double> rerror = limit(velocity * std::sin(thetamax), setpoint - left);
   std::vector<double> s = sample(rerror, 0.1, 11);
-  EXPECT_DOUBLE_EQ(s[0], -0.25);            // far from the wall: clipped at -m
-  EXPECT_NEAR(s[4], 0.6 - 0.6, 1e-12);      // at the setpoint
-  EXPECT_DOUBLE_EQ(s[10], 0.25);            // too close: clipped at +m
+  EXPECT_DOUBLE_EQ(s[0], -0.25);        // far from the wall: clipped at -m
+  EXPECT_NEAR(s[4], 0.6 - 0.6, 1e-12);  // at the setpoint
+  EXPECT_DOUBLE_EQ(s[10], 0.25);        // too close: clipped at +m
 }
 
 // Issue 15: the nearest of five sonars was min(min(min(...))) in four examples.

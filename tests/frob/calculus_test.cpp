@@ -1,4 +1,5 @@
 #include "frob/calculus.hpp"
+
 #include "frob/sampling.hpp"
 #include "frob/switching.hpp"
 
@@ -48,8 +49,8 @@ TEST(Calculus, AtMinGivesTheValueWhereTheKeyWasSmallest) {
   Behavior<double> t = time();
   Behavior<double> key = (t - 1.2) * (t - 1.2);  // smallest at t = 1.2
   std::vector<double> s = sample(atMin(key, t * 10.0), 0.1, 31);
-  EXPECT_NEAR(s[5], 5.0, 1e-12);    // still falling: the minimum so far is now
-  EXPECT_NEAR(s[30], 12.0, 1e-9);   // after the minimum, its value stays
+  EXPECT_NEAR(s[5], 5.0, 1e-12);   // still falling: the minimum so far is now
+  EXPECT_NEAR(s[30], 12.0, 1e-9);  // after the minimum, its value stays
   std::vector<double> m = sample(atMax(-key, t), 0.1, 31);
   EXPECT_NEAR(m[30], 1.2, 1e-9);
 }
@@ -61,8 +62,8 @@ TEST(Calculus, StatefulBehaviorsStartWhenSwitchedIn) {
     return derivative(t) + atMin(t, t);
   }));
   std::vector<double> s = sample(b, 0.1, 13);
-  EXPECT_EQ(s[10], 0.0);             // both start at the switch: derivative 0, atMin(t, t) = 0
-  EXPECT_NEAR(s[12], 1.0, 1e-9);     // derivative of local time is 1; atMin stays 0
+  EXPECT_EQ(s[10], 0.0);          // both start at the switch: derivative 0, atMin(t, t) = 0
+  EXPECT_NEAR(s[12], 1.0, 1e-9);  // derivative of local time is 1; atMin stays 0
 }
 
 }  // namespace

@@ -17,9 +17,7 @@ Robot scripted() {
 Behavior<Wheels> follow(const Robot& r) { return wheels(frontSonar(r), 0.0); }
 // The same as a task that ends when the range drops under 1 m (then the robot stops).
 Task<Wheels> followTask() {
-  return mkTask([](const TaskState& ts) {
-    return std::pair{follow(ts.robot()), predicate(frontSonar(ts.robot()) < 1.0)};
-  });
+  return mkTask([](const TaskState& ts) { return std::pair{follow(ts.robot()), predicate(frontSonar(ts.robot()) < 1.0)}; });
 }
 Task<Wheels> followTaskOf(const Robot&) { return followTask(); }
 
@@ -32,9 +30,7 @@ std::vector<double> forwardAt(const Controller& c, int steps) {
   return out;
 }
 
-TEST(Controller, BehaviorOfRobot) {
-  EXPECT_EQ(forwardAt(makeController(follow), 3), (std::vector<double>{2.0, 1.75, 1.5}));
-}
+TEST(Controller, BehaviorOfRobot) { EXPECT_EQ(forwardAt(makeController(follow), 3), (std::vector<double>{2.0, 1.75, 1.5})); }
 
 TEST(Controller, PointwiseExpressionOfRobot) {
   auto expr = [](const Robot& r) { return lift([](double d) { return Wheels{d, 0.0}; }, frontSonar(r)); };
@@ -54,7 +50,7 @@ TEST(RunningController, FailsOnNonFiniteWheelsAndStopsFromThenOn) {
   Clock clock(0.25);
   EXPECT_EQ(c.step(clock.now()).forward, 2.0);  // 1 / (2 - 1.5)
   EXPECT_FALSE(c.failed());
-  (void)c.step(clock.advance());                 // 1 / (1.75 - 1.5) = 4
+  (void)c.step(clock.advance());                    // 1 / (1.75 - 1.5) = 4
   EXPECT_EQ(c.step(clock.advance()).forward, 0.0);  // 1 / 0: infinite
   EXPECT_TRUE(c.failed());
   EXPECT_EQ(c.failure(), "the controller commanded non-finite wheels {forward inf m/s, turn 0.000 rad/s} at t = 0.500 s");

@@ -1,4 +1,5 @@
 #include "frob/errors.hpp"
+
 #include "frob/sampling.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,6 @@
-#include "frob/errors.hpp"
 #include "frob/event.hpp"
+
+#include "frob/errors.hpp"
 #include "frob/sampling.hpp"
 
 #include <gtest/gtest.h>

@@ -1,8 +1,10 @@
 #include "frob/geometry.hpp"
 
 #include <Eigen/Dense>
-#include <cmath>
+
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace frob {
 namespace {

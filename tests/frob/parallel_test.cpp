@@ -1,8 +1,8 @@
 #include "frob/frob.hpp"
 
-#include <stdexcept>
-
 #include <gtest/gtest.h>
+
+#include <stdexcept>
 
 namespace frob {
 namespace {
@@ -28,8 +28,7 @@ TEST(Parallel, WithTaskShowsEachTheOthersOutputAndTheFirstsEnd) {
       // The first turns, then ends with 7; it sees the second's output one step late.
       [](Behavior<Wheels> second) {
         return mkTask([second](const TaskState&) {
-          return std::pair{lift([](const Wheels& s) { return Wheels{0, s.forward}; }, second),
-                           after(0.3).map([] { return 7; })};
+          return std::pair{lift([](const Wheels& s) { return Wheels{0, s.forward}; }, second), after(0.3).map([] { return 7; })};
         });
       },
       // The second copies the first's turn into its forward speed at once, until the first ends.
@@ -52,12 +51,13 @@ TEST(Parallel, WithTaskShowsEachTheOthersOutputAndTheFirstsEnd) {
 
 // Issue 15: generic lambdas for both; the first's argument is then a Behavior<Wheels>.
 TEST(Parallel, WithTaskTakesGenericLambdas) {
-  auto t = withTask([](auto second) { return mkTask([second](const TaskState&) { return std::pair{second, after(0.2)}; }); },
-                    [](auto first, auto end) {
-                      return mkTask([first, end](const TaskState&) {
-                        return std::pair{wheels(first.map(&Wheels::forward) + 1.0, 0), end.as(Unit{})};
-                      });
-                    });
+  auto t =
+      withTask([](auto second) { return mkTask([second](const TaskState&) {
+                                   return std::pair{second, after(0.2)};
+                                 }); },
+               [](auto first, auto end) {
+                 return mkTask([first, end](const TaskState&) { return std::pair{wheels(first.map(&Wheels::forward) + 1.0, 0), end.as(Unit{})}; });
+               });
   std::vector<Wheels> s = run(std::move(t), 3);
   EXPECT_EQ(s[0].forward, 1);  // the first echoes the second one step late: 0, then 1, ...
   EXPECT_EQ(s[1].forward, 2);
@@ -66,9 +66,7 @@ TEST(Parallel, WithTaskTakesGenericLambdas) {
 
 TEST(Parallel, ParallelMergesOutputsAndWaitsForBoth) {
   std::pair<int, Unit> results;
-  auto t = [&results]() -> Task<Wheels> {
-    results = co_await parallel(turnFor(1, 0.4, 5), drive(2, 0.2), add);
-  };
+  auto t = [&results]() -> Task<Wheels> { results = co_await parallel(turnFor(1, 0.4, 5), drive(2, 0.2), add); };
   std::vector<Wheels> s = run(t(), 6);
   EXPECT_EQ(s[0], (Wheels{2, 1}));  // both
   EXPECT_EQ(s[2], (Wheels{0, 1}));  // the first alone
@@ -83,9 +81,7 @@ Task<Wheels> failAt(double seconds) {
 }
 
 TEST(Parallel, AnErrorInEitherBranchFailsTheParallel) {
-  auto failing = mkTaskE([](const TaskState&) {
-    return std::tuple{wheels(0, 1), never(), after(0.2).map([] { return RoboErr("branch broke"); })};
-  });
+  auto failing = mkTaskE([](const TaskState&) { return std::tuple{wheels(0, 1), never(), after(0.2).map([] { return RoboErr("branch broke"); })}; });
   std::string caught;
   auto t = [&]() -> Task<Wheels> {
     try {
@@ -158,9 +154,8 @@ TEST(Parallel, AnExceptionInABranchKeepsItsKindAndEndsTheRun) {
       failureOf(taskCatch(Task<Wheels>(parallel(throwsLogicError(), forever(1), add)), caught)),
       failureOf(taskCatch(Task<Wheels>(parallel(forever(1), throwsLogicError(), add)), caught)),
       failureOf(taskCatch(Task<Wheels>(disable(throwsLogicError(), forever(1), add)), caught)),
-      failureOf(taskCatch(withTask([](Behavior<Wheels>) { return throwsLogicError(); },
-                                   [](Behavior<Wheels>, Event<Outcome<void>>) { return forever(2); }),
-                          caught)),
+      failureOf(taskCatch(
+          withTask([](Behavior<Wheels>) { return throwsLogicError(); }, [](Behavior<Wheels>, Event<Outcome<void>>) { return forever(2); }), caught)),
   };
   EXPECT_EQ(restarts, 0);
   for (const std::string& m : messages) {

@@ -1,4 +1,5 @@
 #include "frob/picture.hpp"
+
 #include "frob/sampling.hpp"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,8 @@
+#include "frob/robot.hpp"
+
 #include "../bench/wall_follower.hpp"
 #include "frob/calculus.hpp"
 #include "frob/errors.hpp"
-#include "frob/robot.hpp"
 #include "frob/sampling.hpp"
 
 #include <gtest/gtest.h>
@@ -15,12 +16,15 @@ Robot approachingWall() {
   // The front sonar sees a wall 1 m away closing at 0.5 m/s; every other sonar reads its own index.
   return Robot(nomadSpec(), ScriptedSensors{
                                 .sonar = [](double t, int i) { return i == 0 ? 1.0 - 0.5 * t : 1.0 + i; },
-                                .odometry = [](double t) { return Pose2{Point2{0.5 * t, 0.0}, 0.1}; },
+                                .odometry =
+                                    [](double t) {
+                                      return Pose2{Point2{0.5 * t, 0.0}, 0.1};
+                                    },
                                 .velocity = [](double) { return 0.5; },
-                                .bumps = [](double t) {
-                                  return t > 1.95 && t < 2.05 ? std::vector<BumperHit>{{0, 0.0}}
-                                                              : std::vector<BumperHit>{};
-                                },
+                                .bumps =
+                                    [](double t) {
+                                      return t > 1.95 && t < 2.05 ? std::vector<BumperHit>{{0, 0.0}} : std::vector<BumperHit>{};
+                                    },
                             });
 }
 
@@ -82,9 +86,9 @@ TEST(Robot, ThePapersStopitEvent) {
 TEST(Robot, SensorsAreReadOncePerInstantHoweverOftenUsed) {
   int reads = 0;
   Robot r(nomadSpec(8), ScriptedSensors{.sonar = [&reads](double, int i) {
-                                          if (i == 0) ++reads;
-                                          return 1.0;
-                                        }});
+            if (i == 0) ++reads;
+            return 1.0;
+          }});
   Behavior<double> f = frontSonar(r);
   (void)sample(f + f * sonar(r, 0) + leftSonar(r), 0.1, 10);
   EXPECT_EQ(reads, 10);

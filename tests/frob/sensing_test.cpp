@@ -39,7 +39,7 @@ TEST(Sensing, NearestEchoTiesGoToTheSonarNearestTheSpansStart) {
 TEST(Sensing, NearestEchoRefusesASpanWithoutSonars) {
   Robot r = ringWith([](int) { return 2.0; });
   EXPECT_THROW((void)nearestEcho(r, 1_deg, 2_deg), UsageError);  // between sonars 0 and 1
-  EXPECT_THROW((void)nearestEcho(r, 1.0, 0.5), UsageError);       // backwards
+  EXPECT_THROW((void)nearestEcho(r, 1.0, 0.5), UsageError);      // backwards
 }
 
 TEST(Sensing, AtPlaceOccursWhenTheRobotComesWithinReach) {

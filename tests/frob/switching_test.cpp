@@ -1,7 +1,8 @@
+#include "frob/switching.hpp"
+
 #include "frob/calculus.hpp"
 #include "frob/errors.hpp"
 #include "frob/sampling.hpp"
-#include "frob/switching.hpp"
 
 #include <gtest/gtest.h>
 
@@ -75,9 +76,9 @@ TEST(Switching, AnEndlessSwitchChainAtOneInstantIsReportedNotAStackOverflow) {
     EXPECT_NE(std::string(e.what()).find("switched more than 1000 times at one instant"), std::string::npos) << e.what();
   }
   // A finite chain at one instant is fine: three switches, then a value.
-  Behavior<double> chain = untilB(constant(0.0), predicate(constant(true)).map([] {
-    return untilB(constant(1.0), predicate(constant(true)).map([] { return constant(2.0); }));
-  }));
+  Behavior<double> chain =
+      untilB(constant(0.0),
+             predicate(constant(true)).map([] { return untilB(constant(1.0), predicate(constant(true)).map([] { return constant(2.0); })); }));
   EXPECT_EQ(chain.at(clock.advance()), 2.0);
 }
 

@@ -12,7 +12,7 @@ namespace {
 enum class Side { left, right };
 std::ostream& operator<<(std::ostream& os, Side s) { return os << (s == Side::left ? "left" : "right"); }
 enum Colour { redColour, greenColour };  // no operator<<: an enum would print as a number
-struct Gap {                              // no operator<<
+struct Gap {                             // no operator<<
   double width = 0;
 };
 struct Seen {
@@ -38,9 +38,7 @@ Task<Wheels> forwardFor(double speed, double seconds) {
 
 Task<Wheels, int> countTo(int n) {
   return mkTask([n](const TaskState&) {
-    return std::pair{wheels(0, n), every(0.1).filter([n](std::int64_t k) { return k == n; }).map([](std::int64_t k) {
-                       return static_cast<int>(k);
-                     })};
+    return std::pair{wheels(0, n), every(0.1).filter([n](std::int64_t k) { return k == n; }).map([](std::int64_t k) { return static_cast<int>(k); })};
   });
 }
 
@@ -77,9 +75,7 @@ TEST(Task, ATasksBehaviorsStartWithTheTask) {
 }
 
 TEST(Task, ChainsOfZeroDurationTasksRunInOneStep) {
-  auto instant = [](double v) {
-    return mkTask([v](const TaskState&) { return std::pair{wheels(v, 0), predicate(constant(true))}; });
-  };
+  auto instant = [](double v) { return mkTask([v](const TaskState&) { return std::pair{wheels(v, 0), predicate(constant(true))}; }); };
   auto seq = [&instant]() -> Task<Wheels> {
     for (int i = 0; i < 50; ++i) co_await instant(i);
     co_await forwardFor(99, 1.0);
@@ -131,9 +127,7 @@ TEST(Task, TaskStateCapturesThePoseAtEachTransition) {
 }
 
 Task<Wheels> failAfter(double seconds, std::string why) {
-  return mkTaskE([=](const TaskState&) {
-    return std::tuple{wheels(0.1, 0), never(), after(seconds).map([why] { return RoboErr(why); })};
-  });
+  return mkTaskE([=](const TaskState&) { return std::tuple{wheels(0.1, 0), never(), after(seconds).map([why] { return RoboErr(why); })}; });
 }
 Task<Wheels> level3() { co_await failAfter(0.2, "deep"); }
 Task<Wheels> level2() {
@@ -170,8 +164,18 @@ TEST(Task, TaskErrorRaisesAsAnAwaitAndAsATask) {
   auto viaAwait = []() -> Task<Wheels> { co_await taskError(RoboErr("by await")); };
   auto viaReturn = []() -> Task<Wheels> { return taskError(RoboErr("by return")); };
   std::string a, b;
-  (void)samples(runTask(idleRobot(), taskCatch(viaAwait(), [&a](const RoboErr& e) { a = e.what(); return forwardFor(0, 1); })), 0.1, 1);
-  (void)samples(runTask(idleRobot(), taskCatch(viaReturn(), [&b](const RoboErr& e) { b = e.what(); return forwardFor(0, 1); })), 0.1, 1);
+  (void)samples(runTask(idleRobot(), taskCatch(viaAwait(),
+                                               [&a](const RoboErr& e) {
+                                                 a = e.what();
+                                                 return forwardFor(0, 1);
+                                               })),
+                0.1, 1);
+  (void)samples(runTask(idleRobot(), taskCatch(viaReturn(),
+                                               [&b](const RoboErr& e) {
+                                                 b = e.what();
+                                                 return forwardFor(0, 1);
+                                               })),
+                0.1, 1);
   EXPECT_EQ(a, "by await");
   EXPECT_EQ(b, "by return");
 }
@@ -204,9 +208,7 @@ TEST(Task, AnUncaughtExceptionNamesTheTaskAndTheTime) {
 }
 
 TEST(Task, ANonFiniteOutputNamesTheTaskAndTheTime) {
-  auto divides = []() {
-    return mkTask([](const TaskState&) { return std::pair{wheels(1.0 / (0.4 - time()) * 0.0, 0), never()}; });
-  };
+  auto divides = []() { return mkTask([](const TaskState&) { return std::pair{wheels(1.0 / (0.4 - time()) * 0.0, 0), never()}; }); };
   auto seq = [&divides]() -> Task<Wheels> { co_await divides(); };
   try {
     (void)samples(runTask(idleRobot(), seq()), 0.1, 10);
@@ -263,8 +265,8 @@ TEST(Task, AnObservedTimelineReplaysIntoAnIdenticalOne) {
   });
   (void)samples(runTask(r, seq()), 0.1, 5);
   // The outer task starts, then each inner one starts and returns in turn.
-  EXPECT_EQ(seen, (std::vector<TaskEnd>{TaskEnd::Running, TaskEnd::Running, TaskEnd::Returned, TaskEnd::Running,
-                                        TaskEnd::Returned, TaskEnd::Returned}));
+  EXPECT_EQ(seen,
+            (std::vector<TaskEnd>{TaskEnd::Running, TaskEnd::Running, TaskEnd::Returned, TaskEnd::Running, TaskEnd::Returned, TaskEnd::Returned}));
   const std::deque<TaskRecord>& a = r.debugChannel()->timeline().ended();
   ASSERT_EQ(mirror.ended().size(), a.size());
   for (std::size_t k = 0; k < a.size(); ++k) {
@@ -311,9 +313,9 @@ TEST(Task, RecursiveRunAroundRunsAnHourInBoundedMemory) {
     });
     k.robot().debugChannel()->timeline().drainEnded();
   }
-  EXPECT_GT(laps, 500);           // it went round and round
-  EXPECT_LE(maxFrames, 3);        // runAround and its current subtask (and the mkTask awaiting)
-  EXPECT_LE(maxNodes, 60);        // one task's graph and the robot's sensors
+  EXPECT_GT(laps, 500);                  // it went round and round
+  EXPECT_LE(maxFrames, 3);               // runAround and its current subtask (and the mkTask awaiting)
+  EXPECT_LE(maxNodes, 60);               // one task's graph and the robot's sensors
   EXPECT_EQ(liveTaskFrames(), frames0);  // destroying the controller frees every frame
 }
 
@@ -470,18 +472,13 @@ TEST(Task, ABehaviorBuiltInAParentStartsWithTheSubtaskThatFirstReadsIt) {
 std::vector<TaskRecord> rateTree(double dt) {
   auto tree = []() -> Task<Wheels> {
     co_await forwardFor(0.5, 1.0).named("timer");
-    co_await mkTask([](const TaskState& ts) {
-      return std::pair{wheels(0, 1.0), predicate(orientation(ts.robot()) > 1.0)};
-    }).named("predicate");
+    co_await mkTask([](const TaskState& ts) { return std::pair{wheels(0, 1.0), predicate(orientation(ts.robot()) > 1.0)}; }).named("predicate");
     co_await mkTask([](const TaskState&) {
       return std::pair{wheels(0.3, 0), every(0.02).filter([](std::int64_t k) { return k >= 25; }).map([] { return Unit{}; })};
     }).named("every");
-    (void)co_await timeLimit(mkTask([](const TaskState&) { return std::pair{wheels(0.2, 0), never()}; }), 0.7)
-        .named("timeLimit");
+    (void)co_await timeLimit(mkTask([](const TaskState&) { return std::pair{wheels(0.2, 0), never()}; }), 0.7).named("timeLimit");
     const Robot r = (co_await getTaskState()).robot();
-    co_await withExit(predicate(frontSonar(r) < 1.0),
-                      mkTask([](const TaskState&) { return std::pair{wheels(0.4, 0), never()}; }))
-        .named("withExit");
+    co_await withExit(predicate(frontSonar(r) < 1.0), mkTask([](const TaskState&) { return std::pair{wheels(0.4, 0), never()}; })).named("withExit");
   };
   KinematicRobot k(3.0);
   k.run(runTask(k.robot(), tree()), dt, 10.0);

@@ -88,11 +88,12 @@ TEST(Transformers, WithBGivesItsFunctionTheStateOfItsStartByValue) {
   auto seq = [&]() -> Task<Wheels> {
     co_await drive(1, 0.2);
     travelled = (co_await withB(
-        [](const TaskState& ts) {
-          const Point2& start = ts.initialPlace();  // kept by reference, as students write
-          return lift([&start](const Point2& p) { return distance(p, start); }, place(ts.robot()));
-        },
-        twoLegs())).second;
+                     [](const TaskState& ts) {
+                       const Point2& start = ts.initialPlace();  // kept by reference, as students write
+                       return lift([&start](const Point2& p) { return distance(p, start); }, place(ts.robot()));
+                     },
+                     twoLegs()))
+                    .second;
   };
   (void)forwardOf(runTask(r, seq()), 12);
   EXPECT_NEAR(travelled, 0.8, 1e-12);  // from x = 0.2 to x = 1.0, not from the second leg's start (0.3)
@@ -132,9 +133,7 @@ TEST(Transformers, WithExitWinsATieWithItsBodysEnd) {
 TEST(Transformers, WithMyResultSeesItsOwnOutputOneStepLate) {
   // Output: 1 + my previous output, so 1, 2, 3, ... (and 1 at the start, from the zero before).
   auto counting = withMyResult([](Behavior<Wheels> mine) {
-    return mkTask([mine](const TaskState&) {
-      return std::pair{lift([](const Wheels& w) { return Wheels{w.forward + 1, 0}; }, mine), never()};
-    });
+    return mkTask([mine](const TaskState&) { return std::pair{lift([](const Wheels& w) { return Wheels{w.forward + 1, 0}; }, mine), never()}; });
   });
   EXPECT_EQ(forwardOf(runTask(idleRobot(), std::move(counting)), 4), (std::vector<double>{1, 2, 3, 4}));
 }
@@ -154,8 +153,11 @@ TEST(Transformers, WithFilterAppliesToEverySubtaskAndStopsAfter) {
       co_await drive(2, 0.1);
     };
     co_await withFilter([](const Wheels& w) { return Wheels{w.forward * 10, w.turn}; }, inner());
-    co_await withFilter([](Behavior<Wheels> b) { return lift([](Wheels w, double t) { return Wheels{w.forward + t, 0}; }, b, time()); },
-                        drive(3, 0.2));
+    co_await withFilter(
+        [](Behavior<Wheels> b) {
+          return lift([](Wheels w, double t) { return Wheels{w.forward + t, 0}; }, b, time());
+        },
+        drive(3, 0.2));
     co_await drive(4, 1);
   };
   std::vector<double> f = forwardOf(runTask(idleRobot(), seq()), 6);
@@ -171,9 +173,7 @@ Task<Wheels, bool> driveTo(Point2 goal) {
     return std::pair{wheels(0.5, 0), predicate(distance(place(ts.robot()), goal) < 0.1).map([] { return true; })};
   });
 }
-Task<Wheels, bool> driveToWithPicture(Point2 goal) {
-  return withPicture(paintAt(goal, withColor(red, circle(10_cm))), driveTo(goal));
-}
+Task<Wheels, bool> driveToWithPicture(Point2 goal) { return withPicture(paintAt(goal, withColor(red, circle(10_cm))), driveTo(goal)); }
 
 TEST(Transformers, WithPictureIsPublishedWhileTheTaskRunsAtTheRightPlace) {
   Robot r(nomadSpec(), ScriptedSensors{.odometry = [](double t) { return Pose2{Point2{0.5 * t, 0}, 0}; }});
@@ -199,9 +199,7 @@ TEST(Transformers, AbortedTasksFreeTheirFramesAndBehaviors) {
   long nodes0 = 0;
   Robot r = idleRobot();
   auto nested = []() -> Task<Wheels> {
-    auto deep = []() -> Task<Wheels> {
-      co_await withPicture(circle(1), forever(1));
-    };
+    auto deep = []() -> Task<Wheels> { co_await withPicture(circle(1), forever(1)); };
     co_await withFilter([](const Wheels& w) { return w; }, deep());
   };
   auto seq = [&nested]() -> Task<Wheels> {
@@ -216,9 +214,9 @@ TEST(Transformers, AbortedTasksFreeTheirFramesAndBehaviors) {
   for (int i = 0; i < 4; ++i) (void)c.at(clock.advance());
   nodes0 = liveNodeCount();
   for (int i = 0; i < 6; ++i) (void)c.at(clock.advance());
-  EXPECT_GE(during, 6);                           // seq, timeLimit, nested, filter, deep, picture, atomic
-  EXPECT_LE(liveTaskFrames() - frames0, 2);       // seq and its final forever
-  EXPECT_LT(liveNodeCount(), nodes0);             // the aborted graphs are gone
+  EXPECT_GE(during, 6);                      // seq, timeLimit, nested, filter, deep, picture, atomic
+  EXPECT_LE(liveTaskFrames() - frames0, 2);  // seq and its final forever
+  EXPECT_LT(liveNodeCount(), nodes0);        // the aborted graphs are gone
   EXPECT_TRUE(r.debugChannel()->picture(clock.now()).empty());
   std::vector<TaskRecord> ended = r.debugChannel()->timeline().drainEnded();
   int aborted = 0;

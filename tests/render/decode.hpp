@@ -45,10 +45,10 @@ inline Decoded decode(const std::string& path, bool keepImages = false) {
       out.width = frame->width;
       out.height = frame->height;
       if (!keepImages) continue;
-      sws = sws_getCachedContext(sws, frame->width, frame->height, static_cast<AVPixelFormat>(frame->format), frame->width,
-                                 frame->height, AV_PIX_FMT_RGBA, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT,
-                                 nullptr, nullptr, nullptr);
-      Image img{.width = frame->width, .height = frame->height,
+      sws = sws_getCachedContext(sws, frame->width, frame->height, static_cast<AVPixelFormat>(frame->format), frame->width, frame->height,
+                                 AV_PIX_FMT_RGBA, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr, nullptr, nullptr);
+      Image img{.width = frame->width,
+                .height = frame->height,
                 .rgba = std::vector<std::uint8_t>(static_cast<std::size_t>(frame->width) * frame->height * 4)};
       std::uint8_t* dst[1] = {img.rgba.data()};
       const int dstStride[1] = {4 * frame->width};

@@ -4,9 +4,8 @@
 // pixels it covers, and a golden regenerated without it would not hide that.
 // The top-down view and plots are rasterized on the CPU without antialiasing (render/src/raster.hpp),
 // so a pixel well inside a shape has exactly its colour; only text is antialiased.
+#include "draw.hpp"  // private: the palette the features are drawn in
 #include "frob/render/renderer.hpp"
-
-#include "draw.hpp"    // private: the palette the features are drawn in
 #include "raster.hpp"  // private: span(), the blend a translucent feature gets
 
 #include <gtest/gtest.h>
@@ -68,9 +67,8 @@ int countNear(const Image& img, int x0, int y0, int x1, int y1, Rgba8 c, int tol
   const int x = static_cast<int>(std::floor(at.x())), y = static_cast<int>(std::floor(at.y()));
   if (countNear(img, x - 1, y - 1, x + 1, y + 1, c, tol) > 0) return ::testing::AssertionSuccess();
   const std::uint8_t* p = img.pixel(std::clamp(x, 0, img.width - 1), std::clamp(y, 0, img.height - 1));
-  return ::testing::AssertionFailure() << "no pixel near (" << x << ", " << y << ") is (" << int(c.r) << ", "
-                                       << int(c.g) << ", " << int(c.b) << "); it is (" << int(p[0]) << ", "
-                                       << int(p[1]) << ", " << int(p[2]) << ")";
+  return ::testing::AssertionFailure() << "no pixel near (" << x << ", " << y << ") is (" << int(c.r) << ", " << int(c.g) << ", " << int(c.b)
+                                       << "); it is (" << int(p[0]) << ", " << int(p[1]) << ", " << int(p[2]) << ")";
 }
 
 const Rgba8 kFloor = rgba8(palette::floor);
@@ -82,8 +80,7 @@ TEST(Features, PictureShapesAreDrawnWhereAndAsTheyAreDefined) {
   FrameScene s = bareFloor();
   RobotView v = robotAt(Point2(0.5, 3.5), 0);
   v.picture = withColor(blue, polyline({Point2(0.5, 3.0), Point2(2.0, 3.0), Point2(3.5, 2.5)})) +
-              withColor(red, paintAt(Point2(1.0, 1.0), circle(0.5))) +
-              withColor(green, paintAt(Point2(3.0, 1.0), disc(0.3))) +
+              withColor(red, paintAt(Point2(1.0, 1.0), circle(0.5))) + withColor(green, paintAt(Point2(3.0, 1.0), disc(0.3))) +
               arrow(Point2(0.3, 2.0), Point2(2.0, 2.0)) +  // no colour of its own: the picture colour
               withColor(orange, polygon({Point2(2.5, 0.2), Point2(3.8, 0.2), Point2(3.8, 0.6)}));
   s.robots.push_back(v);
@@ -129,8 +126,7 @@ TEST(Features, RobotBodyHeadingTickAndBumperMarkers) {
   EXPECT_TRUE(paints(img, along(0.5 + pi, 0.5 * rad), rgba8(body))) << "body, behind the centre";
   EXPECT_TRUE(paints(img, along(0.5, 0.6 * rad), rgba8(white))) << "heading tick";
   EXPECT_TRUE(paints(img, along(0.5 - pi / 2, 0.5 * rad), rgba8(body))) << "no tick sideways";
-  EXPECT_TRUE(paints(img, along(0.5 - pi / 2, rad), rgba8({body.r * 0.6f, body.g * 0.6f, body.b * 0.6f})))
-      << "the body's darker rim";
+  EXPECT_TRUE(paints(img, along(0.5 - pi / 2, rad), rgba8({body.r * 0.6f, body.g * 0.6f, body.b * 0.6f}))) << "the body's darker rim";
   EXPECT_TRUE(paints(img, along(0.5 + 2.0, rad), rgba8(palette::bump))) << "bumper marker where it was hit";
   EXPECT_TRUE(paints(img, along(0.5 - 2.0, rad + 0.02), kFloor)) << "and nowhere else";
 }
@@ -168,8 +164,7 @@ TEST(Features, SonarConesAndEchoArcs) {
   const Rgba8 echoCone = over(rgba8(col, 0.16), kFloor), silentCone = over(rgba8(col, 0.06), kFloor);
   EXPECT_TRUE(paints(img, at(1.6, 2.0), echoCone)) << "cone of the sonar with an echo";
   const double rim = 0.6 + v.spec.radius;  // ranges are measured from the sonar's place on the rim
-  EXPECT_TRUE(paints(img, at(rim + 2.0, 2.0), over(rgba8({col.r * 0.6f, col.g * 0.6f, col.b * 0.6f}, 0.85), echoCone)))
-      << "echo arc at the reading";
+  EXPECT_TRUE(paints(img, at(rim + 2.0, 2.0), over(rgba8({col.r * 0.6f, col.g * 0.6f, col.b * 0.6f}, 0.85), echoCone))) << "echo arc at the reading";
   EXPECT_TRUE(paints(img, at(rim + 2.3, 2.0), kFloor)) << "the cone ends at the echo";
   EXPECT_TRUE(paints(img, at(0.6, 3.5), silentCone)) << "cone of the sonar with no echo, to the edge";
 }

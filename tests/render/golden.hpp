@@ -41,8 +41,7 @@ inline constexpr Tolerance kLlvmpipe{.channel = 24, .pixels = 80};
 // `actual` compared with the PNG `golden`; on a mismatch the actual image and a difference map go
 // to `actualDir`. With FROB_UPDATE_GOLDENS set (and not "0") the golden is rewritten and the
 // comparison fails, so that a stray variable can never turn a run green.
-inline ::testing::AssertionResult matchesGoldenFile(const Image& actual, const std::string& golden,
-                                                    const std::string& actualDir, Tolerance tol) {
+inline ::testing::AssertionResult matchesGoldenFile(const Image& actual, const std::string& golden, const std::string& actualDir, Tolerance tol) {
   namespace fs = std::filesystem;
   const std::string stem = fs::path(golden).stem().string();
   const std::string actualPath = actualDir + "/" + stem + ".png";
@@ -60,8 +59,8 @@ inline ::testing::AssertionResult matchesGoldenFile(const Image& actual, const s
   const Image& e = expected.value();
   if (e.width != actual.width || e.height != actual.height) {
     (void)writePng(actualPath, actual);
-    return ::testing::AssertionFailure() << "size " << actual.width << "x" << actual.height << " differs from golden "
-                                         << e.width << "x" << e.height << "\n  actual image: " << actualPath;
+    return ::testing::AssertionFailure() << "size " << actual.width << "x" << actual.height << " differs from golden " << e.width << "x" << e.height
+                                         << "\n  actual image: " << actualPath;
   }
   Image diff = actual;
   long differing = 0;
@@ -80,16 +79,15 @@ inline ::testing::AssertionResult matchesGoldenFile(const Image& actual, const s
     (void)writePng(actualPath, actual);
     const std::string diffPath = actualDir + "/" + stem + ".diff.png";
     (void)writePng(diffPath, diff);
-    return ::testing::AssertionFailure() << differing << " pixels differ from " << golden << " by more than "
-                                         << tol.channel << " (limit " << tol.pixels << ", worst " << worst
-                                         << ")\n  actual image: " << actualPath << "\n  difference (red): " << diffPath;
+    return ::testing::AssertionFailure() << differing << " pixels differ from " << golden << " by more than " << tol.channel << " (limit "
+                                         << tol.pixels << ", worst " << worst << ")\n  actual image: " << actualPath
+                                         << "\n  difference (red): " << diffPath;
   }
   return ::testing::AssertionSuccess();
 }
 
 // `actual` compared with tests/render/golden/`name`.png.
-inline ::testing::AssertionResult matchesGolden(const Image& actual, const std::string& name,
-                                                Tolerance tol = kCpuRaster) {
+inline ::testing::AssertionResult matchesGolden(const Image& actual, const std::string& name, Tolerance tol = kCpuRaster) {
   return matchesGoldenFile(actual, std::string(FROB_GOLDEN_DIR) + "/" + name + ".png", FROB_ACTUAL_DIR, tol);
 }
 

@@ -23,8 +23,7 @@ fs::path scratch(const std::string& name) {
 Image gradient(int w, int h) {
   Image img{.width = w, .height = h, .rgba = {}};
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      img.rgba.insert(img.rgba.end(), {std::uint8_t(x * 7), std::uint8_t(y * 13), std::uint8_t(x ^ y), 255});
+    for (int x = 0; x < w; ++x) img.rgba.insert(img.rgba.end(), {std::uint8_t(x * 7), std::uint8_t(y * 13), std::uint8_t(x ^ y), 255});
   return img;
 }
 
@@ -96,8 +95,7 @@ TEST(Golden, RewritingAGoldenFailsAndSaysSo) {
   const ::testing::AssertionResult rewritten = testing::matchesGoldenFile(img, golden, (dir / "actual").string(), testing::kCpuRaster);
   ASSERT_EQ(::unsetenv("FROB_UPDATE_GOLDENS"), 0);
   EXPECT_FALSE(rewritten);
-  EXPECT_NE(std::string(rewritten.message()).find("golden rewritten, review and commit it"), std::string::npos)
-      << rewritten.message();
+  EXPECT_NE(std::string(rewritten.message()).find("golden rewritten, review and commit it"), std::string::npos) << rewritten.message();
   Result<Image> back = readPng(golden);
   ASSERT_TRUE(back.ok()) << back.error();
   EXPECT_EQ(back.value().rgba, img.rgba);

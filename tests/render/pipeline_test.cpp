@@ -1,9 +1,8 @@
 // Example, step by step: from a run's FrameScenes to an MP4, PNG frames and a standalone plot PNG.
 // This is how `frob run --video/--frames` is meant to drive the renderer; it runs as a test.
+#include "decode.hpp"
 #include "frob/render/renderer.hpp"
 #include "frob/render/video.hpp"
-
-#include "decode.hpp"
 
 #include <gtest/gtest.h>
 
@@ -36,8 +35,8 @@ TEST(Pipeline, RunToMp4FramesAndPlot) {
   const fs::path dir = fs::path(FROB_ACTUAL_DIR) / "pipeline_test";
   fs::remove_all(dir);
   fs::create_directories(dir / "frames");
-  const double dt = 0.01;               // simulation step: 100 Hz
-  const std::int64_t steps = 100;       // a 1 s run
+  const double dt = 0.01;          // simulation step: 100 Hz
+  const std::int64_t steps = 100;  // a 1 s run
 
   // 1. Describe the outputs, and check them before simulating anything: a bad font, model,
   //    size or path fails here with a readable message, not after a long run.

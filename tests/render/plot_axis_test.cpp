@@ -20,9 +20,7 @@ TEST(PlotAxis, NoiseRoundZeroIsZero) {
   EXPECT_EQ(tick(hi), "0.6");
 }
 
-TEST(PlotAxis, AFlatOrEmptyRangeIsLeftAlone) {
-  EXPECT_EQ(niceRange(2.0, 2.0), (std::pair{2.0, 2.0}));
-}
+TEST(PlotAxis, AFlatOrEmptyRangeIsLeftAlone) { EXPECT_EQ(niceRange(2.0, 2.0), (std::pair{2.0, 2.0})); }
 
 }  // namespace
 }  // namespace frob::render::detail

@@ -144,8 +144,7 @@ TEST(RendererErrors, MissingModelIsNamedForTheChaseView) {
   const RenderDef def{.view = ViewMode::Chase, .robotModelFile = "/nonexistent/robot.obj"};
   const Status s = validate(def);
   ASSERT_FALSE(s.ok());
-  EXPECT_EQ(s.error(),
-            "render: robot model '/nonexistent/robot.obj' does not exist (set RenderDef::robotModelFile)");
+  EXPECT_EQ(s.error(), "render: robot model '/nonexistent/robot.obj' does not exist (set RenderDef::robotModelFile)");
   // The top-down view needs no model.
   EXPECT_TRUE(validate(RenderDef{.view = ViewMode::TopDown, .robotModelFile = "/nonexistent/robot.obj"}).ok());
 }

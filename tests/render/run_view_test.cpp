@@ -1,17 +1,16 @@
 // A RunView joins the renderer to a running world: frames show the robot where the simulation has
 // it and the pictures its tasks publish; paths, plots and task marks grow as the run steps; and
 // rendering never changes what the simulation computes.
-#include "frob/frob.hpp"
-#include "frob/render/renderer.hpp"
 #include "frob/render/run_view.hpp"
-#include "frob/render/video.hpp"
-#include "frob/worlds/registry.hpp"
 
 #include "../support/wanderer.hpp"
 #include "decode.hpp"
+#include "frob/frob.hpp"
+#include "frob/render/renderer.hpp"
+#include "frob/render/video.hpp"
+#include "frob/worlds/registry.hpp"
 
 #include <gtest/gtest.h>
-
 
 #include <filesystem>
 
@@ -25,9 +24,7 @@ constexpr Color kMagenta{1.0f, 0.0f, 1.0f};
 const Point2 kMarker(1.875, 1.875);  // where the controller's picture puts its disc, metres
 
 // The paper's runAround, publishing a magenta disc at kMarker.
-Behavior<Wheels> wanderer(const Robot& r) {
-  return runTask(r, withPicture(paintAt(kMarker, withColor(kMagenta, disc(0.3))), support::runAround()));
-}
+Behavior<Wheels> wanderer(const Robot& r) { return runTask(r, withPicture(paintAt(kMarker, withColor(kMagenta, disc(0.3))), support::runAround())); }
 
 worlds::WorldDef world(std::string_view name) {
   Result<worlds::WorldDef> w = worlds::loadReferenceWorld(name);
@@ -36,12 +33,11 @@ worlds::WorldDef world(std::string_view name) {
 }
 
 ::testing::AssertionResult near(const std::uint8_t* px, Color c, int tol = 6) {
-  const int want[3] = {static_cast<int>(std::lround(c.r * 255)), static_cast<int>(std::lround(c.g * 255)),
-                       static_cast<int>(std::lround(c.b * 255))};
+  const int want[3] = {static_cast<int>(std::lround(c.r * 255)), static_cast<int>(std::lround(c.g * 255)), static_cast<int>(std::lround(c.b * 255))};
   for (int k = 0; k < 3; ++k) {
     if (std::abs(px[k] - want[k]) > tol) {
-      return ::testing::AssertionFailure() << "pixel (" << int(px[0]) << ", " << int(px[1]) << ", " << int(px[2])
-                                           << ") is not (" << want[0] << ", " << want[1] << ", " << want[2] << ")";
+      return ::testing::AssertionFailure() << "pixel (" << int(px[0]) << ", " << int(px[1]) << ", " << int(px[2]) << ") is not (" << want[0] << ", "
+                                           << want[1] << ", " << want[2] << ")";
     }
   }
   return ::testing::AssertionSuccess();
@@ -50,8 +46,8 @@ worlds::WorldDef world(std::string_view name) {
 TEST(RunView, TakesTheWorldsShapesOnce) {
   worlds::WorldDef w;
   w.size = {6.0, 4.0};
-  w.walls = {worlds::segmentWall({1, 1}, {2, 1}), worlds::polylineWall({{3, 1}, {4, 1}, {4, 2}}, true),
-             worlds::rectangleWall({1, 2}, {2, 3}), worlds::circleWall({5, 3}, 0.2)};
+  w.walls = {worlds::segmentWall({1, 1}, {2, 1}), worlds::polylineWall({{3, 1}, {4, 1}, {4, 2}}, true), worlds::rectangleWall({1, 2}, {2, 3}),
+             worlds::circleWall({5, 3}, 0.2)};
   w.points = {{"goal", {5, 1}}};
   w.robots = {{.name = "", .start = {{0.5, 0.5}, 0}}};
   const worlds::Run run(w, {}, {[](const Robot&) { return Behavior<Wheels>(Wheels{}); }});

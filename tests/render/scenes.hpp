@@ -22,8 +22,11 @@ inline FrameScene roomScene() {
   FrameScene s;
   s.time = 12.5;
   s.bounds = {Point2(0, 0), Point2(4, 3)};
-  s.walls = {{Point2(0, 0), Point2(4, 0)}, {Point2(4, 0), Point2(4, 3)}, {Point2(4, 3), Point2(0, 3)},
-             {Point2(0, 3), Point2(0, 0)}, {Point2(2.5, 3), Point2(2.5, 1.8), 0.08}};
+  s.walls = {{Point2(0, 0), Point2(4, 0)},
+             {Point2(4, 0), Point2(4, 3)},
+             {Point2(4, 3), Point2(0, 3)},
+             {Point2(0, 3), Point2(0, 0)},
+             {Point2(2.5, 3), Point2(2.5, 1.8), 0.08}};
   s.blocks = {{.center = Point2(1.0, 2.4), .halfExtents = Vec2(0.3, 0.15), .angle = 0.3}};
   s.pillars = {{Point2(3.4, 2.4), 0.12}};
   s.points = {{"goal", Point2(3.2, 1.9), {}}};

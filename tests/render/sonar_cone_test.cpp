@@ -61,8 +61,8 @@ TEST(SonarCone, AnEchoEndsInAnArcMeasuredFromTheRim) {
   const auto [arc, arcBare] = p.red({2.0, 1.5});
   EXPECT_LT(arc, arcBare - 60);  // the dark arc, 2 px wide
   const auto [cone, coneBare] = p.red({1.6, 1.5});
-  EXPECT_LT(cone, coneBare);       // the cone's faint fill
-  EXPECT_GT(cone, arc);            // lighter than the arc
+  EXPECT_LT(cone, coneBare);  // the cone's faint fill
+  EXPECT_GT(cone, arc);       // lighter than the arc
   const auto [beyond, beyondBare] = p.red({2.2, 1.5});
   EXPECT_EQ(beyond, beyondBare);
 }

@@ -1,8 +1,8 @@
 // MP4 output decodes to what was written; bad setups fail before any frame; no partial files remain.
-#include "frob/render/renderer.hpp"
 #include "frob/render/video.hpp"
 
 #include "decode.hpp"
+#include "frob/render/renderer.hpp"
 #include "scenes.hpp"
 
 #include <gtest/gtest.h>
@@ -129,7 +129,7 @@ TEST(FramePicker, ThirtyFpsFromAHundredHertzRun) {
   const std::vector<std::int64_t> steps = picker.steps(6000);  // 60 s
   ASSERT_EQ(steps.size(), 1800u);
   EXPECT_EQ(steps[0], 0);
-  EXPECT_EQ(steps[1], 3);   // 1/30 s = 0.0333 s: the last step at or before it is step 3 (0.03 s)
+  EXPECT_EQ(steps[1], 3);  // 1/30 s = 0.0333 s: the last step at or before it is step 3 (0.03 s)
   EXPECT_EQ(steps[2], 6);
   EXPECT_EQ(steps[3], 10);  // 0.1 s exactly
   EXPECT_EQ(steps.back(), 5996);

@@ -1,12 +1,13 @@
 // The worlds target brings Box2D, toml++ and assimp: each is called once here.
 #include <assimp/Importer.hpp>
+#include <toml++/toml.h>
+
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <box2d/box2d.h>
 #include <gtest/gtest.h>
 
 #include <string_view>
-#include <toml++/toml.h>
 
 namespace {
 
@@ -45,8 +46,7 @@ TEST(WorldsDependencies, TomlParsesAWorld) {
 }
 
 TEST(WorldsDependencies, AssimpLoadsAnObjFromMemory) {
-  constexpr std::string_view obj =
-      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n";
+  constexpr std::string_view obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n";
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFileFromMemory(obj.data(), obj.size(), aiProcess_Triangulate, "obj");
   ASSERT_NE(scene, nullptr) << importer.GetErrorString();

@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cinttypes>
 #include <cstdio>
-#include <algorithm>
 #include <map>
 #include <string>
 
@@ -45,9 +45,8 @@ std::uint64_t trajectoryHash(const WorldDef& world, int steps, int threads = 1) 
 // check the trajectories by eye (frob render) before updating the constants.
 TEST(Determinism, GoldenTrajectoryHashPerReferenceWorld) {
   const std::map<std::string, std::uint64_t> golden = {
-      {"empty", 0x619e298263eb7cc7ULL},     {"corridor", 0x0e16f03e3ba9dc30ULL}, {"maze", 0x7393f33812b31e35ULL},
-      {"office", 0x66438899377916c7ULL},    {"obstacles", 0x3c68a6595384c8cfULL}, {"mesh", 0xa84a04508b5b7fc3ULL},
-      {"arena", 0x9594b1eeb0331d5bULL},
+      {"empty", 0x619e298263eb7cc7ULL},     {"corridor", 0x0e16f03e3ba9dc30ULL}, {"maze", 0x7393f33812b31e35ULL},  {"office", 0x66438899377916c7ULL},
+      {"obstacles", 0x3c68a6595384c8cfULL}, {"mesh", 0xa84a04508b5b7fc3ULL},     {"arena", 0x9594b1eeb0331d5bULL},
   };
   for (const WorldEntry& e : referenceWorlds()) {
     const std::uint64_t h = trajectoryHash(*loadReferenceWorld(e.name), 1000);

@@ -60,8 +60,7 @@ TEST(MeshMap, BadFilesGiveMessages) {
 
 TEST(MeshMap, WorldFileNamesTheFieldWhenTheSliceIsEmpty) {
   writeBox("room.obj");
-  Result<WorldDef> w =
-      parseWorld("size = [4, 4]\n[mesh]\nfile = \"room.obj\"\nheight = 2.0\n", "m.toml", ::testing::TempDir());
+  Result<WorldDef> w = parseWorld("size = [4, 4]\n[mesh]\nfile = \"room.obj\"\nheight = 2.0\n", "m.toml", ::testing::TempDir());
   ASSERT_FALSE(w.ok());
   EXPECT_EQ(w.error(), "m.toml:3: mesh.file: room.obj: no geometry at height 2 m (the mesh spans heights 0 to 1 m)");
 }

@@ -1,10 +1,11 @@
 // The ray caster (private to worlds/): a cone cast in one call, with its rays four or five at a
 // time in SIMD lanes, reads what a brute-force cast of every ray against every wall and robot
 // reads, and the same bits with AVX2 and without.
+#include "ray_caster.hpp"
+
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/simulation.hpp"
 #include "random.hpp"
-#include "ray_caster.hpp"
 
 #include <gtest/gtest.h>
 
@@ -71,7 +72,9 @@ Hit bruteForce(const Scene& s, const Point2& o, const Vec2& d, double range, int
   for (const WallDef& w : s.walls) {
     const std::vector<Point2>& v = w.points;
     switch (w.shape) {
-      case WallShape::Segment: againstSegment(o, d, v[0], v[1], best); break;
+      case WallShape::Segment:
+        againstSegment(o, d, v[0], v[1], best);
+        break;
       case WallShape::Polyline:
         for (std::size_t i = 0; i + 1 < v.size(); ++i) againstSegment(o, d, v[i], v[i + 1], best);
         if (w.closed) againstSegment(o, d, v.back(), v.front(), best);
@@ -81,7 +84,9 @@ Hit bruteForce(const Scene& s, const Point2& o, const Vec2& d, double range, int
         for (int k = 0; k < 4; ++k) againstSegment(o, d, c[k], c[(k + 1) % 4], best);
         break;
       }
-      case WallShape::Circle: againstCircle(o, d, v[0], w.radius, best); break;
+      case WallShape::Circle:
+        againstCircle(o, d, v[0], w.radius, best);
+        break;
     }
   }
   for (std::size_t k = 0; k < s.centres.size(); ++k)
@@ -91,8 +96,7 @@ Hit bruteForce(const Scene& s, const Point2& o, const Vec2& d, double range, int
 
 // What a sonar reads for a cone: the nearest echoing first hit of any ray, else the range. `ambiguous`
 // is set when some ray's incidence is so near the cutoff that rounding could decide whether it echoes.
-double coneByBruteForce(const Scene& s, const Point2& o, const std::vector<Vec2>& dirs, double range, int self,
-                        double cosCutoff, bool& ambiguous) {
+double coneByBruteForce(const Scene& s, const Point2& o, const std::vector<Vec2>& dirs, double range, int self, double cosCutoff, bool& ambiguous) {
   double nearest = range;
   for (const Vec2& d : dirs) {
     const Hit h = bruteForce(s, o, d, range, self);

@@ -1,8 +1,9 @@
+#include "frob/worlds/run.hpp"
+
+#include "../support/wanderer.hpp"
 #include "frob/frob.hpp"
 #include "frob/worlds/registry.hpp"
-#include "frob/worlds/run.hpp"
 #include "scene.hpp"
-#include "../support/wanderer.hpp"
 
 #include <gtest/gtest.h>
 
@@ -83,8 +84,7 @@ TEST(Run, NonFiniteCommandsAndBrokenBuildsAreReported) {
   run.runUntil(0.5);
   ASSERT_EQ(run.failures().size(), 2u);
   EXPECT_EQ(run.failures()[0].message, "right: building its controller failed: no controller here");
-  EXPECT_NE(run.failures()[1].message.find("left: the controller commanded non-finite wheels"), std::string::npos)
-      << run.failures()[1].message;
+  EXPECT_NE(run.failures()[1].message.find("left: the controller commanded non-finite wheels"), std::string::npos) << run.failures()[1].message;
   EXPECT_NE(run.failures()[1].message.find("t = 0.000 s"), std::string::npos);
 }
 
@@ -97,8 +97,7 @@ TEST(Run, ATaskErrorNamesTheTask) {
   worlds::Run run(scene(kTwoRobots), {}, {failing});
   run.runUntil(1.0);
   ASSERT_EQ(run.failures().size(), 2u);
-  EXPECT_NE(run.failures()[0].message.find("task 'lambda in TestBody' failed at t = 0.500 s: error: wall lost"),
-            std::string::npos)
+  EXPECT_NE(run.failures()[0].message.find("task 'lambda in TestBody' failed at t = 0.500 s: error: wall lost"), std::string::npos)
       << run.failures()[0].message;
 }
 

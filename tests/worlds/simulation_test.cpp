@@ -33,8 +33,9 @@ TEST(Simulation, ANonPositiveStepOrAWheelCountOtherThanTheRobotsIsAUsageError) {
 }
 
 TEST(Simulation, RobotNamesTellRobotsApart) {
-  Simulation sim(scene("size = [8, 2]\n[[robot]]\nname = \"a\"\nstart = [1, 1]\n[[robot]]\nstart = [3, 1]\n"
-                       "[[robot]]\nname = \"b\"\nstart = [5, 1]\n[[robot]]\nname = \"b\"\nstart = [7, 1]\n"));
+  Simulation sim(
+      scene("size = [8, 2]\n[[robot]]\nname = \"a\"\nstart = [1, 1]\n[[robot]]\nstart = [3, 1]\n"
+            "[[robot]]\nname = \"b\"\nstart = [5, 1]\n[[robot]]\nname = \"b\"\nstart = [7, 1]\n"));
   EXPECT_EQ(sim.robotName(0), "a");
   EXPECT_EQ(sim.robotName(1), "robot1");
   EXPECT_EQ(sim.robotName(2), "b#2");
@@ -137,7 +138,7 @@ TEST(Simulation, BumperReportsTheContactAngleRelativeToTheHeading) {
   }
   ASSERT_EQ(hits.size(), 1u);  // sliding along the wall keeps the same bumper pressed
   EXPECT_NEAR(hits[0].angle, -45_deg, 1_deg);
-  EXPECT_EQ(hits[0].bumper, 7);  // sectors of 45 degrees counter-clockwise from the front
+  EXPECT_EQ(hits[0].bumper, 7);                        // sectors of 45 degrees counter-clockwise from the front
   EXPECT_NEAR(sim.truePose(0).heading, 45_deg, 1e-6);  // walls do not turn a synchro-drive robot
 }
 
@@ -158,9 +159,8 @@ struct Drift {
 Drift measureDrift(double translation, double heading, int robots) {
   WorldDef w{.size = {40.0, 2.0 * robots + 2.0}};
   for (int i = 0; i < robots; ++i)
-    w.robots.push_back({.start = {.position = Point2(1.0, 2.0 + 2.0 * i)},
-                        .sonar = {.count = 0},
-                        .odometry = {.translation = translation, .heading = heading}});
+    w.robots.push_back(
+        {.start = {.position = Point2(1.0, 2.0 + 2.0 * i)}, .sonar = {.count = 0}, .odometry = {.translation = translation, .heading = heading}});
   Simulation sim(w);
   drive(sim, 2000, {.forward = 0.6});  // about 11.7 m each
   Drift d;
@@ -257,8 +257,7 @@ TEST(Simulation, SensingInParallelGivesBitIdenticalResults) {
     radius = 1
   )");
   for (int i = 0; i < 30; ++i)
-    w.robots.push_back({.start = {.position = Point2(1.0 + (i % 6) * 2.0, 1.0 + (i / 6) * 2.0 + (i / 6 >= 2 ? 2.0 : 0.0)),
-                                  .heading = 0.3 * i},
+    w.robots.push_back({.start = {.position = Point2(1.0 + (i % 6) * 2.0, 1.0 + (i / 6) * 2.0 + (i / 6 >= 2 ? 2.0 : 0.0)), .heading = 0.3 * i},
                         .sonar = {.noise = 0.05},
                         .odometry = {.translation = 0.05, .heading = 0.05, .turn = 0.05}});
   ASSERT_EQ(checkWorld(w), "");

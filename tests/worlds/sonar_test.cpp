@@ -1,7 +1,6 @@
 // Sonar geometry (simulation.cpp and ray_caster.cpp): distances, specular loss, nearest echo,
 // other robots, and noise that follows the seed.
 #include "frob/worlds/simulation.hpp"
-
 #include "scene.hpp"
 
 #include <gtest/gtest.h>
@@ -27,8 +26,10 @@ std::string facingWall(double noise, double headingDeg = 0) {
     [[robot]]
     start = [1, 2]
     radius = 0.2
-    heading_deg = )" + std::to_string(headingDeg) + R"(
-    sonar = { angles_deg = [0], noise = )" + std::to_string(noise) + " }\n";
+    heading_deg = )" +
+         std::to_string(headingDeg) + R"(
+    sonar = { angles_deg = [0], noise = )" +
+         std::to_string(noise) + " }\n";
 }
 
 TEST(Sonar, ReadsAWallAheadAtItsDistance) {
@@ -131,7 +132,7 @@ TEST(Sonar, RobotsSeeEachOtherAndPillars) {
     sonar = { count = 0 }
   )"));
   sim.sense();
-  EXPECT_NEAR(sim.frame(0).sonar[0], (4 - 0.3) - 1.2, 1e-5);  // the other robot's near side
+  EXPECT_NEAR(sim.frame(0).sonar[0], (4 - 0.3) - 1.2, 1e-5);    // the other robot's near side
   EXPECT_NEAR(sim.frame(0).sonar[1], (3.2 - 0.5) - 1.2, 1e-5);  // the pillar's near side
 }
 
@@ -159,8 +160,10 @@ TEST(Sonar, ARingOfSixteenSeesARoomAllAround) {
   EXPECT_NEAR(sim.frame(0).sonar[0], 2 - 0.23, 1e-5);
   EXPECT_NEAR(sim.frame(0).sonar[4], 2 - 0.23, 1e-5);
   for (int j = 0; j < 16; ++j) {
-    if (j % 4 == 2) EXPECT_EQ(sim.frame(0).sonar[j], 6.5) << j;
-    else EXPECT_LT(sim.frame(0).sonar[j], 2.0 * std::sqrt(2.0)) << j;
+    if (j % 4 == 2)
+      EXPECT_EQ(sim.frame(0).sonar[j], 6.5) << j;
+    else
+      EXPECT_LT(sim.frame(0).sonar[j], 2.0 * std::sqrt(2.0)) << j;
   }
 }
 

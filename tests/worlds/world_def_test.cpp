@@ -12,8 +12,7 @@ TEST(WorldDef, BuildsInCodeWithDesignatedInitializers) {
   const WorldDef w{
       .description = "made in code",
       .size = {5.0, 5.0},
-      .walls = {segmentWall({1, 1}, {1, 4}), rectangleWall({3, 3}, {4, 4}), circleWall({4, 1}, 0.3),
-                polylineWall({{2, 1}, {2, 2}, {2.5, 2}}, true)},
+      .walls = {segmentWall({1, 1}, {1, 4}), rectangleWall({3, 3}, {4, 4}), circleWall({4, 1}, 0.3), polylineWall({{2, 1}, {2, 2}, {2.5, 2}}, true)},
       .points = {{.name = "goal", .position = {4.5, 4.5}}},
       .robots = {{.start = {.position = {0.5, 0.5}, .heading = 90_deg}, .sonar = {.count = 8}}},
   };

@@ -48,7 +48,8 @@ TEST(WorldFile, ReadsEveryPartOfAWorld) {
     time = 2.5
     key = "q"
     robot = 1
-  )", "room.toml");
+  )",
+                                  "room.toml");
   ASSERT_TRUE(w.ok()) << w.error();
   EXPECT_EQ(w->description, "test room");
   EXPECT_EQ(w->size, Vec2(8, 6.5));
@@ -133,16 +134,14 @@ INSTANTIATE_TEST_SUITE_P(
                  "maze.toml:5: robot[1].start: the robot overlaps robot[0]"},
         BadWorld{"two wall shapes", "size = [4, 4]\n[[wall]]\nfrom = [1, 1]\nto = [2, 2]\ncircle = [1, 1]\n",
                  "maze.toml:2: wall[0]: give exactly one of from/to, polyline, rect, circle"},
-        BadWorld{"segment without to", "size = [4, 4]\n[[wall]]\nfrom = [1, 1]\n",
-                 "maze.toml:2: wall[0].to: missing (a segment needs from and to)"},
+        BadWorld{"segment without to", "size = [4, 4]\n[[wall]]\nfrom = [1, 1]\n", "maze.toml:2: wall[0].to: missing (a segment needs from and to)"},
         BadWorld{"zero-length wall", "size = [4, 4]\n[[wall]]\nfrom = [1, 1]\nto = [1, 1]\n",
                  "maze.toml:2: wall[0].to: the wall has (almost) zero length"},
         BadWorld{"wall outside", "size = [4, 4]\n[[wall]]\nfrom = [1, 1]\nto = [9, 1]\n",
                  "maze.toml:2: wall[0].points: (9, 1) lies outside the world [0, 4] x [0, 4]"},
         BadWorld{"circle without radius", "size = [4, 4]\n[[wall]]\ncircle = [1, 1]\n",
                  "maze.toml:2: wall[0].radius: missing (a circle needs a radius)"},
-        BadWorld{"negative radius", "size = [4, 4]\n[[wall]]\ncircle = [1, 1]\nradius = -1\n",
-                 "maze.toml:4: wall[0].radius: must be positive"},
+        BadWorld{"negative radius", "size = [4, 4]\n[[wall]]\ncircle = [1, 1]\nradius = -1\n", "maze.toml:4: wall[0].radius: must be positive"},
         BadWorld{"wall is not a table", "size = [4, 4]\nwall = [1, 2]\n", "maze.toml:2: wall[0]: expected a table"},
         BadWorld{"sonar count out of range", "size = [4, 4]\n[[robot]]\nstart = [2, 2]\nsonar = { count = 1000 }\n",
                  "maze.toml:4: robot[0].sonar.count: must lie in [0, 64]"},
@@ -152,19 +151,14 @@ INSTANTIATE_TEST_SUITE_P(
                  "maze.toml:4: robot[0].sonar.angles_deg: has 1 angles but count is 3"},
         BadWorld{"negative odometry noise", "size = [4, 4]\n[odometry]\nturn = -1\n[[robot]]\nstart = [2, 2]\n",
                  "maze.toml:5: robot[0].odometry.turn: must lie in [0, 10]"},
-        BadWorld{"point outside", "size = [4, 4]\n[points]\ngoal = [5, 5]\n",
-                 "maze.toml:3: points.goal: lies outside the world"},
-        BadWorld{"long key", "size = [4, 4]\n[[key]]\ntime = 1\nkey = \"go\"\n",
-                 "maze.toml:4: key[0].key: expected exactly one character"},
+        BadWorld{"point outside", "size = [4, 4]\n[points]\ngoal = [5, 5]\n", "maze.toml:3: points.goal: lies outside the world"},
+        BadWorld{"long key", "size = [4, 4]\n[[key]]\ntime = 1\nkey = \"go\"\n", "maze.toml:4: key[0].key: expected exactly one character"},
         BadWorld{"key for no robot", "size = [4, 4]\n[[key]]\ntime = 1\nkey = \"g\"\nrobot = 3\n",
                  "maze.toml:2: key[0].robot: no robot with index 3"},
         BadWorld{"negative seed", "size = [4, 4]\nseed = -2\n", "maze.toml:2: seed: expected a non-negative integer"},
-        BadWorld{"missing bitmap", "size = [4, 4]\n[bitmap]\nfile = \"nowhere.png\"\n",
-                 "maze.toml:3: bitmap.file: nowhere.png: no such bitmap file"},
-        BadWorld{"missing mesh", "size = [4, 4]\n[mesh]\nfile = \"nowhere.obj\"\n",
-                 "maze.toml:3: mesh.file: nowhere.obj: no such mesh file"},
-        BadWorld{"mesh up axis", "size = [4, 4]\n[mesh]\nfile = \"x.obj\"\nup = \"w\"\n",
-                 "maze.toml:4: mesh.up: expected \"z\" or \"y\""}));
+        BadWorld{"missing bitmap", "size = [4, 4]\n[bitmap]\nfile = \"nowhere.png\"\n", "maze.toml:3: bitmap.file: nowhere.png: no such bitmap file"},
+        BadWorld{"missing mesh", "size = [4, 4]\n[mesh]\nfile = \"nowhere.obj\"\n", "maze.toml:3: mesh.file: nowhere.obj: no such mesh file"},
+        BadWorld{"mesh up axis", "size = [4, 4]\n[mesh]\nfile = \"x.obj\"\nup = \"w\"\n", "maze.toml:4: mesh.up: expected \"z\" or \"y\""}));
 
 TEST(WorldFile, SyntaxErrorsSayWhatTomlSaid) {
   Result<WorldDef> w = parseWorld("size = [4, 4\n", "maze.toml");

@@ -15,8 +15,7 @@ Result<std::vector<WallDef>> wallsFromBitmap(const std::filesystem::path& file, 
   if (!std::filesystem::is_regular_file(file, ec)) return Status::failure(name + ": no such bitmap file");
   png_image image{};
   image.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&image, file.string().c_str()))
-    return Status::failure(name + ": not a readable PNG (" + image.message + ")");
+  if (!png_image_begin_read_from_file(&image, file.string().c_str())) return Status::failure(name + ": not a readable PNG (" + image.message + ")");
   constexpr std::uint32_t kMaxSide = 8192;
   if (image.width == 0 || image.height == 0 || image.width > kMaxSide || image.height > kMaxSide) {
     png_image_free(&image);

@@ -10,11 +10,11 @@ namespace frob::worlds::detail {
 
 // Where each part of a world was written (1-based lines; 0 when unknown).
 struct SourceLines {
-  std::string file = "world";    // shown before every message
+  std::string file = "world";  // shown before every message
   int size = 0;
-  std::vector<int> walls;        // one per WorldDef::walls entry
+  std::vector<int> walls;  // one per WorldDef::walls entry
   std::vector<int> points;
-  std::vector<int> robots;       // the line of each robot's start
+  std::vector<int> robots;  // the line of each robot's start
   std::vector<int> keys;
 };
 

@@ -2,6 +2,7 @@
 #include "frob/worlds/maps.hpp"
 
 #include <assimp/Importer.hpp>
+
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -17,8 +18,7 @@ Result<std::vector<WallDef>> wallsFromMesh(const std::filesystem::path& file, co
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) return Status::failure(name + ": no such mesh file");
   Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(
-      file.string(), aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_JoinIdenticalVertices);
+  const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_JoinIdenticalVertices);
   if (!scene || !scene->mRootNode) return Status::failure(name + ": cannot read the mesh (" + importer.GetErrorString() + ")");
 
   std::vector<WallDef> walls;
@@ -37,8 +37,10 @@ Result<std::vector<WallDef>> wallsFromMesh(const std::filesystem::path& file, co
       std::array<std::array<double, 3>, 3> p{};
       bool valid = true;
       for (int k = 0; k < 3; ++k) {
-        if (face.mIndices[k] >= mesh->mNumVertices) valid = false;
-        else p[k] = vertex(face.mIndices[k]);
+        if (face.mIndices[k] >= mesh->mNumVertices)
+          valid = false;
+        else
+          p[k] = vertex(face.mIndices[k]);
       }
       if (!valid) continue;
       // Where each edge crosses the plane; a vertex exactly on the plane counts as above it.

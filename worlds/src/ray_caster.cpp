@@ -7,7 +7,7 @@
 namespace frob::worlds::detail {
 namespace {
 
-constexpr int kMaxCells = 1 << 16;              // keeps the grid small enough to rebuild cheaply
+constexpr int kMaxCells = 1 << 16;  // keeps the grid small enough to rebuild cheaply
 
 }  // namespace
 
@@ -22,7 +22,9 @@ RayCaster::RayCaster(const std::vector<WallDef>& walls, const Point2& lo, const 
   for (const WallDef& w : walls) {
     forEachEdge(
         w, addSeg, [&](const Point2& lo, const Point2& hi) { forEachSide(lo, hi, addSeg); },
-        [&](const Point2& c, double radius) { circles.push_back({c.x(), c.y(), radius}); });
+        [&](const Point2& c, double radius) {
+          circles.push_back({c.x(), c.y(), radius});
+        });
   }
   segmentCount_ = segs.size();
 
@@ -58,11 +60,17 @@ RayCaster::RayCaster(const std::vector<WallDef>& walls, const Point2& lo, const 
       forEachCell(ax, ay, bx, by, [&](std::size_t c) { out[fill[c]++] = item; });
     }
   };
-  bin(segs, [](const Seg& s) {
-    return std::array{std::min(s.ax, s.ax + s.dx), std::min(s.ay, s.ay + s.dy),
-                      std::max(s.ax, s.ax + s.dx), std::max(s.ay, s.ay + s.dy)};
-  }, segStart_, cellSegs_);
-  bin(circles, [](const Circle& c) { return std::array{c.cx - c.r, c.cy - c.r, c.cx + c.r, c.cy + c.r}; },
+  bin(
+      segs,
+      [](const Seg& s) {
+        return std::array{std::min(s.ax, s.ax + s.dx), std::min(s.ay, s.ay + s.dy), std::max(s.ax, s.ax + s.dx), std::max(s.ay, s.ay + s.dy)};
+      },
+      segStart_, cellSegs_);
+  bin(
+      circles,
+      [](const Circle& c) {
+        return std::array{c.cx - c.r, c.cy - c.r, c.cx + c.r, c.cy + c.r};
+      },
       pillarStart_, cellPillars_);
   robotSpan_.assign(cells, Span{});
   x1_ = x0_ + nx_ * cell_, y1_ = y0_ + ny_ * cell_;
@@ -78,8 +86,7 @@ void RayCaster::setRobots(const std::vector<Point2>& centres, const std::vector<
   touched_.clear();
   outside_.clear();
   robots_.resize(centres.size());
-  for (std::size_t k = 0; k < centres.size(); ++k)
-    robots_[k] = {centres[k].x(), centres[k].y(), radii[k], static_cast<int>(k)};
+  for (std::size_t k = 0; k < centres.size(); ++k) robots_[k] = {centres[k].x(), centres[k].y(), radii[k], static_cast<int>(k)};
   if (centres.size() == 1) return;  // a robot never sees itself: nothing to bin
 
   // Count per cell, then place; both passes run in descending index, the order rays test them in.
@@ -112,8 +119,7 @@ void RayCaster::setRobots(const std::vector<Point2>& centres, const std::vector<
 }
 
 [[gnu::always_inline]] inline void RayCaster::testCell(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const {
-  for (std::uint32_t k = segStart_[cell], end = segStart_[cell + 1]; k < end; ++k)
-    hitSegment(cellSegs_[k], ox, oy, ux, uy, best);
+  for (std::uint32_t k = segStart_[cell], end = segStart_[cell + 1]; k < end; ++k) hitSegment(cellSegs_[k], ox, oy, ux, uy, best);
   for (std::uint32_t k = pillarStart_[cell], end = pillarStart_[cell + 1]; k < end; ++k) {
     const Circle& c = cellPillars_[k];
     hitCircle(c.cx, c.cy, c.r, ox, oy, ux, uy, best);
@@ -125,9 +131,8 @@ void RayCaster::setRobots(const std::vector<Point2>& centres, const std::vector<
   }
 }
 
-[[gnu::always_inline]] inline void RayCaster::walk(int i, int j, double bx0, double bx1, double by0, double by1, double ox,
-                                                   double oy, double ux, double uy, double tmax, int self,
-                                                   RayHit& best) const {
+[[gnu::always_inline]] inline void RayCaster::walk(int i, int j, double bx0, double bx1, double by0, double by1, double ox, double oy, double ux,
+                                                   double uy, double tmax, int self, RayHit& best) const {
   // Walk the cells the ray crosses, nearest first; stop once the best hit lies within the cell.
   // bx0/bx1 (by0/by1): the offsets from the origin to cell i's (j's) lower and upper sides.
   const double ix = 1.0 / ux, iy = 1.0 / uy;  // +-inf along an axis; the steps handle it
@@ -149,8 +154,7 @@ void RayCaster::setRobots(const std::vector<Point2>& centres, const std::vector<
   }
 }
 
-[[gnu::always_inline]] inline void RayCaster::testOutside(double ox, double oy, double ux, double uy, int self,
-                                                          RayHit& best) const {
+[[gnu::always_inline]] inline void RayCaster::testOutside(double ox, double oy, double ux, double uy, int self, RayHit& best) const {
   for (int k : outside_)
     if (k != self) hitCircle(robots_[k].cx, robots_[k].cy, robots_[k].r, ox, oy, ux, uy, best);
 }
@@ -182,15 +186,14 @@ RayHit RayCaster::cast(const Point2& origin, const Vec2& dir, double range, int 
     const double px = (ox + tmin * ux - x0_) * inv_, py = (oy + tmin * uy - y0_) * inv_;  // >= 0 up to rounding
     const int i = std::min(std::max(static_cast<int>(px), 0), nx_ - 1);
     const int j = std::min(std::max(static_cast<int>(py), 0), ny_ - 1);
-    walk(i, j, x0_ + i * cell_ - ox, x0_ + (i + 1) * cell_ - ox, y0_ + j * cell_ - oy, y0_ + (j + 1) * cell_ - oy,
-         ox, oy, ux, uy, tmax, self, best);
+    walk(i, j, x0_ + i * cell_ - ox, x0_ + (i + 1) * cell_ - ox, y0_ + j * cell_ - oy, y0_ + (j + 1) * cell_ - oy, ox, oy, ux, uy, tmax, self, best);
   }
   if (best.distance >= range) best.distance = INFINITY;
   return best;
 }
 
-double RayCaster::castCone(const Point2& origin, std::span<const double> dirX, std::span<const double> dirY,
-                           double range, int self, double cosCutoff) const {
+double RayCaster::castCone(const Point2& origin, std::span<const double> dirX, std::span<const double> dirY, double range, int self,
+                           double cosCutoff) const {
   const double ox = origin.x(), oy = origin.y();
   const std::size_t n = dirX.size();
   double nearest = range;

@@ -35,8 +35,8 @@ class RayCaster {
   // each cast only as far as the nearest echo so far; a hit echoes when its cosIncidence >=
   // `cosCutoff`. Returns the nearest echo, or `range` when none. Bit-identical to calling cast()
   // per ray, but the rays of a cone share the walk through the grid.
-  [[nodiscard]] double castCone(const Point2& origin, std::span<const double> dirX, std::span<const double> dirY,
-                                double range, int self, double cosCutoff) const;
+  [[nodiscard]] double castCone(const Point2& origin, std::span<const double> dirX, std::span<const double> dirY, double range, int self,
+                                double cosCutoff) const;
   // Number of static segments (rectangles and polylines count their sides).
   [[nodiscard]] std::size_t segmentCount() const { return segmentCount_; }
 
@@ -66,34 +66,32 @@ class RayCaster {
     c0 = static_cast<int>(std::min(top, std::max(0.0, (lo - origin) * inv - eps)));
     c1 = static_cast<int>(std::min(top, std::max(0.0, (hi - origin) * inv + eps)));
   }
-  void walk(int i, int j, double bx0, double bx1, double by0, double by1, double ox, double oy, double ux,
-            double uy, double tmax, int self, RayHit& best) const;
+  void walk(int i, int j, double bx0, double bx1, double by0, double by1, double ox, double oy, double ux, double uy, double tmax, int self,
+            RayHit& best) const;
   // Ray o + t u against one segment or circle: `best` becomes the hit when it is nearer.
   static void hitSegment(const Seg& s, double ox, double oy, double ux, double uy, RayHit& best);
   static void hitCircle(double cx, double cy, double r, double ox, double oy, double ux, double uy, RayHit& best);
   void testOutside(double ox, double oy, double ux, double uy, int self, RayHit& best) const;
   void testCell(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const;
   // `rays` (4 or 5) rays of one cone at once (ray_fan.cpp): the nearest echo below `cap`, else `cap`.
-  double castFan(int rays, double ox, double oy, const double* ux, const double* uy, double cap, int self,
-                 double cosCutoff) const;
+  double castFan(int rays, double ox, double oy, const double* ux, const double* uy, double cap, int self, double cosCutoff) const;
   friend struct FanCaster;  // ray_fan.cpp: castFan's body, compiled for AVX2 and for plain x86-64
 
   std::size_t segmentCount_ = 0;
   std::vector<Robot> robots_;
-  std::vector<int> outside_;      // robots not fully inside the grid: tested by every ray
+  std::vector<int> outside_;                           // robots not fully inside the grid: tested by every ray
   std::vector<std::uint32_t> segStart_, pillarStart_;  // cell c: [start[c], start[c + 1])
-  std::vector<Seg> cellSegs_;     // segments per cell, in index order (a wall is copied into each cell it spans)
+  std::vector<Seg> cellSegs_;                          // segments per cell, in index order (a wall is copied into each cell it spans)
   std::vector<Circle> cellPillars_;
   // Robots per cell, rebuilt each step: only the cells robots touch are set and later cleared.
-  std::vector<Span> robotSpan_;   // per cell
-  std::vector<Robot> cellRobots_; // per cell, in descending robot index
-  std::vector<int> touched_;      // cells whose robotSpan_ is set
+  std::vector<Span> robotSpan_;                                    // per cell
+  std::vector<Robot> cellRobots_;                                  // per cell, in descending robot index
+  std::vector<int> touched_;                                       // cells whose robotSpan_ is set
   double x0_ = 0, y0_ = 0, x1_ = 1, y1_ = 1, cell_ = 1, inv_ = 1;  // grid box [x0_, x1_] x [y0_, y1_]
   int nx_ = 1, ny_ = 1;
 };
 
-[[gnu::always_inline]] inline void RayCaster::hitSegment(const Seg& s, double ox, double oy, double ux, double uy,
-                                                        RayHit& best) {
+[[gnu::always_inline]] inline void RayCaster::hitSegment(const Seg& s, double ox, double oy, double ux, double uy, RayHit& best) {
   // Segment a + v d: t = tn / denom, v = vn / denom. Compared without dividing (the sign of denom
   // folded in) so that only an accepted hit costs a division.
   double denom = ux * s.dy - uy * s.dx;  // cross(u, d); 0 when parallel: an edge-on wall is never heard
@@ -107,8 +105,7 @@ class RayCaster {
 }
 
 // A ray starting inside the circle reads 0.
-[[gnu::always_inline]] inline void RayCaster::hitCircle(double cx, double cy, double r, double ox, double oy, double ux,
-                                                       double uy, RayHit& best) {
+[[gnu::always_inline]] inline void RayCaster::hitCircle(double cx, double cy, double r, double ox, double oy, double ux, double uy, RayHit& best) {
   const double px = ox - cx, py = oy - cy;
   const double b = px * ux + py * uy;
   const double c = px * px + py * py - r * r;

@@ -113,8 +113,8 @@ struct FanCaster {
 
   // The fan of ux/uy[0..3], and ux/uy[4] as a lone fifth ray when WithLone.
   template <bool WithLone>
-  [[gnu::always_inline]] static double cast(const RayCaster& g, double ox, double oy, const double* ux,
-                                            const double* uy, double cap, int self, double cosCutoff) {
+  [[gnu::always_inline]] static double cast(const RayCaster& g, double ox, double oy, const double* ux, const double* uy, double cap, int self,
+                                            double cosCutoff) {
     Fan f{ox, oy, V{ux[0], ux[1], ux[2], ux[3]}, V{uy[0], uy[1], uy[2], uy[3]}, splat(cap), splat(1.0)};
     Lone lone{WithLone ? ux[4] : 0.0, WithLone ? uy[4] : 0.0, RayHit{cap, 1.0}, WithLone};
     for (int k : g.outside_)
@@ -161,15 +161,12 @@ struct FanCaster {
 namespace {
 
 // Both builds give bit-identical results: the same IEEE operations, no fused multiply-adds.
-[[gnu::target("avx2")]] double castAvx2(const RayCaster& g, int rays, double ox, double oy, const double* ux,
-                                        const double* uy, double cap, int self, double cosCutoff) {
-  return rays == 5 ? FanCaster::cast<true>(g, ox, oy, ux, uy, cap, self, cosCutoff)
-                   : FanCaster::cast<false>(g, ox, oy, ux, uy, cap, self, cosCutoff);
+[[gnu::target("avx2")]] double castAvx2(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy, double cap, int self,
+                                        double cosCutoff) {
+  return rays == 5 ? FanCaster::cast<true>(g, ox, oy, ux, uy, cap, self, cosCutoff) : FanCaster::cast<false>(g, ox, oy, ux, uy, cap, self, cosCutoff);
 }
-double castBaseline(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy,
-                    double cap, int self, double cosCutoff) {
-  return rays == 5 ? FanCaster::cast<true>(g, ox, oy, ux, uy, cap, self, cosCutoff)
-                   : FanCaster::cast<false>(g, ox, oy, ux, uy, cap, self, cosCutoff);
+double castBaseline(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy, double cap, int self, double cosCutoff) {
+  return rays == 5 ? FanCaster::cast<true>(g, ox, oy, ux, uy, cap, self, cosCutoff) : FanCaster::cast<false>(g, ox, oy, ux, uy, cap, self, cosCutoff);
 }
 std::atomic<bool> avx2 = [] {
   __builtin_cpu_init();  // may run before the runtime's own initialisation
@@ -178,14 +175,10 @@ std::atomic<bool> avx2 = [] {
 
 }  // namespace
 
-double RayCaster::castFan(int rays, double ox, double oy, const double* ux, const double* uy, double cap, int self,
-                          double cosCutoff) const {
-  return (avx2.load(std::memory_order_relaxed) ? castAvx2 : castBaseline)(*this, rays, ox, oy, ux, uy, cap, self,
-                                                                           cosCutoff);
+double RayCaster::castFan(int rays, double ox, double oy, const double* ux, const double* uy, double cap, int self, double cosCutoff) const {
+  return (avx2.load(std::memory_order_relaxed) ? castAvx2 : castBaseline)(*this, rays, ox, oy, ux, uy, cap, self, cosCutoff);
 }
 
-bool useAvx2(bool on) {
-  return avx2.exchange(on && __builtin_cpu_supports("avx2"));
-}
+bool useAvx2(bool on) { return avx2.exchange(on && __builtin_cpu_supports("avx2")); }
 
 }  // namespace frob::worlds::detail

@@ -11,8 +11,7 @@ class InProcessDriver final : public ControllerDriver {
  public:
   InProcessDriver(const Simulation& sim, const std::vector<Controller>& controllers) {
     const std::size_t n = sim.robotCount();
-    FROB_ASSERT(controllers.size() == n || controllers.size() == 1,
-                "Run: give one controller per robot, or one for all robots");
+    FROB_ASSERT(controllers.size() == n || controllers.size() == 1, "Run: give one controller per robot, or one for all robots");
     for (std::size_t i = 0; i < n; ++i) {
       // The simulation outlives its robots, so the frame is borrowed, not owned.
       const Robot robot(sim.spec(i), std::shared_ptr<const SensorFrame>(std::shared_ptr<void>(), &sim.frame(i)));
@@ -51,8 +50,7 @@ DriverFactory inProcess(std::vector<Controller> controllers) {
   };
 }
 
-Run::Run(const WorldDef& world, const SimOptions& options, const std::vector<Controller>& controllers,
-         RecorderOptions recording)
+Run::Run(const WorldDef& world, const SimOptions& options, const std::vector<Controller>& controllers, RecorderOptions recording)
     : Run(world, options, inProcess(controllers), recording) {}
 
 Run::Run(const WorldDef& world, const SimOptions& options, const DriverFactory& driver, RecorderOptions recording)

@@ -27,16 +27,16 @@ struct RobotState {
   RobotDef def;
   RobotSpec spec;
   b2Body* body = nullptr;
-  std::vector<double> rayX, rayY;  // per sonar, per ray: direction relative to heading
-  std::vector<Vec2> sonarOffsets;  // per sonar: sensor position relative to the centre, robot frame
+  std::vector<double> rayX, rayY;      // per sonar, per ray: direction relative to heading
+  std::vector<Vec2> sonarOffsets;      // per sonar: sensor position relative to the centre, robot frame
   std::vector<double> worldX, worldY;  // scratch while sensing: rayX/rayY in the world frame
   double cosCutoff = 1.0;
   double forward = 0.0, turn = 0.0;  // commands after acceleration limits
   Pose2 odometry;
-  Pose2 previous;                    // true pose at the end of the last step
+  Pose2 previous;  // true pose at the end of the last step
   bool noiselessOdometry = true;
-  std::vector<int> pressed;          // per bumper: contacts touching it
-  std::vector<BumperHit> bumps;      // bumper contacts that began during the last step
+  std::vector<int> pressed;      // per bumper: contacts touching it
+  std::vector<BumperHit> bumps;  // bumper contacts that began during the last step
   std::size_t invalid = 0;
   detail::Rng sonarRng, odometryRng;
   SensorFrame frame;
@@ -72,16 +72,19 @@ struct Simulation::Impl : b2ContactListener {
   std::vector<double> radii;
 
   Impl(const WorldDef& w, const SimOptions& o)
-      : world(w), walls(withEnclosure(w)), options(o), seed(o.seed.value_or(w.seed)),
-        caster(walls, Point2(-1.0, -1.0), w.size + Point2(1.0, 1.0)), workers(o.threads) {
+      : world(w),
+        walls(withEnclosure(w)),
+        options(o),
+        seed(o.seed.value_or(w.seed)),
+        caster(walls, Point2(-1.0, -1.0), w.size + Point2(1.0, 1.0)),
+        workers(o.threads) {
     FROB_ASSERT(o.dt > 0 && std::isfinite(o.dt), "SimOptions::dt must be positive");
     physics.SetContactListener(this);
     buildWalls();
     for (std::size_t i = 0; i < w.robots.size(); ++i) addRobot(w.robots[i], i);
     physics.SetContinuousPhysics(mayTunnel());
     for (const auto& list : {w.keys, o.keys})
-      for (const KeyEventDef& k : list)
-        keys.emplace_back(static_cast<std::int64_t>(std::ceil(k.time / o.dt - 1e-9)), k);
+      for (const KeyEventDef& k : list) keys.emplace_back(static_cast<std::int64_t>(std::ceil(k.time / o.dt - 1e-9)), k);
     std::stable_sort(keys.begin(), keys.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   }
 
@@ -89,9 +92,8 @@ struct Simulation::Impl : b2ContactListener {
   // only matters when a robot can move a sizeable part of its radius in one step; otherwise the
   // position solver keeps discs out of walls.
   bool mayTunnel() const {
-    return std::any_of(robots.begin(), robots.end(), [&](const RobotState& r) {
-      return r.def.drive.maxSpeed * options.dt > kTunnelFraction * r.def.radius;
-    });
+    return std::any_of(robots.begin(), robots.end(),
+                       [&](const RobotState& r) { return r.def.drive.maxSpeed * options.dt > kTunnelFraction * r.def.radius; });
   }
 
   static std::vector<WallDef> withEnclosure(const WorldDef& w) {
@@ -191,8 +193,7 @@ struct Simulation::Impl : b2ContactListener {
       const b2Vec2 c = r.body->GetPosition();
       const double angle = angleDiff(r.body->GetAngle(), std::atan2(double(at.y) - c.y, double(at.x) - c.x));
       const double sector = 2.0 * pi / r.def.bumpers;
-      const int bumper = static_cast<int>(std::floor(std::fmod(angle + sector / 2 + 2 * pi, 2 * pi) / sector)) %
-                         r.def.bumpers;
+      const int bumper = static_cast<int>(std::floor(std::fmod(angle + sector / 2 + 2 * pi, 2 * pi) / sector)) % r.def.bumpers;
       presses.push_back({contact, static_cast<int>(id - 1), bumper});
       // A bumper switch closes once however many things press it.
       if (r.pressed[bumper]++ == 0) r.bumps.push_back({bumper, angle});
@@ -230,11 +231,10 @@ struct Simulation::Impl : b2ContactListener {
       // Rays run from the cone's axis outwards, each only as far as the nearest echo so far: a
       // surface beyond it cannot change the reading, and the shorter walk saves most of the work.
       // A hit whose cosIncidence is below the cutoff is reflected away and does not echo.
-      const double nearest = caster.castCone(origin, {&r.worldX[j * rays], rays}, {&r.worldY[j * rays], rays},
-                                             s.maxRange, static_cast<int>(i), r.cosCutoff);
+      const double nearest =
+          caster.castCone(origin, {&r.worldX[j * rays], rays}, {&r.worldY[j * rays], rays}, s.maxRange, static_cast<int>(i), r.cosCutoff);
       const double noise = r.sonarRng.gaussian();  // drawn for every sonar so the stream never depends on hits
-      f.sonar[j] = nearest >= s.maxRange ? s.maxRange
-                                         : std::clamp(nearest * (1.0 + s.noise * noise), s.minRange, s.maxRange);
+      f.sonar[j] = nearest >= s.maxRange ? s.maxRange : std::clamp(nearest * (1.0 + s.noise * noise), s.minRange, s.maxRange);
     }
     const b2Vec2 v = r.body->GetLinearVelocity();
     f.odometry = r.odometry;
@@ -285,8 +285,7 @@ float b2Timer::GetMilliseconds() const { return 0.0f; }
 
 namespace frob::worlds {
 
-Simulation::Simulation(const WorldDef& world, const SimOptions& options)
-    : impl_(std::make_unique<Impl>(world, options)) {}
+Simulation::Simulation(const WorldDef& world, const SimOptions& options) : impl_(std::make_unique<Impl>(world, options)) {}
 Simulation::~Simulation() = default;
 Simulation::Simulation(Simulation&&) noexcept = default;
 Simulation& Simulation::operator=(Simulation&&) noexcept = default;
@@ -303,8 +302,7 @@ void Simulation::sense() {
   s.caster.setRobots(s.centres, s.radii);
   // Ray casting is read-only on shared state and each robot has its own random stream, so robots
   // may be sensed on any thread in any order with bit-identical results.
-  const auto keysNow = std::lower_bound(s.keys.begin(), s.keys.end(), s.steps,
-                                        [](const auto& k, std::int64_t step) { return k.first < step; });
+  const auto keysNow = std::lower_bound(s.keys.begin(), s.keys.end(), s.steps, [](const auto& k, std::int64_t step) { return k.first < step; });
   s.workers.run(s.robots.size(), kSenseGrain, [&s, keysNow](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) s.senseRobot(i, keysNow);
   });

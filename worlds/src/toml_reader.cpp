@@ -33,9 +33,12 @@ bool TomlReader::onlyKeys(const toml::table& t, const std::string& prefix, std::
 }
 
 bool TomlReader::number(const toml::node& n, const std::string& field, double& out) {
-  if (auto f = n.as_floating_point()) out = f->get();
-  else if (auto i = n.as_integer()) out = static_cast<double>(i->get());
-  else return fail(n, field, "expected a number");
+  if (auto f = n.as_floating_point())
+    out = f->get();
+  else if (auto i = n.as_integer())
+    out = static_cast<double>(i->get());
+  else
+    return fail(n, field, "expected a number");
   if (!std::isfinite(out)) return fail(n, field, "expected a finite number");
   return true;
 }

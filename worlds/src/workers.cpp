@@ -57,9 +57,7 @@ Workers::~Workers() {
 void Workers::work(std::uint64_t generation) {
   std::uint64_t t = ticket_.load(std::memory_order_acquire);
   while (generationOf(t) == generation && nextOf(t) < chunksOf(t)) {
-    if (!ticket_.compare_exchange_weak(t, t + (std::uint64_t{1} << 16), std::memory_order_acq_rel,
-                                       std::memory_order_acquire))
-      continue;
+    if (!ticket_.compare_exchange_weak(t, t + (std::uint64_t{1} << 16), std::memory_order_acq_rel, std::memory_order_acquire)) continue;
     // The claim keeps this job current until done_ counts the chunk, so job_, n_ and grain_ hold still.
     const std::size_t begin = nextOf(t) * grain_, end = std::min(n_, begin + grain_);
     (*job_)(begin, end);
@@ -84,8 +82,7 @@ void Workers::run(std::size_t n, std::size_t grain, const std::function<void(std
   ticket_.notify_all();
   work(generation);
   // Every chunk is claimed; wait for the ones other threads are still running.
-  for (std::uint32_t d = done_.load(std::memory_order_acquire); d != chunks; d = done_.load(std::memory_order_acquire))
-    awaitChange(done_, d);
+  for (std::uint32_t d = done_.load(std::memory_order_acquire); d != chunks; d = done_.load(std::memory_order_acquire)) awaitChange(done_, d);
 }
 
 }  // namespace frob::worlds::detail

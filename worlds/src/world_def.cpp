@@ -10,13 +10,9 @@ namespace frob::worlds {
 
 WallDef segmentWall(const Point2& a, const Point2& b) { return {.shape = WallShape::Segment, .points = {a, b}}; }
 
-WallDef rectangleWall(const Point2& lo, const Point2& hi) {
-  return {.shape = WallShape::Rectangle, .points = {lo, hi}};
-}
+WallDef rectangleWall(const Point2& lo, const Point2& hi) { return {.shape = WallShape::Rectangle, .points = {lo, hi}}; }
 
-WallDef circleWall(const Point2& centre, double radius) {
-  return {.shape = WallShape::Circle, .points = {centre}, .radius = radius};
-}
+WallDef circleWall(const Point2& centre, double radius) { return {.shape = WallShape::Circle, .points = {centre}, .radius = radius}; }
 
 WallDef polylineWall(std::vector<Point2> vertices, bool closed) {
   return {.shape = WallShape::Polyline, .points = std::move(vertices), .closed = closed};
@@ -30,8 +26,7 @@ std::vector<double> sonarAngles(const SonarDef& s) {
 }
 
 RobotSpec robotSpec(const RobotDef& r) {
-  return {.radius = r.radius, .sonarAngles = sonarAngles(r.sonar), .sonarMinRange = r.sonar.minRange,
-          .sonarMaxRange = r.sonar.maxRange};
+  return {.radius = r.radius, .sonarAngles = sonarAngles(r.sonar), .sonarMinRange = r.sonar.minRange, .sonarMaxRange = r.sonar.maxRange};
 }
 
 std::optional<Point2> findPoint(const WorldDef& w, const std::string& name) {
@@ -63,9 +58,7 @@ double distanceToWall(const Point2& p, const WallDef& wall) {
 
 namespace detail {
 
-std::string where(const SourceLines& at, int line) {
-  return line > 0 ? at.file + ":" + std::to_string(line) + ": " : at.file + ": ";
-}
+std::string where(const SourceLines& at, int line) { return line > 0 ? at.file + ":" + std::to_string(line) + ": " : at.file + ": "; }
 
 double distanceToSegment(const Point2& p, const Point2& a, const Point2& b) {
   const Vec2 ab = b - a;
@@ -76,8 +69,8 @@ double distanceToSegment(const Point2& p, const Point2& a, const Point2& b) {
 
 namespace {
 
-constexpr double kMinLength = 1e-3;   // shorter walls are degenerate for Box2D
-constexpr double kMaxSize = 1000.0;   // Box2D works in floats; keep coordinates modest
+constexpr double kMinLength = 1e-3;  // shorter walls are degenerate for Box2D
+constexpr double kMaxSize = 1000.0;  // Box2D works in floats; keep coordinates modest
 constexpr std::size_t kMaxRobots = 1000;
 
 int lineAt(const std::vector<int>& lines, std::size_t i) { return i < lines.size() ? lines[i] : 0; }
@@ -95,13 +88,12 @@ std::string checkWall(const WallDef& wall, const Vec2& size) {
   const auto& v = wall.points;
   const std::size_t need = wall.shape == WallShape::Circle ? 1 : 2;
   if (v.size() < need || (wall.shape != WallShape::Polyline && v.size() != need))
-    return "points: expected " + std::to_string(need) + (wall.shape == WallShape::Polyline ? " or more" : "") +
-           " points, got " + std::to_string(v.size());
+    return "points: expected " + std::to_string(need) + (wall.shape == WallShape::Polyline ? " or more" : "") + " points, got " +
+           std::to_string(v.size());
   for (const auto& p : v) {
     if (!finite(p)) return "points: coordinates must be finite";
     if (p.x() < -1e-9 || p.y() < -1e-9 || p.x() > size.x() + 1e-9 || p.y() > size.y() + 1e-9)
-      return "points: (" + fmt(p.x()) + ", " + fmt(p.y()) + ") lies outside the world [0, " + fmt(size.x()) +
-             "] x [0, " + fmt(size.y()) + "]";
+      return "points: (" + fmt(p.x()) + ", " + fmt(p.y()) + ") lies outside the world [0, " + fmt(size.x()) + "] x [0, " + fmt(size.y()) + "]";
   }
   std::string error;
   std::size_t i = 0;  // the edge's first vertex
@@ -111,9 +103,8 @@ std::string checkWall(const WallDef& wall, const Vec2& size) {
         const std::size_t k = i++;
         // The first fault only; a closed polyline's closing edge is not checked.
         if (!error.empty() || k + 1 >= v.size() || (b - a).norm() >= kMinLength) return;
-        error = wall.shape == WallShape::Segment
-                    ? "to: the wall has (almost) zero length"
-                    : "polyline: vertices " + std::to_string(k) + " and " + std::to_string(k + 1) + " coincide";
+        error = wall.shape == WallShape::Segment ? "to: the wall has (almost) zero length"
+                                                 : "polyline: vertices " + std::to_string(k) + " and " + std::to_string(k + 1) + " coincide";
       },
       [&](const Point2& lo, const Point2& hi) {
         if (hi.x() - lo.x() < kMinLength || hi.y() - lo.y() < kMinLength)
@@ -122,8 +113,7 @@ std::string checkWall(const WallDef& wall, const Vec2& size) {
       [&](const Point2& c, double radius) {
         if (!(radius >= kMinLength) || !std::isfinite(radius)) {
           error = "radius: must be at least 0.001 m";
-        } else if (c.x() - radius < -1e-9 || c.y() - radius < -1e-9 || c.x() + radius > size.x() + 1e-9 ||
-                   c.y() + radius > size.y() + 1e-9) {
+        } else if (c.x() - radius < -1e-9 || c.y() - radius < -1e-9 || c.x() + radius > size.x() + 1e-9 || c.y() + radius > size.y() + 1e-9) {
           error = "radius: the pillar reaches outside the world";
         }
       });
@@ -143,8 +133,7 @@ std::string checkRobot(const RobotDef& r) {
   if (s.rays < 1 || s.rays > 64) return "sonar.rays: must lie in [1, 64]";
   if (bad(s.cone, 0.0, pi)) return "sonar.cone: must lie in [0, 180] degrees";
   if (bad(s.minRange, 0.0, 100.0)) return "sonar.min_range: must lie in [0, 100] m";
-  if (bad(s.maxRange, s.minRange, 100.0) || s.maxRange <= s.minRange)
-    return "sonar.max_range: must exceed min_range and be at most 100 m";
+  if (bad(s.maxRange, s.minRange, 100.0) || s.maxRange <= s.minRange) return "sonar.max_range: must exceed min_range and be at most 100 m";
   if (bad(s.specularCutoff, 0.0, pi / 2)) return "sonar.specular_cutoff: must lie in [0, 90] degrees";
   if (bad(s.noise, 0.0, 1.0)) return "sonar.noise: must lie in [0, 1]";
   const OdometryDef& o = r.odometry;
@@ -164,11 +153,9 @@ std::string checkRobot(const RobotDef& r) {
 
 std::string checkWorld(const WorldDef& w, const SourceLines& at) {
   if (!(w.size.x() > 0 && w.size.y() > 0 && w.size.x() <= kMaxSize && w.size.y() <= kMaxSize))
-    return where(at, at.size) + "size: width and height must lie in (0, 1000] m, got [" + fmt(w.size.x()) + ", " +
-           fmt(w.size.y()) + "]";
+    return where(at, at.size) + "size: width and height must lie in (0, 1000] m, got [" + fmt(w.size.x()) + ", " + fmt(w.size.y()) + "]";
   for (std::size_t i = 0; i < w.walls.size(); ++i)
-    if (auto e = checkWall(w.walls[i], w.size); !e.empty())
-      return where(at, lineAt(at.walls, i)) + "wall[" + std::to_string(i) + "]." + e;
+    if (auto e = checkWall(w.walls[i], w.size); !e.empty()) return where(at, lineAt(at.walls, i)) + "wall[" + std::to_string(i) + "]." + e;
   for (std::size_t i = 0; i < w.points.size(); ++i) {
     const Point2& p = w.points[i].position;
     if (!finite(p) || p.x() < 0 || p.y() < 0 || p.x() > w.size.x() || p.y() > w.size.y())
@@ -180,13 +167,11 @@ std::string checkWorld(const WorldDef& w, const SourceLines& at) {
     const std::string field = where(at, lineAt(at.robots, i)) + "robot[" + std::to_string(i) + "].";
     if (auto e = checkRobot(r); !e.empty()) return field + e;
     const Point2& p = r.start.position;
-    if (p.x() - r.radius < 0 || p.y() - r.radius < 0 || p.x() + r.radius > w.size.x() ||
-        p.y() + r.radius > w.size.y())
+    if (p.x() - r.radius < 0 || p.y() - r.radius < 0 || p.x() + r.radius > w.size.x() || p.y() + r.radius > w.size.y())
       return field + "start: the robot (radius " + fmt(r.radius) + " m) reaches outside the world";
     for (std::size_t k = 0; k < w.walls.size(); ++k)
       if (distanceToWall(p, w.walls[k]) < r.radius)
-        return field + "start: the robot (radius " + fmt(r.radius) + " m) is inside or touching wall[" +
-               std::to_string(k) + "]";
+        return field + "start: the robot (radius " + fmt(r.radius) + " m) is inside or touching wall[" + std::to_string(k) + "]";
     for (std::size_t k = 0; k < i; ++k)
       if ((w.robots[k].start.position - p).norm() < w.robots[k].radius + r.radius)
         return field + "start: the robot overlaps robot[" + std::to_string(k) + "]";
@@ -195,8 +180,7 @@ std::string checkWorld(const WorldDef& w, const SourceLines& at) {
     const KeyEventDef& k = w.keys[i];
     const std::string field = where(at, lineAt(at.keys, i)) + "key[" + std::to_string(i) + "].";
     if (!(k.time >= 0 && k.time < 1e7)) return field + "time: must lie in [0, 1e7) s";
-    if (k.robot < -1 || k.robot >= static_cast<int>(w.robots.size()))
-      return field + "robot: no robot with index " + std::to_string(k.robot);
+    if (k.robot < -1 || k.robot >= static_cast<int>(w.robots.size())) return field + "robot: no robot with index " + std::to_string(k.robot);
   }
   return {};
 }

@@ -4,12 +4,13 @@
 #include "frob/worlds/maps.hpp"
 #include "frob/worlds/toml_reader.hpp"
 
+#include <toml++/toml.h>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
 #include <sstream>
-#include <toml++/toml.h>
 
 namespace frob::worlds {
 namespace {
@@ -36,16 +37,15 @@ class Parser : TomlReader {
   using TomlReader::line;
 
   bool readWorld(const toml::table& root) {
-    if (!onlyKeys(root, "", {"description", "size", "enclosed", "seed", "wall", "points", "robot", "key", "bitmap",
-                             "mesh", "sonar", "odometry", "drive"}))
+    if (!onlyKeys(root, "",
+                  {"description", "size", "enclosed", "seed", "wall", "points", "robot", "key", "bitmap", "mesh", "sonar", "odometry", "drive"}))
       return false;
     if (auto n = root.get("description"); n && !string(*n, "description", world_.description)) return false;
     const toml::node* size = root.get("size");
     if (!size) return fail(1, "size", "missing (expected [width, height] in metres)");
     lines_.size = line(size->source());
     if (!point(*size, "size", world_.size)) return false;
-    if (!(world_.size.x() > 0 && world_.size.y() > 0))
-      return fail(*size, "size", "width and height must be positive");
+    if (!(world_.size.x() > 0 && world_.size.y() > 0)) return fail(*size, "size", "width and height must be positive");
     if (auto n = root.get("enclosed"); n && !boolean(*n, "enclosed", world_.enclosed)) return false;
     if (auto n = root.get("seed")) {
       auto i = n->as_integer();
@@ -65,8 +65,8 @@ class Parser : TomlReader {
       auto t = table(*n, "drive");
       if (!t || !readDrive(*t, "drive.", defaults_.drive)) return false;
     }
-    return eachTable(root, "wall", [&](const toml::table& t, const std::string& f) { return readWall(t, f); }) &&
-           readPoints(root) && readMap(root, "bitmap") && readMap(root, "mesh") &&
+    return eachTable(root, "wall", [&](const toml::table& t, const std::string& f) { return readWall(t, f); }) && readPoints(root) &&
+           readMap(root, "bitmap") && readMap(root, "mesh") &&
            eachTable(root, "robot", [&](const toml::table& t, const std::string& f) { return readRobot(t, f); }) &&
            eachTable(root, "key", [&](const toml::table& t, const std::string& f) { return readKey(t, f); });
   }
@@ -90,8 +90,7 @@ class Parser : TomlReader {
   bool readWall(const toml::table& t, const std::string& f) {
     if (!onlyKeys(t, f, {"from", "to", "polyline", "closed", "rect", "circle", "radius"})) return false;
     const int l = line(t.source());
-    const int kinds = int(t.contains("from") || t.contains("to")) + int(t.contains("polyline")) +
-                      int(t.contains("rect")) + int(t.contains("circle"));
+    const int kinds = int(t.contains("from") || t.contains("to")) + int(t.contains("polyline")) + int(t.contains("rect")) + int(t.contains("circle"));
     if (kinds != 1) return fail(l, f.substr(0, f.size() - 1), "give exactly one of from/to, polyline, rect, circle");
     WallDef w;
     if (t.contains("from") || t.contains("to")) {
@@ -127,8 +126,7 @@ class Parser : TomlReader {
       w = circleWall(c, radius);
     }
     if (w.shape != WallShape::Circle && t.contains("radius")) return fail(l, f + "radius", "only a circle has a radius");
-    if (w.shape != WallShape::Polyline && t.contains("closed"))
-      return fail(l, f + "closed", "only a polyline can be closed");
+    if (w.shape != WallShape::Polyline && t.contains("closed")) return fail(l, f + "closed", "only a polyline can be closed");
     world_.walls.push_back(std::move(w));
     lines_.walls.push_back(l);
     return true;
@@ -196,15 +194,11 @@ class Parser : TomlReader {
   }
 
   bool readSonar(const toml::table& t, const std::string& f, SonarDef& s) {
-    if (!onlyKeys(t, f, {"count", "angles_deg", "cone_deg", "rays", "min_range", "max_range", "specular_cutoff_deg",
-                         "noise"}))
-      return false;
+    if (!onlyKeys(t, f, {"count", "angles_deg", "cone_deg", "rays", "min_range", "max_range", "specular_cutoff_deg", "noise"})) return false;
     if (!optInteger(t, "count", f + "count", 0, 64, s.count) || !optInteger(t, "rays", f + "rays", 1, 64, s.rays) ||
-        !optNumber(t, "cone_deg", f + "cone_deg", s.cone, kDeg) ||
-        !optNumber(t, "min_range", f + "min_range", s.minRange) ||
+        !optNumber(t, "cone_deg", f + "cone_deg", s.cone, kDeg) || !optNumber(t, "min_range", f + "min_range", s.minRange) ||
         !optNumber(t, "max_range", f + "max_range", s.maxRange) ||
-        !optNumber(t, "specular_cutoff_deg", f + "specular_cutoff_deg", s.specularCutoff, kDeg) ||
-        !optNumber(t, "noise", f + "noise", s.noise))
+        !optNumber(t, "specular_cutoff_deg", f + "specular_cutoff_deg", s.specularCutoff, kDeg) || !optNumber(t, "noise", f + "noise", s.noise))
       return false;
     if (auto n = t.get("angles_deg")) {
       auto a = n->as_array();
@@ -216,37 +210,32 @@ class Parser : TomlReader {
         s.angles.push_back(wrapAngle(v * kDeg));
       }
       if (t.contains("count") && static_cast<std::size_t>(s.count) != s.angles.size())
-        return fail(*n, f + "angles_deg", "has " + std::to_string(a->size()) + " angles but count is " +
-                                              std::to_string(s.count));
+        return fail(*n, f + "angles_deg", "has " + std::to_string(a->size()) + " angles but count is " + std::to_string(s.count));
     }
     return true;
   }
 
   bool readOdometry(const toml::table& t, const std::string& f, OdometryDef& o) {
-    return onlyKeys(t, f, {"translation", "heading", "turn"}) &&
-           optNumber(t, "translation", f + "translation", o.translation) &&
+    return onlyKeys(t, f, {"translation", "heading", "turn"}) && optNumber(t, "translation", f + "translation", o.translation) &&
            optNumber(t, "heading", f + "heading", o.heading) && optNumber(t, "turn", f + "turn", o.turn);
   }
 
   bool readDrive(const toml::table& t, const std::string& f, DriveDef& d) {
     return onlyKeys(t, f, {"max_speed", "max_turn_rate", "acceleration", "turn_acceleration"}) &&
-           optNumber(t, "max_speed", f + "max_speed", d.maxSpeed) &&
-           optNumber(t, "max_turn_rate", f + "max_turn_rate", d.maxTurnRate) &&
+           optNumber(t, "max_speed", f + "max_speed", d.maxSpeed) && optNumber(t, "max_turn_rate", f + "max_turn_rate", d.maxTurnRate) &&
            optNumber(t, "acceleration", f + "acceleration", d.acceleration) &&
            optNumber(t, "turn_acceleration", f + "turn_acceleration", d.turnAcceleration);
   }
 
   bool readRobot(const toml::table& t, const std::string& f) {
-    if (!onlyKeys(t, f, {"name", "start", "heading_deg", "radius", "density", "bumpers", "sonar", "odometry", "drive"}))
-      return false;
+    if (!onlyKeys(t, f, {"name", "start", "heading_deg", "radius", "density", "bumpers", "sonar", "odometry", "drive"})) return false;
     RobotDef r = defaults_;
     const toml::node* start = t.get("start");
     if (!start) return fail(line(t.source()), f + "start", "missing (expected [x, y] in metres)");
     if (!point(*start, f + "start", r.start.position)) return false;
     if (auto n = t.get("name"); n && !string(*n, f + "name", r.name)) return false;
-    if (!optNumber(t, "heading_deg", f + "heading_deg", r.start.heading, kDeg) ||
-        !optNumber(t, "radius", f + "radius", r.radius) || !optNumber(t, "density", f + "density", r.density) ||
-        !optInteger(t, "bumpers", f + "bumpers", 1, 64, r.bumpers))
+    if (!optNumber(t, "heading_deg", f + "heading_deg", r.start.heading, kDeg) || !optNumber(t, "radius", f + "radius", r.radius) ||
+        !optNumber(t, "density", f + "density", r.density) || !optInteger(t, "bumpers", f + "bumpers", 1, 64, r.bumpers))
       return false;
     r.start.heading = wrapAngle(r.start.heading);
     if (auto n = t.get("sonar")) {

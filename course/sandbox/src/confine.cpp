@@ -23,14 +23,14 @@ namespace {
 std::string errorText(const char* what) { return std::string(what) + ": " + std::strerror(errno); }
 
 // Landlock's rights, by the ABI that added them (Debian 12's headers know only ABI 1).
-constexpr std::uint64_t kFsAbi1 = (1ULL << 13) - 1;  // EXECUTE .. MAKE_SYM
-constexpr std::uint64_t kFsRefer = 1ULL << 13;       // ABI 2
-constexpr std::uint64_t kFsTruncate = 1ULL << 14;    // ABI 3
-constexpr std::uint64_t kFsIoctlDev = 1ULL << 15;    // ABI 5
-constexpr std::uint64_t kNetBindTcp = 1ULL << 0, kNetConnectTcp = 1ULL << 1;     // ABI 4
+constexpr std::uint64_t kFsAbi1 = (1ULL << 13) - 1;                                // EXECUTE .. MAKE_SYM
+constexpr std::uint64_t kFsRefer = 1ULL << 13;                                     // ABI 2
+constexpr std::uint64_t kFsTruncate = 1ULL << 14;                                  // ABI 3
+constexpr std::uint64_t kFsIoctlDev = 1ULL << 15;                                  // ABI 5
+constexpr std::uint64_t kNetBindTcp = 1ULL << 0, kNetConnectTcp = 1ULL << 1;       // ABI 4
 constexpr std::uint64_t kScopeAbstractUnix = 1ULL << 0, kScopeSignal = 1ULL << 1;  // ABI 6
-constexpr std::uint64_t kFileRights = LANDLOCK_ACCESS_FS_EXECUTE | LANDLOCK_ACCESS_FS_WRITE_FILE |
-                                      LANDLOCK_ACCESS_FS_READ_FILE | kFsTruncate | kFsIoctlDev;
+constexpr std::uint64_t kFileRights =
+    LANDLOCK_ACCESS_FS_EXECUTE | LANDLOCK_ACCESS_FS_WRITE_FILE | LANDLOCK_ACCESS_FS_READ_FILE | kFsTruncate | kFsIoctlDev;
 
 // landlock_ruleset_attr as the newest ABI lays it out; older kernels are given a prefix of it.
 struct RulesetAttr {
@@ -144,18 +144,38 @@ Layer restrictSyscalls(SyscallPolicy policy) {
   const auto deny = [&](int call) {
     if (rc == 0) rc = ::seccomp_rule_add(ctx, refuse, call, 0);
   };
-  for (int call : {SCMP_SYS(socket), SCMP_SYS(socketpair), SCMP_SYS(connect), SCMP_SYS(bind), SCMP_SYS(listen),
-                   SCMP_SYS(accept), SCMP_SYS(accept4), SCMP_SYS(ptrace), SCMP_SYS(process_vm_readv),
-                   SCMP_SYS(process_vm_writev), SCMP_SYS(io_uring_setup), SCMP_SYS(bpf), SCMP_SYS(perf_event_open),
-                   SCMP_SYS(userfaultfd), SCMP_SYS(mount), SCMP_SYS(umount2), SCMP_SYS(unshare), SCMP_SYS(setns),
-                   SCMP_SYS(chroot), SCMP_SYS(pivot_root), SCMP_SYS(keyctl), SCMP_SYS(add_key), SCMP_SYS(request_key),
-                   SCMP_SYS(init_module), SCMP_SYS(finit_module), SCMP_SYS(kexec_load), SCMP_SYS(personality)}) {
+  for (int call : {SCMP_SYS(socket),
+                   SCMP_SYS(socketpair),
+                   SCMP_SYS(connect),
+                   SCMP_SYS(bind),
+                   SCMP_SYS(listen),
+                   SCMP_SYS(accept),
+                   SCMP_SYS(accept4),
+                   SCMP_SYS(ptrace),
+                   SCMP_SYS(process_vm_readv),
+                   SCMP_SYS(process_vm_writev),
+                   SCMP_SYS(io_uring_setup),
+                   SCMP_SYS(bpf),
+                   SCMP_SYS(perf_event_open),
+                   SCMP_SYS(userfaultfd),
+                   SCMP_SYS(mount),
+                   SCMP_SYS(umount2),
+                   SCMP_SYS(unshare),
+                   SCMP_SYS(setns),
+                   SCMP_SYS(chroot),
+                   SCMP_SYS(pivot_root),
+                   SCMP_SYS(keyctl),
+                   SCMP_SYS(add_key),
+                   SCMP_SYS(request_key),
+                   SCMP_SYS(init_module),
+                   SCMP_SYS(finit_module),
+                   SCMP_SYS(kexec_load),
+                   SCMP_SYS(personality)}) {
     deny(call);
   }
   if (controller) {
-    for (int call : {SCMP_SYS(execve), SCMP_SYS(execveat), SCMP_SYS(fork), SCMP_SYS(vfork), SCMP_SYS(tkill),
-                     SCMP_SYS(pidfd_open), SCMP_SYS(pidfd_send_signal), SCMP_SYS(pidfd_getfd), SCMP_SYS(setsid),
-                     SCMP_SYS(setpgid)}) {
+    for (int call : {SCMP_SYS(execve), SCMP_SYS(execveat), SCMP_SYS(fork), SCMP_SYS(vfork), SCMP_SYS(tkill), SCMP_SYS(pidfd_open),
+                     SCMP_SYS(pidfd_send_signal), SCMP_SYS(pidfd_getfd), SCMP_SYS(setsid), SCMP_SYS(setpgid)}) {
       deny(call);
     }
     // Threads may start; processes may not. clone3 hides its flags from the filter, so it reports
@@ -201,15 +221,17 @@ void installTrapReporter(volatile std::int32_t* syscallOut) {
 
 std::string describeSyscall(std::int32_t number) {
   const auto is = [number](std::initializer_list<int> calls) {
-    for (int c : calls) if (c == number) return true;
+    for (int c : calls)
+      if (c == number) return true;
     return false;
   };
-  if (is({SCMP_SYS(socket), SCMP_SYS(socketpair), SCMP_SYS(connect), SCMP_SYS(bind), SCMP_SYS(listen), SCMP_SYS(accept),
-          SCMP_SYS(accept4)})) return "open a network socket";
+  if (is({SCMP_SYS(socket), SCMP_SYS(socketpair), SCMP_SYS(connect), SCMP_SYS(bind), SCMP_SYS(listen), SCMP_SYS(accept), SCMP_SYS(accept4)}))
+    return "open a network socket";
   if (is({SCMP_SYS(execve), SCMP_SYS(execveat)})) return "run another program";
   if (is({SCMP_SYS(fork), SCMP_SYS(vfork), SCMP_SYS(clone), SCMP_SYS(setsid), SCMP_SYS(setpgid)})) return "start another process";
-  if (is({SCMP_SYS(kill), SCMP_SYS(tgkill), SCMP_SYS(tkill), SCMP_SYS(rt_sigqueueinfo), SCMP_SYS(rt_tgsigqueueinfo),
-          SCMP_SYS(pidfd_open), SCMP_SYS(pidfd_send_signal), SCMP_SYS(pidfd_getfd)})) return "signal another process";
+  if (is({SCMP_SYS(kill), SCMP_SYS(tgkill), SCMP_SYS(tkill), SCMP_SYS(rt_sigqueueinfo), SCMP_SYS(rt_tgsigqueueinfo), SCMP_SYS(pidfd_open),
+          SCMP_SYS(pidfd_send_signal), SCMP_SYS(pidfd_getfd)}))
+    return "signal another process";
   if (is({SCMP_SYS(ptrace), SCMP_SYS(process_vm_readv), SCMP_SYS(process_vm_writev)})) return "inspect another process";
   char* name = ::seccomp_syscall_resolve_num_arch(SCMP_ARCH_NATIVE, number);
   std::string what = std::string("make the system call ") + (name != nullptr ? name : std::to_string(number).c_str());

@@ -6,6 +6,7 @@
 #include "frob/sandbox/confine.hpp"
 
 #include <CLI/CLI.hpp>
+
 #include <elf.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -25,8 +26,7 @@ namespace {
 std::string interpreterOf(int fd) {
   Elf64_Ehdr eh{};
   std::string interp;
-  if (fd >= 0 && ::pread(fd, &eh, sizeof eh, 0) == sizeof eh && std::memcmp(eh.e_ident, ELFMAG, SELFMAG) == 0 &&
-      eh.e_ident[EI_CLASS] == ELFCLASS64) {
+  if (fd >= 0 && ::pread(fd, &eh, sizeof eh, 0) == sizeof eh && std::memcmp(eh.e_ident, ELFMAG, SELFMAG) == 0 && eh.e_ident[EI_CLASS] == ELFCLASS64) {
     for (int i = 0; i < eh.e_phnum; ++i) {
       Elf64_Phdr ph{};
       if (::pread(fd, &ph, sizeof ph, static_cast<off_t>(eh.e_phoff + i * sizeof ph)) != sizeof ph) break;

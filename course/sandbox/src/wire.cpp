@@ -59,8 +59,8 @@ void write(Writer& w, const SensorFrame& f) {
 }
 
 bool read(Reader& r, SensorFrame& f) {
-  return readList(r, f.sonar, [&](double& v) { return r.get(v); }) && read(r, f.odometry) && r.get(f.velocity) &&
-         r.get(f.turnRate) && readList(r, f.bumps, [&](BumperHit& b) { return r.get(b.bumper) && r.get(b.angle); }) &&
+  return readList(r, f.sonar, [&](double& v) { return r.get(v); }) && read(r, f.odometry) && r.get(f.velocity) && r.get(f.turnRate) &&
+         readList(r, f.bumps, [&](BumperHit& b) { return r.get(b.bumper) && r.get(b.angle); }) &&
          readList(r, f.keys, [&](char& k) { return r.get(k); });
 }
 
@@ -71,8 +71,7 @@ void write(Writer& w, const RobotSpec& s) {
 }
 
 bool read(Reader& r, RobotSpec& s) {
-  return r.get(s.radius) && readList(r, s.sonarAngles, [&](double& v) { return r.get(v); }) && r.get(s.sonarMinRange) &&
-         r.get(s.sonarMaxRange);
+  return r.get(s.radius) && readList(r, s.sonarAngles, [&](double& v) { return r.get(v); }) && r.get(s.sonarMinRange) && r.get(s.sonarMaxRange);
 }
 
 void write(Writer& w, const Picture& p) {
@@ -93,8 +92,7 @@ bool read(Reader& r, Picture& p) {
     std::uint8_t kind = 0, colored = 0;
     if (!r.get(kind) || kind > static_cast<std::uint8_t>(Shape::Kind::Value)) return r.fail();
     s.kind = static_cast<Shape::Kind>(kind);
-    if (!readList(r, s.points, [&](Point2& q) { return read(r, q); }) || !r.get(s.radius) || !r.get(s.text) ||
-        !r.get(s.value) || !r.get(colored)) {
+    if (!readList(r, s.points, [&](Point2& q) { return read(r, q); }) || !r.get(s.radius) || !r.get(s.text) || !r.get(s.value) || !r.get(colored)) {
       return false;
     }
     if (colored != 0) s.color.emplace();
@@ -112,8 +110,8 @@ void write(Writer& w, const TaskRecord& t) {
 
 bool read(Reader& r, TaskRecord& t) {
   std::uint8_t how = 0;
-  if (!(r.get(t.id) && r.get(t.parent) && r.get(t.depth) && r.get(t.name) && r.get(t.where) && r.get(t.start) &&
-        r.get(t.end) && r.get(how) && r.get(t.detail))) {
+  if (!(r.get(t.id) && r.get(t.parent) && r.get(t.depth) && r.get(t.name) && r.get(t.where) && r.get(t.start) && r.get(t.end) && r.get(how) &&
+        r.get(t.detail))) {
     return false;
   }
   if (how > static_cast<std::uint8_t>(TaskEnd::Replaced)) return r.fail();

@@ -92,8 +92,7 @@ T zeroOf() {
 
 /// A plain value from which a constant Behavior<T> can be made (not a behavior, not a graph node).
 template <class U, class T>
-concept ValueFor = !BehaviorType<U> && !std::convertible_to<U, std::shared_ptr<detail::NodeBase>> &&
-                   std::constructible_from<T, U&&>;
+concept ValueFor = !BehaviorType<U> && !std::convertible_to<U, std::shared_ptr<detail::NodeBase>> && std::constructible_from<T, U&&>;
 
 /// A value defined at every instant. Cheap to copy: copies share one node of the graph.
 template <class T>
@@ -102,7 +101,9 @@ class Behavior {
   using value_type = T;
 
   /// The constant behavior zeroOf<T>().
-  Behavior() requires std::default_initializable<T> : Behavior(zeroOf<T>()) {}
+  Behavior()
+    requires std::default_initializable<T>
+      : Behavior(zeroOf<T>()) {}
   /// The constant behavior `v` (so plain values mix freely with behaviors).
   template <class U>
     requires ValueFor<U, T>
@@ -215,9 +216,7 @@ class Pointwise {
     std::apply([&](const auto&... a) { (a.inputs(out), ...); }, args_);
   }
   /// This expression as one node of the graph.
-  [[nodiscard]] Behavior<R> behavior() const {
-    return Behavior<R>(std::make_shared<detail::PointwiseNode<R, Pointwise>>(*this));
-  }
+  [[nodiscard]] Behavior<R> behavior() const { return Behavior<R>(std::make_shared<detail::PointwiseNode<R, Pointwise>>(*this)); }
   /// Implicit conversion, so that `Behavior<double> b = x + y;` reads naturally.
   operator Behavior<R>() const { return behavior(); }  // NOLINT(google-explicit-constructor)
   /// The value at instant `now`, as for a Behavior.
@@ -262,8 +261,7 @@ template <class F, class... Args>
   requires std::invocable<F&, const ValueOf<Args>&...>
 [[nodiscard]] auto lift(F f, Args&&... args) {
   using R = Stored<std::invoke_result_t<F&, const ValueOf<Args>&...>>;
-  return Pointwise<R, F, detail::Arg<std::remove_cvref_t<Args>>...>(std::move(f),
-                                                                     detail::makeArg(std::forward<Args>(args))...);
+  return Pointwise<R, F, detail::Arg<std::remove_cvref_t<Args>>...>(std::move(f), detail::makeArg(std::forward<Args>(args))...);
 }
 
 template <class T>
@@ -282,13 +280,11 @@ auto Pointwise<R, F, Args...>::map(G g) const {
 
 // Pointwise operators mixing Behavior<T> and plain values. Each is constrained on its value types,
 // so `frontSonar(r) < "x"` fails to compile naming the invalid expression `a < b`.
-#define FROB_BEHAVIOR_BINARY_OPERATOR(op)                                                   \
-  template <class A, class B>                                                               \
-    requires BehaviorOperands<A, B> && requires(const ValueOf<A>& a, const ValueOf<B>& b) { \
-      a op b;                                                                               \
-    }                                                                                       \
-  [[nodiscard]] auto operator op(const A& a, const B& b) {                                  \
-    return lift([](const auto& x, const auto& y) { return x op y; }, a, b);                 \
+#define FROB_BEHAVIOR_BINARY_OPERATOR(op)                                                             \
+  template <class A, class B>                                                                         \
+    requires BehaviorOperands<A, B> && requires(const ValueOf<A>& a, const ValueOf<B>& b) { a op b; } \
+  [[nodiscard]] auto operator op(const A& a, const B& b) {                                            \
+    return lift([](const auto& x, const auto& y) { return x op y; }, a, b);                           \
   }
 FROB_BEHAVIOR_BINARY_OPERATOR(+)
 FROB_BEHAVIOR_BINARY_OPERATOR(-)
@@ -319,11 +315,11 @@ template <BehaviorType A>
 }
 
 // Pointwise maths on behaviors of numbers (plain numbers keep using <cmath>).
-#define FROB_BEHAVIOR_MATH_FUNCTION(name)                                  \
-  template <BehaviorType A>                                                \
-    requires requires(const ValueOf<A>& a) { std::name(a); }               \
-  [[nodiscard]] auto name(const A& a) {                                    \
-    return lift([](const auto& x) { return std::name(x); }, a);            \
+#define FROB_BEHAVIOR_MATH_FUNCTION(name)                       \
+  template <BehaviorType A>                                     \
+    requires requires(const ValueOf<A>& a) { std::name(a); }    \
+  [[nodiscard]] auto name(const A& a) {                         \
+    return lift([](const auto& x) { return std::name(x); }, a); \
   }
 FROB_BEHAVIOR_MATH_FUNCTION(sin)
 FROB_BEHAVIOR_MATH_FUNCTION(cos)
@@ -343,32 +339,28 @@ FROB_BEHAVIOR_MATH_FUNCTION(ceil)
 template <class A, class B>
   requires BehaviorOperands<A, B> && std::totally_ordered_with<ValueOf<A>, ValueOf<B>>
 [[nodiscard]] auto max(const A& a, const B& b) {
-  return lift([](const auto& x, const auto& y) { return x < y ? std::common_type_t<decltype(x), decltype(y)>(y) : x; },
-              a, b);
+  return lift([](const auto& x, const auto& y) { return x < y ? std::common_type_t<decltype(x), decltype(y)>(y) : x; }, a, b);
 }
 
 /// Pointwise smaller of two (behaviors or values).
 template <class A, class B>
   requires BehaviorOperands<A, B> && std::totally_ordered_with<ValueOf<A>, ValueOf<B>>
 [[nodiscard]] auto min(const A& a, const B& b) {
-  return lift([](const auto& x, const auto& y) { return y < x ? std::common_type_t<decltype(x), decltype(y)>(y) : x; },
-              a, b);
+  return lift([](const auto& x, const auto& y) { return y < x ? std::common_type_t<decltype(x), decltype(y)>(y) : x; }, a, b);
 }
 
 /// Pointwise largest of three or more (behaviors or values): max(sonar(r, 15), sonar(r, 0), sonar(r, 1)).
 template <class... Xs>
   requires(sizeof...(Xs) >= 3 && (BehaviorType<Xs> || ...)) && requires { typename std::common_type_t<ValueOf<Xs>...>; }
 [[nodiscard]] auto max(const Xs&... xs) {
-  return lift([](const ValueOf<Xs>&... v) { return std::max({static_cast<std::common_type_t<ValueOf<Xs>...>>(v)...}); },
-              xs...);
+  return lift([](const ValueOf<Xs>&... v) { return std::max({static_cast<std::common_type_t<ValueOf<Xs>...>>(v)...}); }, xs...);
 }
 
 /// Pointwise smallest of three or more (behaviors or values): min(sonar(r, 15), sonar(r, 0), sonar(r, 1)).
 template <class... Xs>
   requires(sizeof...(Xs) >= 3 && (BehaviorType<Xs> || ...)) && requires { typename std::common_type_t<ValueOf<Xs>...>; }
 [[nodiscard]] auto min(const Xs&... xs) {
-  return lift([](const ValueOf<Xs>&... v) { return std::min({static_cast<std::common_type_t<ValueOf<Xs>...>>(v)...}); },
-              xs...);
+  return lift([](const ValueOf<Xs>&... v) { return std::min({static_cast<std::common_type_t<ValueOf<Xs>...>>(v)...}); }, xs...);
 }
 
 /// Pointwise `v` limited to [lo, hi].

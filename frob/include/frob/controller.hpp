@@ -96,9 +96,8 @@ class RunningController {
 #endif
 
 /// Names this file's controller function, optionally with ControllerOptions fields.
-#define FROB_CONTROLLER(function, ...)                                                        \
-  extern "C" const ::frob::ControllerEntry* FROB_CONTROLLER_SYMBOL() {                       \
-    static const ::frob::ControllerEntry entry{#function, ::frob::makeController(function),  \
-                                               ::frob::ControllerOptions{__VA_ARGS__}};      \
-    return &entry;                                                                            \
+#define FROB_CONTROLLER(function, ...)                                                                                               \
+  extern "C" const ::frob::ControllerEntry* FROB_CONTROLLER_SYMBOL() {                                                               \
+    static const ::frob::ControllerEntry entry{#function, ::frob::makeController(function), ::frob::ControllerOptions{__VA_ARGS__}}; \
+    return &entry;                                                                                                                   \
   }

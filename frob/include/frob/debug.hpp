@@ -36,7 +36,7 @@ struct TaskRecord {
   double start = 0.0;        ///< simulated time it started, seconds
   double end = 0.0;          ///< simulated time it ended, seconds (meaningless while Running)
   TaskEnd how = TaskEnd::Running;
-  std::string detail;        ///< its result, error message or abort reason, printable
+  std::string detail;  ///< its result, error message or abort reason, printable
 };
 
 /// Every task start and end of one robot's controller. Running tasks are kept until they end;

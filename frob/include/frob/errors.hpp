@@ -27,8 +27,7 @@ namespace detail {
 }  // namespace detail
 
 /// Checks a precondition in every build; throws UsageError naming the file, line and `message`.
-#define FROB_ASSERT(condition, message) \
-  ((condition) ? static_cast<void>(0) : ::frob::detail::failAssert(#condition, message, __FILE__, __LINE__))
+#define FROB_ASSERT(condition, message) ((condition) ? static_cast<void>(0) : ::frob::detail::failAssert(#condition, message, __FILE__, __LINE__))
 
 /// True when every number in `v` is finite (no NaN, no infinity).
 [[nodiscard]] inline bool isFinite(double v) { return std::isfinite(v); }

@@ -182,8 +182,7 @@ class OnceNode final : public EventNode<T> {
 template <class T, class U>
 class SnapshotNode final : public EventNode<std::pair<T, U>> {
  public:
-  SnapshotNode(std::shared_ptr<EventNode<T>> e, std::shared_ptr<BehaviorNode<U>> b)
-      : e_(std::move(e)), b_(std::move(b)) {}
+  SnapshotNode(std::shared_ptr<EventNode<T>> e, std::shared_ptr<BehaviorNode<U>> b) : e_(std::move(e)), b_(std::move(b)) {}
 
  protected:
   std::optional<std::pair<T, U>> compute(const Instant& now) override {

@@ -126,26 +126,25 @@ template <class F1, class F2>
     } else {
       co_return co_await std::invoke(second, strand.output, detail::endOf(strand));
     }
-  }(std::move(t1f), std::move(t2f)).at(loc).named("withTask");
+  }(std::move(t1f), std::move(t2f))
+                                        .at(loc)
+                                        .named("withTask");
 }
 
 /// Lyons' P | Q: `p` and `q` run in parallel, the output is merge(p's output, q's output) while
 /// both run; it ends when both have ended, with both results. An error in either fails it.
 template <class A, class BP, class BQ, class M>
   requires std::invocable<M&, const A&, const A&>
-[[nodiscard]] Task<A, std::pair<ResultOf<BP>, ResultOf<BQ>>> parallel(
-    Task<A, BP> p, Task<A, BQ> q, M merge, std::source_location loc = std::source_location::current()) {
+[[nodiscard]] Task<A, std::pair<ResultOf<BP>, ResultOf<BQ>>> parallel(Task<A, BP> p, Task<A, BQ> q, M merge,
+                                                                      std::source_location loc = std::source_location::current()) {
   return [](Task<A, BP> first, Task<A, BQ> second, M m) -> Task<A, std::pair<ResultOf<BP>, ResultOf<BQ>>> {
     detail::RunContext<A>* ctx = co_await detail::GetContext{};
     std::int64_t record = co_await detail::GetRecord{};
     detail::Strand<A, BP> strand = detail::startStrand(ctx->state, record, std::move(first));
     detail::ScopeEntry<detail::Watcher> keep(ctx->watchers, detail::keepSampling(strand.output));
     Event<RoboErr> firstFailed =
-        detail::endOf(strand).filter([](const Outcome<BP>& o) { return !o.ok(); }).map([](const Outcome<BP>& o) {
-          return *o.error;
-        });
-    ResultOf<BQ> secondResult = co_await detail::resultOf(
-        addError(firstFailed, detail::mergedWith(strand.output, m, std::move(second)))).quiet();
+        detail::endOf(strand).filter([](const Outcome<BP>& o) { return !o.ok(); }).map([](const Outcome<BP>& o) { return *o.error; });
+    ResultOf<BQ> secondResult = co_await detail::resultOf(addError(firstFailed, detail::mergedWith(strand.output, m, std::move(second)))).quiet();
     if (!strand.done()) {  // the first goes on alone
       Behavior<A> out = strand.output;
       Event<Outcome<BP>> end = detail::endOf(strand);
@@ -154,15 +153,17 @@ template <class A, class BP, class BQ, class M>
     Outcome<BP> o = strand.outcome();
     if (!o.ok()) throw *o.error;
     co_return std::pair<ResultOf<BP>, ResultOf<BQ>>(std::move(*o.value), std::move(secondResult));
-  }(std::move(p), std::move(q), std::move(merge)).at(loc).named("parallel");
+  }(std::move(p), std::move(q), std::move(merge))
+                                                               .at(loc)
+                                                               .named("parallel");
 }
 
 /// Lyons' P # Q (disabling composition): `p` and `q` run in parallel with merged outputs; the
 /// first to end wins and the other is aborted. The result says which ended (index 0 for p).
 template <class A, class BP, class BQ, class M>
   requires std::invocable<M&, const A&, const A&>
-[[nodiscard]] Task<A, std::variant<ResultOf<BP>, ResultOf<BQ>>> disable(
-    Task<A, BP> p, Task<A, BQ> q, M merge, std::source_location loc = std::source_location::current()) {
+[[nodiscard]] Task<A, std::variant<ResultOf<BP>, ResultOf<BQ>>> disable(Task<A, BP> p, Task<A, BQ> q, M merge,
+                                                                        std::source_location loc = std::source_location::current()) {
   using Result = std::variant<ResultOf<BP>, ResultOf<BQ>>;
   return [](Task<A, BP> first, Task<A, BQ> second, M m) -> Task<A, Result> {
     detail::RunContext<A>* ctx = co_await detail::GetContext{};
@@ -185,7 +186,9 @@ template <class A, class BP, class BQ, class M>
     if (secondResult) co_return Result(std::in_place_index<1>, std::move(*secondResult));
     if (!o->ok()) throw *o->error;
     co_return Result(std::in_place_index<0>, std::move(*o->value));
-  }(std::move(p), std::move(q), std::move(merge)).at(loc).named("disable");
+  }(std::move(p), std::move(q), std::move(merge))
+                                                               .at(loc)
+                                                               .named("disable");
 }
 
 /// Lyons' P <> Q (synchronous loop): p, then q, then again, forever. `pf` and `qf` make the tasks.
@@ -197,7 +200,9 @@ template <class PF, class QF>
       co_await std::invoke(p);
       co_await std::invoke(q);
     }
-  }(std::move(pf), std::move(qf)).at(loc).named("syncLoop");
+  }(std::move(pf), std::move(qf))
+                               .at(loc)
+                               .named("syncLoop");
 }
 
 /// Lyons' P <>< Q (asynchronous loop): p; then q starts beside the rest of the loop, which runs
@@ -225,7 +230,9 @@ template <class PF, class QF, class M>
       co_await std::invoke(p);
       strands->push_back(detail::startStrand(ctx->state, record, std::invoke(q)));
     }
-  }(std::move(pf), std::move(qf), std::move(merge)).at(loc).named("asyncLoop");
+  }(std::move(pf), std::move(qf), std::move(merge))
+                                    .at(loc)
+                                    .named("asyncLoop");
 }
 
 }  // namespace frob

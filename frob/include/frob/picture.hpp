@@ -30,11 +30,11 @@ inline constexpr Color gray{0.5f, 0.5f, 0.5f};
 struct Shape {
   enum class Kind { Circle, Disc, Polyline, Polygon, Arrow, Text, Value };
   Kind kind = Kind::Polyline;
-  std::vector<Point2> points;   ///< centre (Circle, Disc, Text), vertices (Polyline, Polygon), tail and tip (Arrow)
-  double radius = 0.0;          ///< Circle and Disc radius, metres
-  std::string text;             ///< Text content; a Value's name
-  double value = 0.0;           ///< a Value: a number to plot, not drawn (plotValue, withPlot)
-  std::optional<Color> color;   ///< unset until a withColor reaches it; renderers pick a default
+  std::vector<Point2> points;  ///< centre (Circle, Disc, Text), vertices (Polyline, Polygon), tail and tip (Arrow)
+  double radius = 0.0;         ///< Circle and Disc radius, metres
+  std::string text;            ///< Text content; a Value's name
+  double value = 0.0;          ///< a Value: a number to plot, not drawn (plotValue, withPlot)
+  std::optional<Color> color;  ///< unset until a withColor reaches it; renderers pick a default
   friend bool operator==(const Shape&, const Shape&) = default;
 };
 

@@ -45,7 +45,8 @@ struct FrameField<double> {
     if (slot == FrameSlot::sonar) [[likely]] {
       // A source may give fewer sonars than its spec says: a clear error, not a stray read.
       const std::vector<double>& ranges = frame->sonar;
-      if (index >= ranges.size()) [[unlikely]] sonarOutOfRange(index, ranges.size());
+      if (index >= ranges.size()) [[unlikely]]
+        sonarOutOfRange(index, ranges.size());
       return ranges[index];
     }
     return slot == FrameSlot::heading ? frame->odometry.heading : frame->velocity;
@@ -59,11 +60,12 @@ struct FrameField<Point2> {
 // The robot's frame at an instant, for readings: a frame its owner refreshes in place is read
 // directly (no node, no per-instant check); a FrameSource is fetched once per instant by `node`.
 struct FrameArg {
-  const SensorFrame* const* slot = nullptr;  // node->value(): the frame in place, or this instant's fetch
-  bool fetched = false;                       // whether `node` must fetch it at each instant
+  const SensorFrame* const* slot = nullptr;                // node->value(): the frame in place, or this instant's fetch
+  bool fetched = false;                                    // whether `node` must fetch it at each instant
   std::shared_ptr<BehaviorNode<const SensorFrame*>> node;  // holds the frame in `slot`
   const SensorFrame* get(const Instant& now) const {
-    if (!fetched) [[likely]] return *slot;
+    if (!fetched) [[likely]]
+      return *slot;
     return fetch(now);
   }
   // Out of line, so that a node reading a fixed frame needs no registers saved for the call.
@@ -119,16 +121,14 @@ class Robot {
   [[nodiscard]] const std::shared_ptr<DebugChannel>& debugChannel() const { return debug_; }
 
  private:
-  Robot(RobotSpec spec, std::shared_ptr<detail::BehaviorNode<const SensorFrame*>> frameNode,
-        bool inPlace);
+  Robot(RobotSpec spec, std::shared_ptr<detail::BehaviorNode<const SensorFrame*>> frameNode, bool inPlace);
   struct Sensors;
   std::shared_ptr<const Sensors> sensors_;
   std::shared_ptr<DebugChannel> debug_ = std::make_shared<DebugChannel>();
 };
 
 /// The paper's sensor functions, in C++.
-[[nodiscard]] inline Reading<double> sonar(const Robot& r, int i,
-                                           std::source_location loc = std::source_location::current()) {
+[[nodiscard]] inline Reading<double> sonar(const Robot& r, int i, std::source_location loc = std::source_location::current()) {
   return r.sonar(i, loc);
 }
 [[nodiscard]] inline Behavior<std::vector<double>> sonars(const Robot& r) { return r.sonars(); }
@@ -150,7 +150,6 @@ template <class F, class T>
 }
 
 }  // namespace frob
-
 
 // The sonar ring of Robot::sonar, seen from above (16 sonars, 22.5 degrees apart, counter-clockwise
 // from the front; the same picture is in frob/README.md and course/lessons/01_behaviors.md):

@@ -17,10 +17,8 @@ class RunnerNode final : public BehaviorNode<A> {
   // A run of `task` then `final`. A run inside another (parallel tasks) hangs its timeline under
   // `parentRecord` and, with `holdRoboErrs`, keeps an uncaught RoboErr in result() for the other
   // branch to catch; any other exception ends the whole run, as it would at the top.
-  RunnerNode(TaskState ts, Task<A, B> task, Behavior<A> final, std::int64_t parentRecord = -1,
-             bool holdRoboErrs = false)
-      : ctx_(std::move(ts)), task_(std::move(task)), final_(std::move(final)), parentRecord_(parentRecord),
-        holdRoboErrs_(holdRoboErrs) {}
+  RunnerNode(TaskState ts, Task<A, B> task, Behavior<A> final, std::int64_t parentRecord = -1, bool holdRoboErrs = false)
+      : ctx_(std::move(ts)), task_(std::move(task)), final_(std::move(final)), parentRecord_(parentRecord), holdRoboErrs_(holdRoboErrs) {}
   RunnerNode(const RunnerNode&) = delete;
   RunnerNode& operator=(const RunnerNode&) = delete;
   ~RunnerNode() override {
@@ -116,8 +114,7 @@ class RunnerNode final : public BehaviorNode<A> {
     return buf;
   }
   static std::string runawayMessage(const std::string& task, const Instant& now) {
-    return "task '" + task + "' ended at its start more than " + std::to_string(kMaxTransitionsPerInstant) +
-           " times at t = " + seconds(now) +
+    return "task '" + task + "' ended at its start more than " + std::to_string(kMaxTransitionsPerInstant) + " times at t = " + seconds(now) +
            ": each task in the loop ends in the same step it begins (an event that has already occurred, "
            "e.g. one shared by consecutive tasks, or a condition that already holds)";
   }

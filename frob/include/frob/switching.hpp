@@ -22,8 +22,7 @@ class SwitchChainGuard {
 template <class T>
 class SwitchNode final : public BehaviorNode<T> {
  public:
-  SwitchNode(std::shared_ptr<BehaviorNode<T>> b, std::shared_ptr<EventNode<Behavior<T>>> e, bool repeat)
-      : e_(std::move(e)), repeat_(repeat) {
+  SwitchNode(std::shared_ptr<BehaviorNode<T>> b, std::shared_ptr<EventNode<Behavior<T>>> e, bool repeat) : e_(std::move(e)), repeat_(repeat) {
     follow(std::move(b));
   }
 

@@ -101,9 +101,8 @@ class [[nodiscard("a Task does nothing unless you co_await it")]] Task {
 
   /// Starts this task inside run `ctx`, awaited by `caller` (null at the run's top), reporting
   /// into `slot`; returns the frame to resume.
-  std::coroutine_handle<> startIn(detail::ResultSlot<ResultOf<B>>& slot, detail::RunContext<A>* ctx,
-                                  std::coroutine_handle<> continuation, std::int64_t parentRecord,
-                                  const detail::PromiseBase<A>* caller) {
+  std::coroutine_handle<> startIn(detail::ResultSlot<ResultOf<B>>& slot, detail::RunContext<A>* ctx, std::coroutine_handle<> continuation,
+                                  std::int64_t parentRecord, const detail::PromiseBase<A>* caller) {
     FROB_ASSERT(handle_, "a Task can run only once (it was already awaited or moved from)");
     auto h = std::exchange(handle_, {});
     slot.frame = h;
@@ -135,8 +134,7 @@ struct ReturnVoid {
 
 template <class A, class B>
 class TaskPromise : public PromiseBase<A>,
-                    public std::conditional_t<std::is_void_v<B>, ReturnVoid<TaskPromise<A, B>>,
-                                              ReturnValue<ResultOf<B>, TaskPromise<A, B>>> {
+                    public std::conditional_t<std::is_void_v<B>, ReturnVoid<TaskPromise<A, B>>, ReturnValue<ResultOf<B>, TaskPromise<A, B>>> {
  public:
   using R = ResultOf<B>;
   explicit TaskPromise(std::source_location loc = std::source_location::current()) : PromiseBase<A>(loc) {}
@@ -264,7 +262,9 @@ template <class A, class E>
 class AtomicAwaiter final : public AtomicBase<A> {
  public:
   AtomicAwaiter(Behavior<A> b, Event<E> exit, std::optional<Event<RoboErr>> error)
-      : behavior_(std::move(b)), exit_(std::move(exit)), error_(std::move(error)),
+      : behavior_(std::move(b)),
+        exit_(std::move(exit)),
+        error_(std::move(error)),
         exitNever_(dynamic_cast<NeverNode<E>*>(exit_.node().get()) != nullptr) {}
 
   bool await_ready() noexcept { return false; }
@@ -367,23 +367,27 @@ inline constexpr bool kNever = false;
 template <class Parts>
 consteval bool checkTaskParts() {
   if constexpr (!requires { std::tuple_size<Parts>::value; }) {
-    static_assert(kNever<Parts>, "mkTask: the function must return std::pair{behavior, event} "
-                                 "(or std::tuple{behavior, event, error event} for mkTaskE)");
+    static_assert(kNever<Parts>,
+                  "mkTask: the function must return std::pair{behavior, event} "
+                  "(or std::tuple{behavior, event, error event} for mkTaskE)");
     return false;
   } else {
     using Drives = std::remove_cvref_t<std::tuple_element_t<0, Parts>>;
     using Ends = std::remove_cvref_t<std::tuple_element_t<1, Parts>>;
     if constexpr (!BehaviorType<Drives>) {
-      static_assert(kNever<Parts>, "mkTask: the pair's first element must be a behavior, what the task drives "
-                                   "(e.g. wheels(0.1, 0))");
+      static_assert(kNever<Parts>,
+                    "mkTask: the pair's first element must be a behavior, what the task drives "
+                    "(e.g. wheels(0.1, 0))");
       return false;
     } else if constexpr (BehaviorType<Ends> && std::is_same_v<frob::ValueOf<Ends>, bool>) {
-      static_assert(kNever<Parts>, "mkTask: the pair's second element is a Behavior<bool>, a condition, but a task "
-                                   "ends on an event: did you forget predicate(...)?");
+      static_assert(kNever<Parts>,
+                    "mkTask: the pair's second element is a Behavior<bool>, a condition, but a task "
+                    "ends on an event: did you forget predicate(...)?");
       return false;
     } else if constexpr (!EventType<Ends>) {
-      static_assert(kNever<Parts>, "mkTask: the pair's second element must be the event that ends the task "
-                                   "(e.g. predicate(frontSonar(r) < 0.5) or after(2.0))");
+      static_assert(kNever<Parts>,
+                    "mkTask: the pair's second element must be the event that ends the task "
+                    "(e.g. predicate(frontSonar(r) < 0.5) or after(2.0))");
       return false;
     } else {
       return true;
@@ -410,8 +414,7 @@ template <class F>
 template <class F>
   requires std::invocable<F&, const TaskState&>
 [[nodiscard]] auto mkTaskE(F f, std::source_location loc = std::source_location::current()) {
-  static_assert(std::tuple_size_v<detail::MkTaskParts<F>> == 3,
-                "mkTaskE's function returns std::tuple{behavior, exit event, error event}");
+  static_assert(std::tuple_size_v<detail::MkTaskParts<F>> == 3, "mkTaskE's function returns std::tuple{behavior, exit event, error event}");
   return mkTask(std::move(f), loc);
 }
 

@@ -34,9 +34,18 @@ class TaskState {
   [[nodiscard]] double startTime() const { return startTime_; }
 
   /// Changes the recorded start pose and time (for setTaskState).
-  TaskState& setInitialPlace(const Point2& p) { place_ = p; return *this; }
-  TaskState& setInitialOrientation(double radians) { orientation_ = radians; return *this; }
-  TaskState& setStartTime(double seconds) { startTime_ = seconds; return *this; }
+  TaskState& setInitialPlace(const Point2& p) {
+    place_ = p;
+    return *this;
+  }
+  TaskState& setInitialOrientation(double radians) {
+    orientation_ = radians;
+    return *this;
+  }
+  TaskState& setStartTime(double seconds) {
+    startTime_ = seconds;
+    return *this;
+  }
 
  private:
   Robot robot_;

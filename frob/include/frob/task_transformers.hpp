@@ -25,8 +25,7 @@ class ScopeEntry {
 
 class PublishedPicture {
  public:
-  PublishedPicture(std::shared_ptr<DebugChannel> debug, Behavior<Picture> p)
-      : debug_(std::move(debug)), handle_(debug_->publish(std::move(p))) {}
+  PublishedPicture(std::shared_ptr<DebugChannel> debug, Behavior<Picture> p) : debug_(std::move(debug)), handle_(debug_->publish(std::move(p))) {}
   PublishedPicture(const PublishedPicture&) = delete;
   PublishedPicture& operator=(const PublishedPicture&) = delete;
   ~PublishedPicture() { debug_->withdraw(handle_); }
@@ -91,8 +90,7 @@ Task<A, ResultOf<B>> resultOf(Task<A, B> body) {
 /// handler, as the paper's `bug` does, runs in constant memory.
 template <class A, class B, class H>
   requires std::invocable<H&, const RoboErr&>
-[[nodiscard]] Task<A, B> taskCatch(Task<A, B> t, H handler,
-                                   std::source_location loc = std::source_location::current()) {
+[[nodiscard]] Task<A, B> taskCatch(Task<A, B> t, H handler, std::source_location loc = std::source_location::current()) {
   std::string inner = t.name();
   return [](Task<A, B> body, H h) -> Task<A, B> {
     std::optional<RoboErr> caught;
@@ -107,18 +105,20 @@ template <class A, class B, class H>
       caught = e;
     }
     co_await become(Task<A, B>(std::invoke(h, *caught)));
-  }(std::move(t), std::move(handler)).at(loc).named("taskCatch(" + inner + ")");
+  }(std::move(t), std::move(handler))
+                                         .at(loc)
+                                         .named("taskCatch(" + inner + ")");
 }
 
 /// The paper's addError: `error` fails every subtask of `t` while `t` runs (scoped).
 template <class A, class B>
-[[nodiscard]] Task<A, B> addError(Event<RoboErr> error, Task<A, B> t,
-                                  std::source_location loc = std::source_location::current()) {
+[[nodiscard]] Task<A, B> addError(Event<RoboErr> error, Task<A, B> t, std::source_location loc = std::source_location::current()) {
   std::string name = "addError(" + t.name() + ")";
   auto asException = error.map([](const RoboErr& e) { return std::make_exception_ptr(e); });
-  return detail::scoped(std::move(t), [asException](detail::RunContext<A>& ctx) {
-           return std::make_unique<detail::ScopeEntry<Event<std::exception_ptr>>>(ctx.interrupts, asException);
-         })
+  return detail::scoped(std::move(t),
+                        [asException](detail::RunContext<A>& ctx) {
+                          return std::make_unique<detail::ScopeEntry<Event<std::exception_ptr>>>(ctx.interrupts, asException);
+                        })
       .at(loc)
       .named(std::move(name));
 }
@@ -134,9 +134,7 @@ template <class A, class B>
     std::int64_t id = ctx->nextScope++;
     char reason[64];
     std::snprintf(reason, sizeof reason, "time limit of %.3g s reached", limit);
-    auto expiry = after(limit).map([id, why = std::string(reason)] {
-      return std::make_exception_ptr(detail::ScopeSignal{id, why});
-    });
+    auto expiry = after(limit).map([id, why = std::string(reason)] { return std::make_exception_ptr(detail::ScopeSignal{id, why}); });
     std::optional<ResultOf<B>> result;
     try {
       detail::ScopeEntry<Event<std::exception_ptr>> scope(ctx->interrupts, expiry);
@@ -145,22 +143,21 @@ template <class A, class B>
       if (s.scope != id) throw;
     }
     co_return result;
-  }(std::move(t), seconds).at(loc).named(std::move(name));
+  }(std::move(t), seconds)
+                                                  .at(loc)
+                                                  .named(std::move(name));
 }
 
 /// The paper's withExit (an untilB around `t`): runs `t` until `exit` occurs, then aborts it and
 /// returns the event's value, also when `t` ends at that very instant. If `t` ends first, that is
 /// an error (RoboErr).
 template <class X, class A, class B>
-[[nodiscard]] Task<A, X> withExit(Event<X> exit, Task<A, B> t,
-                                  std::source_location loc = std::source_location::current()) {
+[[nodiscard]] Task<A, X> withExit(Event<X> exit, Task<A, B> t, std::source_location loc = std::source_location::current()) {
   std::string name = "withExit(" + t.name() + ")";
   return [](Event<X> e, Task<A, B> body) -> Task<A, X> {
     detail::RunContext<A>* ctx = co_await detail::GetContext{};
     std::int64_t id = ctx->nextScope++;
-    auto signal = e.map([id](const X& x) {
-      return std::make_exception_ptr(detail::ScopeExit<X>{{id, "its withExit event occurred"}, x});
-    });
+    auto signal = e.map([id](const X& x) { return std::make_exception_ptr(detail::ScopeExit<X>{{id, "its withExit event occurred"}, x}); });
     std::string bodyName = body.name();
     std::optional<X> value;
     try {
@@ -174,7 +171,9 @@ template <class X, class A, class B>
     if (!value) value = e.at(*ctx->now);
     if (!value) throw RoboErr("task '" + bodyName + "' ended before its withExit event occurred");
     co_return std::move(*value);
-  }(std::move(exit), std::move(t)).at(loc).named(std::move(name));
+  }(std::move(exit), std::move(t))
+                                                .at(loc)
+                                                .named(std::move(name));
 }
 
 /// The paper's withB: runs `t` with the behavior `f(state)` started beside it, and returns
@@ -190,11 +189,12 @@ template <class F, class A, class B>
     const TaskState start = ctx->state;  // a copy: the context's state moves on with each subtask
     Behavior<C> c = toBehavior(std::invoke(make, start));
     c.at(*ctx->now);  // it starts with the task
-    detail::ScopeEntry<std::function<void(const Instant&)>> watch(ctx->watchers,
-                                                                  [c](const Instant& now) { c.at(now); });
+    detail::ScopeEntry<std::function<void(const Instant&)>> watch(ctx->watchers, [c](const Instant& now) { c.at(now); });
     ResultOf<B> r = co_await detail::resultOf(std::move(body)).quiet();
     co_return std::pair<ResultOf<B>, C>(std::move(r), c.at(*ctx->now));
-  }(std::move(f), std::move(t)).at(loc).named(std::move(name));
+  }(std::move(f), std::move(t))
+                                            .at(loc)
+                                            .named(std::move(name));
 }
 
 /// The paper's withMyResult: the task `f(mine)` where `mine` is that task's own output, one
@@ -212,7 +212,9 @@ template <class F>
     } else {
       co_return co_await std::invoke(make, mine);
     }
-  }(std::move(f)).at(loc).named("withMyResult");
+  }(std::move(f))
+                           .at(loc)
+                           .named("withMyResult");
 }
 
 /// The paper's withFilter: every output of `t` and its subtasks passes through `f`, either a
@@ -230,21 +232,19 @@ template <class F, class A, class B>
   } else {
     filter = [f](Behavior<A> b) { return Behavior<A>(lift(f, b)); };
   }
-  return detail::scoped(std::move(t), [filter](detail::RunContext<A>& ctx) {
-           return std::make_unique<detail::ScopeEntry<std::function<Behavior<A>(Behavior<A>)>>>(ctx.filters, filter);
-         })
+  return detail::scoped(std::move(t),
+                        [filter](detail::RunContext<A>& ctx) {
+                          return std::make_unique<detail::ScopeEntry<std::function<Behavior<A>(Behavior<A>)>>>(ctx.filters, filter);
+                        })
       .at(loc)
       .named(std::move(name));
 }
 
 /// The paper's withPicture: `p` is drawn (in world coordinates) while `t` runs.
 template <class A, class B>
-[[nodiscard]] Task<A, B> withPicture(Behavior<Picture> p, Task<A, B> t,
-                                     std::source_location loc = std::source_location::current()) {
+[[nodiscard]] Task<A, B> withPicture(Behavior<Picture> p, Task<A, B> t, std::source_location loc = std::source_location::current()) {
   std::string name = "withPicture(" + t.name() + ")";
-  return detail::scoped(std::move(t), [p](detail::RunContext<A>& ctx) {
-           return std::make_unique<detail::PublishedPicture>(ctx.debug, p);
-         })
+  return detail::scoped(std::move(t), [p](detail::RunContext<A>& ctx) { return std::make_unique<detail::PublishedPicture>(ctx.debug, p); })
       .at(loc)
       .named(std::move(name));
 }
@@ -252,8 +252,7 @@ template <class A, class B>
 /// Plots `b` under `name` while `t` runs: `frob run --plot` charts it beside the front sonar and
 /// the wheels (e.g. withPlot("left", sonar(r, 4), followWall())).
 template <class A, class B>
-[[nodiscard]] Task<A, B> withPlot(std::string name, Behavior<double> b, Task<A, B> t,
-                                  std::source_location loc = std::source_location::current()) {
+[[nodiscard]] Task<A, B> withPlot(std::string name, Behavior<double> b, Task<A, B> t, std::source_location loc = std::source_location::current()) {
   return withPicture(lift([name = std::move(name)](double v) { return plotValue(name, v); }, std::move(b)), std::move(t), loc);
 }
 

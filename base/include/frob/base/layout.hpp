@@ -14,20 +14,20 @@ inline constexpr const char* kSdkIncludeDir = "/frob-sdk/include";
 
 /// The folders and files frob reads at run time.
 struct Layout {
-  bool installed = false;                  ///< true for an installed program, false in the build tree
-  std::filesystem::path prefix;            ///< the installed prefix; the build tree's source folder otherwise
-  std::filesystem::path sourceTree;        ///< the source tree; empty when installed
-  std::filesystem::path worlds;            ///< the reference world files
-  std::filesystem::path models;            ///< robot.obj
-  std::filesystem::path examples;          ///< the numbered example controllers' sources
-  std::filesystem::path exampleModules;    ///< the examples prebuilt, one stem.so each
-  std::filesystem::path assignments;       ///< one folder per assignment
-  std::filesystem::path studentTemplate;   ///< the student project template
-  std::filesystem::path includeDir;        ///< frob's headers (the folder holding frob/)
-  std::filesystem::path precompiledHeader; ///< frob.hpp precompiled as seen through headerOverlay
-  std::filesystem::path headerOverlay;     ///< clang VFS overlay mapping kSdkIncludeDir to includeDir
-  std::filesystem::path controllerHost;    ///< frob-controller-host
-  std::filesystem::path jail;              ///< frob-jail
+  bool installed = false;                   ///< true for an installed program, false in the build tree
+  std::filesystem::path prefix;             ///< the installed prefix; the build tree's source folder otherwise
+  std::filesystem::path sourceTree;         ///< the source tree; empty when installed
+  std::filesystem::path worlds;             ///< the reference world files
+  std::filesystem::path models;             ///< robot.obj
+  std::filesystem::path examples;           ///< the numbered example controllers' sources
+  std::filesystem::path exampleModules;     ///< the examples prebuilt, one stem.so each
+  std::filesystem::path assignments;        ///< one folder per assignment
+  std::filesystem::path studentTemplate;    ///< the student project template
+  std::filesystem::path includeDir;         ///< frob's headers (the folder holding frob/)
+  std::filesystem::path precompiledHeader;  ///< frob.hpp precompiled as seen through headerOverlay
+  std::filesystem::path headerOverlay;      ///< clang VFS overlay mapping kSdkIncludeDir to includeDir
+  std::filesystem::path controllerHost;     ///< frob-controller-host
+  std::filesystem::path jail;               ///< frob-jail
 };
 
 /// The layout of the running program: the installed one when the program sits in the bin folder of

@@ -3,8 +3,8 @@
 /// against the project's headers into a shared object, cached by content, then run in a sandboxed
 /// controller host (isolation.hpp) or, for trusted code, loaded into this process.
 
-#include "frob/controller.hpp"
 #include "frob/base/result.hpp"
+#include "frob/controller.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -15,12 +15,12 @@ namespace frob::course {
 
 /// How controller files are compiled. compilerSetup() gives the one the project was built with.
 struct CompilerSetup {
-  std::string compiler;              ///< the C++ compiler, as found on PATH or absolute
-  std::vector<std::string> flags;    ///< language, optimisation, sanitizer and include flags (the project's ABI)
-  std::string precompiledHeader;     ///< frob.hpp precompiled with `flags`; empty or missing: compile without
-  std::vector<std::string> reads;    ///< files and folders the compiler reads besides the system's and its -I folders
-  std::filesystem::path cacheDir;    ///< where compiled controllers are kept, named by a hash of what made them
-  double seconds = 120.0;            ///< wall-clock and CPU time a compile may take
+  std::string compiler;                    ///< the C++ compiler, as found on PATH or absolute
+  std::vector<std::string> flags;          ///< language, optimisation, sanitizer and include flags (the project's ABI)
+  std::string precompiledHeader;           ///< frob.hpp precompiled with `flags`; empty or missing: compile without
+  std::vector<std::string> reads;          ///< files and folders the compiler reads besides the system's and its -I folders
+  std::filesystem::path cacheDir;          ///< where compiled controllers are kept, named by a hash of what made them
+  double seconds = 120.0;                  ///< wall-clock and CPU time a compile may take
   std::uint64_t memoryBytes = 4ULL << 30;  ///< address space of the compiler
 };
 
@@ -49,8 +49,7 @@ struct LoadedController {
 /// Compiles `source` unless the cache already holds it. The compiler runs confined: it reads only
 /// the system's headers, frob's, and the source's own folder, within time and memory limits. On a
 /// compile error the error names the file; the compiler's messages go to `messages`, or to stderr.
-[[nodiscard]] Result<CompiledController> compileControllerFile(const std::filesystem::path& source,
-                                                               const CompilerSetup& setup = compilerSetup(),
+[[nodiscard]] Result<CompiledController> compileControllerFile(const std::filesystem::path& source, const CompilerSetup& setup = compilerSetup(),
                                                                std::string* messages = nullptr);
 /// Loads `compiled` into this process, where its code runs unconfined (trusted code only). Its
 /// module stays loaded for the life of the process.

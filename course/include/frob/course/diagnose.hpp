@@ -32,8 +32,7 @@ class Diagnosis {
   void taskEnded(std::size_t i, const TaskRecord& task);
   /// What went wrong for robot `i` (named `name`), one sentence each; `running` are its tasks still
   /// running at `end`. Empty when nothing common went wrong.
-  [[nodiscard]] std::vector<std::string> hints(std::size_t i, const std::string& name, const std::vector<TaskRecord>& running,
-                                               double end) const;
+  [[nodiscard]] std::vector<std::string> hints(std::size_t i, const std::string& name, const std::vector<TaskRecord>& running, double end) const;
 
  private:
   struct Impl;

@@ -22,30 +22,30 @@ namespace frob::course {
 /// How to grade.
 struct GradeDef {
   Rubric rubric;
-  std::string assignment;               ///< its name, for reports
-  std::string secret;                   ///< the instructor's secret for hidden seeds; "" when none is given
-  bool visibleOnly = false;             ///< grade only the visible checks (a student checking locally)
-  IsolationDef isolation;               ///< the controller host's limits
-  std::filesystem::path logs;           ///< a folder for each run's wheel log (for --replay); empty: none
+  std::string assignment;      ///< its name, for reports
+  std::string secret;          ///< the instructor's secret for hidden seeds; "" when none is given
+  bool visibleOnly = false;    ///< grade only the visible checks (a student checking locally)
+  IsolationDef isolation;      ///< the controller host's limits
+  std::filesystem::path logs;  ///< a folder for each run's wheel log (for --replay); empty: none
   CompilerSetup compiler = compilerSetup();
 };
 
 /// One run of a check: a world with a seed.
 struct RunGrade {
-  std::string world;                    ///< as the rubric names it
+  std::string world;  ///< as the rubric names it
   std::uint64_t seed = 0;
   bool passed = false;
-  std::string reason;                   ///< why it failed, in words a student can act on; "" when it passed
-  std::vector<std::string> hints;       ///< what common mistake the run shows, naming the fix (course/diagnose.hpp)
-  std::uint64_t trajectoryHash = 0;     ///< of every true pose (replays must match it)
-  std::filesystem::path log;            ///< its wheel log, when logs are kept
+  std::string reason;                ///< why it failed, in words a student can act on; "" when it passed
+  std::vector<std::string> hints;    ///< what common mistake the run shows, naming the fix (course/diagnose.hpp)
+  std::uint64_t trajectoryHash = 0;  ///< of every true pose (replays must match it)
+  std::filesystem::path log;         ///< its wheel log, when logs are kept
 };
 
 /// One check's outcome: the fraction of its runs that passed, times its points.
 struct CheckGrade {
   std::string name;
-  double points = 0.0;                  ///< at most
-  double score = 0.0;                   ///< points × passed runs / runs
+  double points = 0.0;  ///< at most
+  double score = 0.0;   ///< points × passed runs / runs
   Visibility visibility = Visibility::Visible;
   std::vector<RunGrade> runs;
   /// The reasons of the failed runs, one line each ("in maze, seed 3: touched a wall at 41.2 s at (3.1, 4.5)"),
@@ -56,11 +56,11 @@ struct CheckGrade {
 /// A submission's grade.
 struct Grade {
   std::string assignment;
-  std::string submission;               ///< the file, as given
-  std::string compileError;             ///< the compiler's complaint when it did not compile (then every check scores 0)
+  std::string submission;    ///< the file, as given
+  std::string compileError;  ///< the compiler's complaint when it did not compile (then every check scores 0)
   std::vector<CheckGrade> checks;
-  std::vector<std::string> notes;       ///< e.g. output that was cut, sandbox layers missing
-  double wallSeconds = 0.0;             ///< how long grading took (the only field that differs between two gradings)
+  std::vector<std::string> notes;  ///< e.g. output that was cut, sandbox layers missing
+  double wallSeconds = 0.0;        ///< how long grading took (the only field that differs between two gradings)
   [[nodiscard]] double score() const;
   [[nodiscard]] double maxScore() const;
 };
@@ -81,8 +81,8 @@ struct Grade {
 
 /// One of the course's assignments (a folder of assignments/ with a rubric.toml).
 struct Assignment {
-  std::string name;              ///< its folder's name
-  std::string title;             ///< the rubric's title, or why the rubric cannot be read
+  std::string name;   ///< its folder's name
+  std::string title;  ///< the rubric's title, or why the rubric cannot be read
   std::filesystem::path rubric;
 };
 /// The course's assignments, by name.
@@ -93,8 +93,8 @@ struct Assignment {
 [[nodiscard]] Result<std::filesystem::path> findRubric(const std::string& name);
 
 /// Runs `run` of check `check` again with a video and plots of it (`outputs`), for a report.
-[[nodiscard]] Status filmRun(const GradeDef& def, const std::filesystem::path& submission, const std::string& check,
-                             const RunGrade& run, const RunOutputs& outputs);
+[[nodiscard]] Status filmRun(const GradeDef& def, const std::filesystem::path& submission, const std::string& check, const RunGrade& run,
+                             const RunOutputs& outputs);
 
 /// What replaying a wheel log gives: the run's verdict and trajectory, recomputed.
 struct Replay {

@@ -38,8 +38,7 @@ namespace frob::course {
 
 /// Merges gradebooks written by writeGradebook (one per shard of a class) into `out`: their headers
 /// must be identical and no submission may appear twice. Returns the submissions written, in order.
-[[nodiscard]] Result<std::vector<std::string>> mergeGradebooks(const std::vector<std::filesystem::path>& shards,
-                                                               const std::filesystem::path& out);
+[[nodiscard]] Result<std::vector<std::string>> mergeGradebooks(const std::vector<std::filesystem::path>& shards, const std::filesystem::path& out);
 
 /// Media embedded in the HTML report; an empty path means none.
 struct HtmlMedia {

@@ -11,9 +11,9 @@ namespace frob::course {
 
 /// What goes into the zip.
 struct GradescopeZipDef {
-  std::filesystem::path rubric;   ///< the assignment's rubric.toml; its whole folder goes in
-  std::string assignment;         ///< the assignment's name (its folder under assignments/ in the zip)
-  std::string secret;             ///< the instructor's secret for hidden seeds, kept in the zip (which only staff see); "" for none
+  std::filesystem::path rubric;  ///< the assignment's rubric.toml; its whole folder goes in
+  std::string assignment;        ///< the assignment's name (its folder under assignments/ in the zip)
+  std::string secret;            ///< the instructor's secret for hidden seeds, kept in the zip (which only staff see); "" for none
 };
 
 /// Writes the zip: frob's sources (without tests), the assignment, setup.sh and run_autograder.

@@ -7,9 +7,9 @@
 ///   worlds::Run run(world, {}, (*host)->driver({0}, /*pictures=*/false));
 ///   run.runUntil(60);   // a crash, a hang or a forbidden call fails the robot with a reason
 
+#include "frob/base/result.hpp"
 #include "frob/controller.hpp"
 #include "frob/course/controller_file.hpp"
-#include "frob/base/result.hpp"
 #include "frob/sandbox/confine.hpp"
 #include "frob/worlds/run.hpp"
 
@@ -25,13 +25,13 @@ namespace frob::course {
 
 /// The limits of a controller host and how it waits for its turn.
 struct IsolationDef {
-  double stepSeconds = 1.0;                 ///< wall-clock time one step of all its robots may take
-  double startSeconds = 10.0;               ///< to load the modules (global constructors run) and answer
-  double runSeconds = 600.0;                ///< wall-clock time of the whole run, and its CPU limit
-  std::uint64_t memoryBytes = 1ULL << 30;   ///< its address space
-  std::uint64_t outputBytes = 1ULL << 20;   ///< of its stdout and stderr passed on; the rest is dropped
-  std::uint64_t fileBytes = 16ULL << 20;    ///< largest file it may write in its scratch folder
-  std::uint64_t spinNanoseconds = 50'000;   ///< each side spins this long before it sleeps; 0 when runs share the cores
+  double stepSeconds = 1.0;                      ///< wall-clock time one step of all its robots may take
+  double startSeconds = 10.0;                    ///< to load the modules (global constructors run) and answer
+  double runSeconds = 600.0;                     ///< wall-clock time of the whole run, and its CPU limit
+  std::uint64_t memoryBytes = 1ULL << 30;        ///< its address space
+  std::uint64_t outputBytes = 1ULL << 20;        ///< of its stdout and stderr passed on; the rest is dropped
+  std::uint64_t fileBytes = 16ULL << 20;         ///< largest file it may write in its scratch folder
+  std::uint64_t spinNanoseconds = 50'000;        ///< each side spins this long before it sleeps; 0 when runs share the cores
   std::function<void(std::string_view)> output;  ///< where its output goes; empty: this process's stderr
 };
 
@@ -42,8 +42,7 @@ class ControllerHost : public std::enable_shared_from_this<ControllerHost> {
   /// Starts a sandboxed host that loads `modules` (compiled controller files, named in messages
   /// by `sources`). Fails with a reason when one cannot be loaded or its global constructors fail.
   [[nodiscard]] static Result<std::shared_ptr<ControllerHost>> start(const std::vector<std::filesystem::path>& modules,
-                                                                     const std::vector<std::string>& sources,
-                                                                     IsolationDef def = {});
+                                                                     const std::vector<std::string>& sources, IsolationDef def = {});
   ~ControllerHost();
   ControllerHost(const ControllerHost&) = delete;
   ControllerHost& operator=(const ControllerHost&) = delete;

@@ -4,8 +4,8 @@
 /// vocabulary that the grader computes from the true trajectory. The format is described in
 /// course/grading.md.
 
-#include "frob/course/generate.hpp"
 #include "frob/base/result.hpp"
+#include "frob/course/generate.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -38,7 +38,7 @@ struct Criterion {
   std::string point = "goal";
   std::vector<std::string> points;
   double distance = 0.0;
-  double seconds = 0.0;      ///< 0: by the end of the run
+  double seconds = 0.0;  ///< 0: by the end of the run
   double speed = 0.02;
   int count = 0;
   double tolerance = 0.0;
@@ -47,22 +47,22 @@ struct Criterion {
   double cell = 0.5;
   double ratio = 1.0;
   std::string value;
-  int line = 0;              ///< where the rubric gives it
+  int line = 0;  ///< where the rubric gives it
 };
 
 /// A world a check runs in: a reference world, a file beside the rubric, or a generated world.
 struct WorldRef {
-  std::string name;                     ///< as reports name it: "maze", "worlds/room.toml", "generated maze, seed 3"
-  std::filesystem::path file;           ///< the file, when it is not a reference world
-  std::optional<WorldKind> generated;   ///< the kind, when it is generated
-  std::uint64_t worldSeed = 0;          ///< the generator's seed, when it is generated
+  std::string name;                    ///< as reports name it: "maze", "worlds/room.toml", "generated maze, seed 3"
+  std::filesystem::path file;          ///< the file, when it is not a reference world
+  std::optional<WorldKind> generated;  ///< the kind, when it is generated
+  std::uint64_t worldSeed = 0;         ///< the generator's seed, when it is generated
 };
 
 /// The worlds a check generates: of one kind, from given seeds and from seeds of the instructor's secret.
 struct GeneratedWorlds {
   WorldKind kind = WorldKind::Obstacles;
   std::vector<std::uint64_t> seeds;
-  int secret = 0;                       ///< how many more, drawn from the secret (named without their seed)
+  int secret = 0;  ///< how many more, drawn from the secret (named without their seed)
 };
 
 /// One check: points for meeting every criterion, in every world with every seed.
@@ -70,11 +70,11 @@ struct Check {
   std::string name;
   double points = 1.0;
   Visibility visibility = Visibility::Visible;
-  std::vector<WorldRef> worlds;       ///< the worlds it names (worldsOf() adds the generated ones)
+  std::vector<WorldRef> worlds;  ///< the worlds it names (worldsOf() adds the generated ones)
   std::optional<GeneratedWorlds> generated;
-  std::vector<std::uint64_t> seeds;   ///< simulation seeds; empty: each world's own
-  int secretSeeds = 0;                ///< more seeds, drawn from the instructor's secret
-  double seconds = 60.0;              ///< simulated seconds of each run
+  std::vector<std::uint64_t> seeds;  ///< simulation seeds; empty: each world's own
+  int secretSeeds = 0;               ///< more seeds, drawn from the instructor's secret
+  double seconds = 60.0;             ///< simulated seconds of each run
   std::vector<Criterion> criteria;
   int line = 0;
 };
@@ -82,8 +82,8 @@ struct Check {
 /// An assignment's rubric.
 struct Rubric {
   std::string title;
-  std::filesystem::path file;        ///< the rubric file
-  double dt = 0.01;                  ///< the simulation step of every run
+  std::filesystem::path file;  ///< the rubric file
+  double dt = 0.01;            ///< the simulation step of every run
   std::vector<Check> checks;
   /// Total points.
   [[nodiscard]] double points() const;

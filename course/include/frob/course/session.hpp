@@ -55,30 +55,30 @@ inline constexpr double kGoalRadius = 0.5;
 
 /// How one robot did.
 struct RobotSummary {
-  std::string name;                   ///< the robot's name in the world
-  std::string controller;             ///< its controller's function and file
-  double distance = 0.0;              ///< length of its true path, metres
-  int collisions = 0;                 ///< bumper contacts
-  std::optional<double> goalDistance; ///< its closest true approach to the goal, metres; empty without a goal
-  std::optional<double> goalTime;     ///< when it first came within kGoalRadius of the goal, seconds
-  std::optional<double> finishedAt;   ///< when its controller's task returned, seconds
-  std::vector<TaskRecord> lastTasks;  ///< the last tasks that ended, oldest first, then those still running
-  std::string failure;                ///< why its controller failed; empty when it did not
-  std::vector<std::string> hints;     ///< what went wrong that is common, in words that name the fix
+  std::string name;                    ///< the robot's name in the world
+  std::string controller;              ///< its controller's function and file
+  double distance = 0.0;               ///< length of its true path, metres
+  int collisions = 0;                  ///< bumper contacts
+  std::optional<double> goalDistance;  ///< its closest true approach to the goal, metres; empty without a goal
+  std::optional<double> goalTime;      ///< when it first came within kGoalRadius of the goal, seconds
+  std::optional<double> finishedAt;    ///< when its controller's task returned, seconds
+  std::vector<TaskRecord> lastTasks;   ///< the last tasks that ended, oldest first, then those still running
+  std::string failure;                 ///< why its controller failed; empty when it did not
+  std::vector<std::string> hints;      ///< what went wrong that is common, in words that name the fix
 };
 
 /// What a run did.
 struct Summary {
-  std::string world;                   ///< the world's name as given
-  std::uint64_t seed = 0;              ///< the seed used
-  double dt = 0.0;                     ///< step, seconds
-  double simulatedSeconds = 0.0;       ///< logical time reached
-  std::int64_t steps = 0;              ///< steps taken
-  std::uint64_t trajectoryHash = 0;    ///< hash of every true pose (equal runs, equal hashes)
-  std::vector<RobotSummary> robots;    ///< one per robot
-  std::vector<std::string> written;    ///< the files written, in order
-  std::vector<std::string> notes;      ///< what is worth saying besides, e.g. that output was cut
-  std::vector<sandbox::Layer> sandbox; ///< the controller host's layers (empty when not isolated)
+  std::string world;                    ///< the world's name as given
+  std::uint64_t seed = 0;               ///< the seed used
+  double dt = 0.0;                      ///< step, seconds
+  double simulatedSeconds = 0.0;        ///< logical time reached
+  std::int64_t steps = 0;               ///< steps taken
+  std::uint64_t trajectoryHash = 0;     ///< hash of every true pose (equal runs, equal hashes)
+  std::vector<RobotSummary> robots;     ///< one per robot
+  std::vector<std::string> written;     ///< the files written, in order
+  std::vector<std::string> notes;       ///< what is worth saying besides, e.g. that output was cut
+  std::vector<sandbox::Layer> sandbox;  ///< the controller host's layers (empty when not isolated)
   /// True when a controller failed.
   [[nodiscard]] bool failed() const;
 };

@@ -69,12 +69,13 @@ class NodeBase {
   // Computes the value at `now` and holds it; called only when stamp() != now.id.
   virtual void refresh(const Instant& now) = 0;
   // refresh, given now.id, which a plan keeps in a register.
-  void refreshAt(const Instant& now, std::uint64_t id) { (void)id; refresh(now); }
+  void refreshAt(const Instant& now, std::uint64_t id) {
+    (void)id;
+    refresh(now);
+  }
   // A plan's step for this node (see PlanStep). A `checked` one first skips a node already up to
   // date (one that other graphs share).
-  [[nodiscard]] virtual PlanStep::Run planStep(bool checked) const {
-    return checked ? &runStep<NodeBase, true> : &runStep<NodeBase, false>;
-  }
+  [[nodiscard]] virtual PlanStep::Run planStep(bool checked) const { return checked ? &runStep<NodeBase, true> : &runStep<NodeBase, false>; }
   // True if the node reads the same inputs at every instant (strictInputs lists them).
   [[nodiscard]] virtual bool strict() const { return false; }
   // Appends the nodes a strict node reads at every instant, in the order it reads them. Other
@@ -154,14 +155,14 @@ class StrictNode : public BehaviorNode<T> {
     this->stamp_ = id;
   }
   [[nodiscard]] bool strict() const final { return true; }
-  [[nodiscard]] PlanStep::Run planStep(bool checked) const final {
-    return checked ? &runStep<StrictNode, true> : &runStep<StrictNode, false>;
-  }
+  [[nodiscard]] PlanStep::Run planStep(bool checked) const final { return checked ? &runStep<StrictNode, true> : &runStep<StrictNode, false>; }
 
  protected:
   T compute(const Instant& now) final {
-    if (first_ == nullptr) [[unlikely]] plan();
-    if (planCutShort.load(std::memory_order_relaxed) == now.id) [[unlikely]] return computeChecked(now);
+    if (first_ == nullptr) [[unlikely]]
+      plan();
+    if (planCutShort.load(std::memory_order_relaxed) == now.id) [[unlikely]]
+      return computeChecked(now);
     try {
       first_->run(first_, now, now.id);
       return static_cast<Derived*>(this)->computeFresh(now);
@@ -185,7 +186,7 @@ class StrictNode : public BehaviorNode<T> {
     }
     return static_cast<Derived*>(this)->computeFresh(now);
   }
-  std::vector<PlanStep> plan_;        // nodes owned by this node's inputs, which it keeps alive
+  std::vector<PlanStep> plan_;       // nodes owned by this node's inputs, which it keeps alive
   const PlanStep* first_ = nullptr;  // where the plan starts; none before the first sample
 };
 

@@ -82,7 +82,10 @@ std::string printable(const R& v) {
     return os.str();
   } else if constexpr (requires { toString(v); }) {
     return toString(v);
-  } else if constexpr (requires { v.has_value(); *v; }) {
+  } else if constexpr (requires {
+                         v.has_value();
+                         *v;
+                       }) {
     return v.has_value() ? printable(*v) : std::string("none");
   } else {
     return typeName<R>();
@@ -131,8 +134,8 @@ class DelayedNode final : public BehaviorNode<A> {
 // An atomic task waiting in its runner for one of its events.
 template <class A>
 struct AtomicBase {
-  Behavior<A> output;               // its behavior, with the enclosing filters applied
-  std::coroutine_handle<> waiter;   // resumed when it ends
+  Behavior<A> output;              // its behavior, with the enclosing filters applied
+  std::coroutine_handle<> waiter;  // resumed when it ends
   const std::string* name = nullptr;
   // Its output at `now`, or null when it ended at `now` (its result or error is then stored).
   virtual const A* step(const Instant& now) = 0;
@@ -155,8 +158,8 @@ struct RunContext {
   std::vector<Event<std::exception_ptr>> interrupts;             // scoped errors and exits, innermost last
   std::vector<std::function<Behavior<A>(Behavior<A>)>> filters;  // withFilter, outermost first
   std::vector<std::function<void(const Instant&)>> watchers;     // sampled every instant (withB, withTask)
-  std::shared_ptr<OutputCell<A>> output;  // made when a task first reads its own output
-  std::exception_ptr origin;  // an unexpected exception, and the task it first left
+  std::shared_ptr<OutputCell<A>> output;                         // made when a task first reads its own output
+  std::exception_ptr origin;                                     // an unexpected exception, and the task it first left
   std::string originTask;
   std::int64_t nextScope = 0;
 
@@ -164,9 +167,7 @@ struct RunContext {
   void snapshot(const Instant& at) {
     now = &at;
     time = at.time;
-    state.setInitialPlace(state.robot().place().at(at))
-        .setInitialOrientation(state.robot().orientation().at(at))
-        .setStartTime(at.time);
+    state.setInitialPlace(state.robot().place().at(at)).setInitialOrientation(state.robot().orientation().at(at)).setStartTime(at.time);
   }
   // The run's output one instant late (withMyResult, withTask); the runner records it from now on.
   Behavior<A> delayedOutput() {
@@ -189,8 +190,7 @@ struct ResultSlot {
 
 template <class A>
 struct PromiseBase {
-  explicit PromiseBase(const std::source_location& loc)
-      : name(taskName(loc.function_name())), where(taskWhere(loc)) {
+  explicit PromiseBase(const std::source_location& loc) : name(taskName(loc.function_name())), where(taskWhere(loc)) {
     liveFrames.fetch_add(1, std::memory_order_relaxed);
   }
   PromiseBase(const PromiseBase&) = delete;
@@ -208,7 +208,8 @@ struct PromiseBase {
   void begin(RunContext<A>* c, std::coroutine_handle<> cont, std::int64_t parent, const PromiseBase* awaiting) {
     caller = awaiting;
     depth = caller == nullptr ? 0 : caller->depth + 1;
-    if (depth > kMaxTaskDepth) [[unlikely]] throwTooDeep();
+    if (depth > kMaxTaskDepth) [[unlikely]]
+      throwTooDeep();
     ctx = c;
     continuation = cont;
     parentRecord = parent;

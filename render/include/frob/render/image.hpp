@@ -11,9 +11,9 @@ namespace frob::render {
 
 /// An 8-bit RGBA image, top row first.
 struct Image {
-  int width = 0;                    ///< pixels
-  int height = 0;                   ///< pixels
-  std::vector<std::uint8_t> rgba;   ///< width * height * 4 bytes
+  int width = 0;                   ///< pixels
+  int height = 0;                  ///< pixels
+  std::vector<std::uint8_t> rgba;  ///< width * height * 4 bytes
   /// The 4 bytes of pixel (x, y), y counted down from the top.
   [[nodiscard]] const std::uint8_t* pixel(int x, int y) const { return &rgba[(static_cast<std::size_t>(y) * width + x) * 4]; }
 };

@@ -19,31 +19,31 @@ struct Sample {
 
 /// A named signal; samples in increasing time.
 struct Series {
-  std::string name;               ///< legend text, with its unit, e.g. "front sonar (m)"
-  std::vector<Sample> samples;    ///< increasing t
-  std::optional<Color> color;     ///< unset: picked from a palette by index
+  std::string name;             ///< legend text, with its unit, e.g. "front sonar (m)"
+  std::vector<Sample> samples;  ///< increasing t
+  std::optional<Color> color;   ///< unset: picked from a palette by index
 };
 
 /// One chart: series sharing a value axis.
 struct Plot {
-  std::string title;              ///< drawn at its top left; may be empty
-  std::vector<Series> series;     ///< drawn in order
-  std::optional<double> yMin;     ///< unset: from the data
-  std::optional<double> yMax;     ///< unset: from the data
+  std::string title;           ///< drawn at its top left; may be empty
+  std::vector<Series> series;  ///< drawn in order
+  std::optional<double> yMin;  ///< unset: from the data
+  std::optional<double> yMax;  ///< unset: from the data
 };
 
 /// An instant where a robot's task changed, marked as a vertical line.
 struct TaskMark {
-  double t = 0.0;                 ///< simulated time, seconds
-  std::string name;               ///< name of the task that starts
+  double t = 0.0;    ///< simulated time, seconds
+  std::string name;  ///< name of the task that starts
 };
 
 /// Charts stacked top to bottom over one shared time axis.
 struct PlotSet {
-  std::vector<Plot> plots;        ///< top to bottom
+  std::vector<Plot> plots;          ///< top to bottom
   std::vector<TaskMark> taskMarks;  ///< increasing t
-  double tStart = 0.0;            ///< left end of the time axis, seconds
-  double tEnd = 0.0;              ///< right end, seconds; if not above tStart, the last sample's time
+  double tStart = 0.0;              ///< left end of the time axis, seconds
+  double tEnd = 0.0;                ///< right end, seconds; if not above tStart, the last sample's time
 };
 
 /// Draw-everything cursor for renderPlots: all samples are shown.

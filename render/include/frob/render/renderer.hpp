@@ -2,10 +2,10 @@
 /// The offscreen renderer: FrameScenes (plus plots) to RGBA images. The top-down view and plots are
 /// rasterized on the CPU; the chase view goes through OSMesa (llvmpipe).
 
+#include "frob/base/result.hpp"
 #include "frob/geometry.hpp"
 #include "frob/render/image.hpp"
 #include "frob/render/plot.hpp"
-#include "frob/base/result.hpp"
 #include "frob/render/scene.hpp"
 
 #include <memory>
@@ -28,24 +28,24 @@ enum class PanelLayout {
 
 /// Everything fixed for the life of a renderer. Fill with designated initializers.
 struct RenderDef {
-  int width = 640;                       ///< frame width, pixels
-  int height = 480;                      ///< frame height, pixels
-  ViewMode view = ViewMode::TopDown;     ///< top-down or chase view
-  int chaseRobot = 0;                    ///< index of the robot the chase camera follows
+  int width = 640;                              ///< frame width, pixels
+  int height = 480;                             ///< frame height, pixels
+  ViewMode view = ViewMode::TopDown;            ///< top-down or chase view
+  int chaseRobot = 0;                           ///< index of the robot the chase camera follows
   PanelLayout layout = PanelLayout::WorldOnly;  ///< where plots go
-  double plotShare = 0.4;                ///< share of the width (PlotRight) or height (PlotBelow) for plots
-  bool hud = true;                       ///< draw time, tasks, wheels and front sonar over the world
-  bool grid = true;                      ///< 1 m grid with labels
-  bool sonar = true;                     ///< sonar cones with their readings
-  bool paths = true;                     ///< true path (solid) and odometry path (dashed)
-  double sonarHalfAngle = 0.13;          ///< half width of a drawn sonar cone, radians
-  double margin = 0.3;                   ///< space around the world bounds in the top-down view, metres
-  double wallHeight = 0.5;               ///< height of extruded walls in the chase view, metres
-  int textPixels = 13;                   ///< text size, pixels
-  std::string fontFile;                  ///< proportional font; empty: DejaVuSans from the build
-  std::string monoFontFile;              ///< fixed-width font for the HUD; empty: DejaVuSansMono
-  std::string robotModelFile;            ///< chase-view robot mesh (assimp); empty: robot.obj of frob::layout().models
-  int rasterThreads = 0;                 ///< chase view: llvmpipe threads (LP_NUM_THREADS, read at the process's first context); -1: leave it
+  double plotShare = 0.4;                       ///< share of the width (PlotRight) or height (PlotBelow) for plots
+  bool hud = true;                              ///< draw time, tasks, wheels and front sonar over the world
+  bool grid = true;                             ///< 1 m grid with labels
+  bool sonar = true;                            ///< sonar cones with their readings
+  bool paths = true;                            ///< true path (solid) and odometry path (dashed)
+  double sonarHalfAngle = 0.13;                 ///< half width of a drawn sonar cone, radians
+  double margin = 0.3;                          ///< space around the world bounds in the top-down view, metres
+  double wallHeight = 0.5;                      ///< height of extruded walls in the chase view, metres
+  int textPixels = 13;                          ///< text size, pixels
+  std::string fontFile;                         ///< proportional font; empty: DejaVuSans from the build
+  std::string monoFontFile;                     ///< fixed-width font for the HUD; empty: DejaVuSansMono
+  std::string robotModelFile;                   ///< chase-view robot mesh (assimp); empty: robot.obj of frob::layout().models
+  int rasterThreads = 0;                        ///< chase view: llvmpipe threads (LP_NUM_THREADS, read at the process's first context); -1: leave it
 };
 
 /// Checks a RenderDef without building anything heavy: sizes, fonts and (for Chase) the model.

@@ -38,9 +38,9 @@ struct RunViewDef {
   /// Values the plotted robot's tasks publish (withPlot) to chart, by name, one chart each as they
   /// first appear; unset: every one.
   std::optional<std::vector<std::string>> published;
-  double sampleSeconds = 0.05;     ///< least simulated time between plot samples, s (a chart is a few hundred pixels wide)
-  double pathSpacing = 0.05;       ///< least distance between kept path points, m (the newest position is always kept)
-  double plotSeconds = 0.0;        ///< right end of the plots' time axis, s (e.g. the run's length); 0: the latest sample
+  double sampleSeconds = 0.05;  ///< least simulated time between plot samples, s (a chart is a few hundred pixels wide)
+  double pathSpacing = 0.05;    ///< least distance between kept path points, m (the newest position is always kept)
+  double plotSeconds = 0.0;     ///< right end of the plots' time axis, s (e.g. the run's length); 0: the latest sample
 };
 
 /// The world's static shapes as the renderer draws them: segment and polyline walls become Walls,
@@ -77,15 +77,15 @@ class RunView {
   RunViewDef def_;
   FrameScene scene_;
   PlotSet plots_;
-  std::int64_t taken_ = 0;              // instants taken in so far
-  std::vector<char> pathHeadLoose_;     // per robot: the path's last point is the newest position, not a kept one
-  std::vector<char> odomHeadLoose_;     // the same for the odometry path
-  int frontSonar_ = -1;                 // index of the plotted robot's front sonar
-  std::optional<Point2> goal_;          // the goal the distance is measured to
+  std::int64_t taken_ = 0;           // instants taken in so far
+  std::vector<char> pathHeadLoose_;  // per robot: the path's last point is the newest position, not a kept one
+  std::vector<char> odomHeadLoose_;  // the same for the odometry path
+  int frontSonar_ = -1;              // index of the plotted robot's front sonar
+  std::optional<Point2> goal_;       // the goal the distance is measured to
   double lastSample_ = 0.0;
   bool sampled_ = false;
-  std::int64_t lastTaskId_ = -1;        // innermost running task of the plotted robot at the last update
-  struct Slot {                         // where each plotted signal goes
+  std::int64_t lastTaskId_ = -1;  // innermost running task of the plotted robot at the last update
+  struct Slot {                   // where each plotted signal goes
     std::size_t plot, series;
   };
   Slot sonarSlot_{}, goalSlot_{}, forwardSlot_{}, turnSlot_{};

@@ -26,9 +26,9 @@ struct Wall {
 
 /// A solid rectangular obstacle (a box).
 struct Block {
-  Point2 center = Point2::Zero();  ///< metres
+  Point2 center = Point2::Zero();     ///< metres
   Vec2 halfExtents = Vec2(0.5, 0.5);  ///< half width and half height before rotation, metres
-  double angle = 0.0;              ///< rotation, radians counter-clockwise
+  double angle = 0.0;                 ///< rotation, radians counter-clockwise
 };
 
 /// A solid round obstacle (a pillar).
@@ -39,36 +39,36 @@ struct Pillar {
 
 /// A labelled point drawn in a scene (a goal, a waypoint); a world's come from its worlds::Landmark list.
 struct Marker {
-  std::string name;                ///< label drawn beside it; may be empty
-  Point2 at = Point2::Zero();      ///< metres
-  std::optional<Color> color;      ///< unset: the renderer's default
+  std::string name;            ///< label drawn beside it; may be empty
+  Point2 at = Point2::Zero();  ///< metres
+  std::optional<Color> color;  ///< unset: the renderer's default
 };
 
 /// One robot at this instant, with what it has done so far.
 struct RobotView {
-  std::string name;                    ///< shown in the HUD; may be empty
-  Pose2 pose;                          ///< true pose
-  std::optional<Pose2> odometry;       ///< pose as the robot believes it; unset: not drawn
-  RobotSpec spec;                      ///< body radius and sonar directions
-  std::vector<double> sonar;           ///< one reading per spec.sonarAngles entry, metres; may be empty
-  std::vector<BumperHit> bumps;        ///< bumper contacts this step
-  std::vector<Point2> path;            ///< true positions so far, oldest first
-  std::vector<Point2> odometryPath;    ///< believed positions so far, oldest first
-  Picture picture;                     ///< what its current task publishes (withPicture), world coordinates
-  std::string task;                    ///< name of its current task; may be empty
-  Wheels wheels;                       ///< its wheel command this step
-  std::optional<Color> color;          ///< unset: picked from a palette by robot index
+  std::string name;                  ///< shown in the HUD; may be empty
+  Pose2 pose;                        ///< true pose
+  std::optional<Pose2> odometry;     ///< pose as the robot believes it; unset: not drawn
+  RobotSpec spec;                    ///< body radius and sonar directions
+  std::vector<double> sonar;         ///< one reading per spec.sonarAngles entry, metres; may be empty
+  std::vector<BumperHit> bumps;      ///< bumper contacts this step
+  std::vector<Point2> path;          ///< true positions so far, oldest first
+  std::vector<Point2> odometryPath;  ///< believed positions so far, oldest first
+  Picture picture;                   ///< what its current task publishes (withPicture), world coordinates
+  std::string task;                  ///< name of its current task; may be empty
+  Wheels wheels;                     ///< its wheel command this step
+  std::optional<Color> color;        ///< unset: picked from a palette by robot index
 };
 
 /// Everything drawn for one frame.
 struct FrameScene {
-  double time = 0.0;                   ///< simulated time, seconds
-  Bounds bounds;                       ///< the world's extent; the camera fits it
-  std::vector<Wall> walls;             ///< wall segments
-  std::vector<Block> blocks;           ///< filled rectangular obstacles
-  std::vector<Pillar> pillars;         ///< filled round obstacles
-  std::vector<Marker> points;      ///< labelled points
-  std::vector<RobotView> robots;       ///< robots, drawn in order
+  double time = 0.0;              ///< simulated time, seconds
+  Bounds bounds;                  ///< the world's extent; the camera fits it
+  std::vector<Wall> walls;        ///< wall segments
+  std::vector<Block> blocks;      ///< filled rectangular obstacles
+  std::vector<Pillar> pillars;    ///< filled round obstacles
+  std::vector<Marker> points;     ///< labelled points
+  std::vector<RobotView> robots;  ///< robots, drawn in order
 };
 
 /// The index of the sonar whose direction is closest to straight ahead, or -1 if there is none.

@@ -1,8 +1,8 @@
 #pragma once
 /// MP4 video (H.264, yuv420p) from RGBA frames, and the choice of which simulation steps become frames.
 
-#include "frob/render/image.hpp"
 #include "frob/base/result.hpp"
+#include "frob/render/image.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -13,13 +13,13 @@ namespace frob::render {
 
 /// What video to write. Fill with designated initializers.
 struct VideoDef {
-  std::string path;                 ///< output .mp4; written as path + ".partial" until close() succeeds
-  int width = 640;                  ///< pixels, even
-  int height = 480;                 ///< pixels, even
-  int fps = 30;                     ///< frames per second of the video
-  int crf = 23;                     ///< x264 constant rate factor: lower is better and larger
+  std::string path;                  ///< output .mp4; written as path + ".partial" until close() succeeds
+  int width = 640;                   ///< pixels, even
+  int height = 480;                  ///< pixels, even
+  int fps = 30;                      ///< frames per second of the video
+  int crf = 23;                      ///< x264 constant rate factor: lower is better and larger
   std::string preset = "ultrafast";  ///< x264 preset: ultrafast (fastest, larger files) ... veryslow
-  int threads = 2;                  ///< x264 encoding threads (frames are converted to YUV on the writer's thread); 0: x264 picks
+  int threads = 2;                   ///< x264 encoding threads (frames are converted to YUV on the writer's thread); 0: x264 picks
 };
 
 /// Checks a VideoDef without writing anything: sizes, frame rate, encoder, output directory.

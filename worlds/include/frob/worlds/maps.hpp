@@ -11,17 +11,17 @@ namespace frob::worlds {
 
 /// How to read a bitmap floor plan. Pixel rows run from the top of the image (largest y) down.
 struct BitmapDef {
-  double scale = 0.05;                  ///< metres per pixel
-  Point2 origin = Point2::Zero();       ///< world position of the image's bottom-left corner, metres
-  int threshold = 128;                  ///< grey levels below this (0..255) are walls
+  double scale = 0.05;             ///< metres per pixel
+  Point2 origin = Point2::Zero();  ///< world position of the image's bottom-left corner, metres
+  int threshold = 128;             ///< grey levels below this (0..255) are walls
 };
 
 /// How to slice a mesh (OBJ, STL, glTF, anything assimp reads) into wall segments.
 struct MeshDef {
-  double height = 0.3;                  ///< slicing height above the floor, metres (the sonar ring's height)
-  double scale = 1.0;                   ///< mesh units to metres
-  Point2 origin = Point2::Zero();       ///< world position of the mesh origin, metres
-  bool yUp = false;                     ///< the mesh's up axis is y (glTF convention) instead of z
+  double height = 0.3;             ///< slicing height above the floor, metres (the sonar ring's height)
+  double scale = 1.0;              ///< mesh units to metres
+  Point2 origin = Point2::Zero();  ///< world position of the mesh origin, metres
+  bool yUp = false;                ///< the mesh's up axis is y (glTF convention) instead of z
 };
 
 /// The dark pixels of the PNG at `file`, merged greedily into few solid rectangles (as Stage does).

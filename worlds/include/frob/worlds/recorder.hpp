@@ -3,8 +3,8 @@
 /// trajectory for golden tests.
 
 #include "frob/picture.hpp"
-#include "frob/worlds/fnv.hpp"
 #include "frob/robot_values.hpp"
+#include "frob/worlds/fnv.hpp"
 
 #include <cstdint>
 #include <span>
@@ -16,13 +16,13 @@ class Simulation;
 
 /// One robot at one recorded instant.
 struct RobotRecord {
-  Pose2 truePose;                  ///< where the robot really is
-  Pose2 odometry;                  ///< where it believes it is
-  Wheels wheels;                   ///< the command its controller gave at this instant
-  std::vector<double> sonar;       ///< ranges, metres
-  std::vector<BumperHit> bumps;    ///< bumper contacts that began in the step before
-  std::vector<char> keys;          ///< keys delivered at this instant
-  Picture picture;                 ///< the controller's debug overlay (filled by the run loop; may be empty)
+  Pose2 truePose;                ///< where the robot really is
+  Pose2 odometry;                ///< where it believes it is
+  Wheels wheels;                 ///< the command its controller gave at this instant
+  std::vector<double> sonar;     ///< ranges, metres
+  std::vector<BumperHit> bumps;  ///< bumper contacts that began in the step before
+  std::vector<char> keys;        ///< keys delivered at this instant
+  Picture picture;               ///< the controller's debug overlay (filled by the run loop; may be empty)
 };
 
 /// Every robot at one instant.

@@ -50,8 +50,7 @@ using DriverFactory = std::function<std::unique_ptr<ControllerDriver>(const Simu
 class Run {
  public:
   /// Builds the world and one controller per robot from `controllers` (one per robot, or one for all).
-  Run(const WorldDef& world, const SimOptions& options, const std::vector<Controller>& controllers,
-      RecorderOptions recording = {});
+  Run(const WorldDef& world, const SimOptions& options, const std::vector<Controller>& controllers, RecorderOptions recording = {});
   /// Builds the world, then its controllers' driver with `driver`.
   Run(const WorldDef& world, const SimOptions& options, const DriverFactory& driver, RecorderOptions recording = {});
 

@@ -28,10 +28,10 @@ namespace frob::worlds {
 
 /// Options of one run, beside the world itself.
 struct SimOptions {
-  double dt = 0.01;                       ///< fixed step, seconds (100 Hz)
-  std::optional<std::uint64_t> seed;      ///< replaces the world's seed when set
-  std::vector<KeyEventDef> keys;          ///< scripted keys added to the world's own
-  int threads = 1;                        ///< threads that sense robots in parallel (results do not depend on it)
+  double dt = 0.01;                   ///< fixed step, seconds (100 Hz)
+  std::optional<std::uint64_t> seed;  ///< replaces the world's seed when set
+  std::vector<KeyEventDef> keys;      ///< scripted keys added to the world's own
+  int threads = 1;                    ///< threads that sense robots in parallel (results do not depend on it)
 };
 
 /// A running world. Move-only; Box2D stays behind the implementation.

@@ -5,10 +5,11 @@
 
 #include "frob/geometry.hpp"
 
+#include <toml++/toml.h>
+
 #include <initializer_list>
 #include <string>
 #include <string_view>
-#include <toml++/toml.h>
 
 namespace frob::worlds {
 

@@ -78,14 +78,14 @@ struct Landmark {
 /// echo among its rays. A ray meeting a surface further than `specularCutoff` from the surface
 /// normal is reflected away and reads `maxRange`.
 struct SonarDef {
-  int count = 16;                    ///< sonars evenly spaced counter-clockwise from the front, unless `angles` is set
-  std::vector<double> angles;        ///< explicit directions relative to heading, radians; empty: evenly spaced
-  double cone = 25.0 * pi / 180.0;   ///< full cone width, radians
-  int rays = 5;                      ///< rays per cone, spread evenly across it (1: the axis only)
-  double minRange = 0.15;            ///< closest reading, metres
-  double maxRange = 6.5;             ///< reading when nothing echoes, metres
+  int count = 16;                             ///< sonars evenly spaced counter-clockwise from the front, unless `angles` is set
+  std::vector<double> angles;                 ///< explicit directions relative to heading, radians; empty: evenly spaced
+  double cone = 25.0 * pi / 180.0;            ///< full cone width, radians
+  int rays = 5;                               ///< rays per cone, spread evenly across it (1: the axis only)
+  double minRange = 0.15;                     ///< closest reading, metres
+  double maxRange = 6.5;                      ///< reading when nothing echoes, metres
   double specularCutoff = 22.5 * pi / 180.0;  ///< largest angle from a surface normal that still echoes, radians
-  double noise = 0.01;               ///< Gaussian noise standard deviation as a fraction of the range
+  double noise = 0.01;                        ///< Gaussian noise standard deviation as a fraction of the range
 };
 
 /// Dead-reckoning noise. Errors accumulate as random walks: after travelling d metres and turning
@@ -107,14 +107,14 @@ struct DriveDef {
 
 /// One robot: a disc (Nomad 200 style) with sonars, bumpers and odometry.
 struct RobotDef {
-  std::string name;                  ///< may be empty; then "robot<i>"
-  Pose2 start;                       ///< true starting pose
-  double radius = 0.23;              ///< body radius, metres
-  double density = 50.0;             ///< kg/m^2 (only matters when robots push each other)
-  int bumpers = 8;                   ///< bumper sectors around the body, counter-clockwise from the front
-  SonarDef sonar;                    ///< sonar ring
-  OdometryDef odometry;              ///< dead-reckoning noise
-  DriveDef drive;                    ///< speed and acceleration limits
+  std::string name;       ///< may be empty; then "robot<i>"
+  Pose2 start;            ///< true starting pose
+  double radius = 0.23;   ///< body radius, metres
+  double density = 50.0;  ///< kg/m^2 (only matters when robots push each other)
+  int bumpers = 8;        ///< bumper sectors around the body, counter-clockwise from the front
+  SonarDef sonar;         ///< sonar ring
+  OdometryDef odometry;   ///< dead-reckoning noise
+  DriveDef drive;         ///< speed and acceleration limits
 };
 
 /// A scripted key press, delivered in the sensor frame of the first step at or after `time`.
@@ -126,14 +126,14 @@ struct KeyEventDef {
 
 /// A whole world. The world spans [0, size.x] x [0, size.y]; everything lies inside it.
 struct WorldDef {
-  std::string description;              ///< one line for people, may be empty
-  Vec2 size{10.0, 10.0};                ///< metres
-  bool enclosed = true;                 ///< put thin walls along the four sides
-  std::vector<WallDef> walls;           ///< static walls (bitmap and mesh maps are already expanded here)
-  std::vector<Landmark> points;       ///< goals and landmarks
-  std::vector<RobotDef> robots;         ///< at least one for a useful run
-  std::vector<KeyEventDef> keys;        ///< scripted keyboard
-  std::uint64_t seed = 1;               ///< the one seed every random stream derives from
+  std::string description;        ///< one line for people, may be empty
+  Vec2 size{10.0, 10.0};          ///< metres
+  bool enclosed = true;           ///< put thin walls along the four sides
+  std::vector<WallDef> walls;     ///< static walls (bitmap and mesh maps are already expanded here)
+  std::vector<Landmark> points;   ///< goals and landmarks
+  std::vector<RobotDef> robots;   ///< at least one for a useful run
+  std::vector<KeyEventDef> keys;  ///< scripted keyboard
+  std::uint64_t seed = 1;         ///< the one seed every random stream derives from
 };
 
 /// The fixed spec a controller may know about robot `r`: radius and sonar directions and ranges.

@@ -16,7 +16,6 @@ namespace frob::worlds {
 /// Loads the world file at `path`. Paths inside it (bitmap, mesh) resolve relative to its folder.
 [[nodiscard]] Result<WorldDef> loadWorld(const std::filesystem::path& path);
 /// Parses world-file text; `fileName` is used in messages and `baseDir` resolves bitmap and mesh paths.
-[[nodiscard]] Result<WorldDef> parseWorld(std::string_view text, std::string_view fileName,
-                                          const std::filesystem::path& baseDir = {});
+[[nodiscard]] Result<WorldDef> parseWorld(std::string_view text, std::string_view fileName, const std::filesystem::path& baseDir = {});
 
 }  // namespace frob::worlds

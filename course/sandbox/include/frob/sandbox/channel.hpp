@@ -36,14 +36,14 @@ struct Header {
   std::uint32_t version = kVersion;
   // Written by the trusted side before it rings the request.
   Command command = Command::Load;
-  std::uint32_t robots = 0;          ///< robots in the run (Build, Step)
-  std::uint64_t setupBytes = 0;      ///< size of the setup area
-  std::uint64_t inBytes = 0;         ///< size of each robot's frame area
-  std::uint64_t outBytes = 0;        ///< size of each robot's reply area
-  std::uint64_t spinNanoseconds = 0; ///< how long the host spins before it sleeps
-  std::int64_t step = 0;             ///< the step to sample (Step)
-  double dt = 0.0;                   ///< the run's step, seconds (Build)
-  std::uint32_t pictures = 0;        ///< 1: replies carry each robot's picture
+  std::uint32_t robots = 0;           ///< robots in the run (Build, Step)
+  std::uint64_t setupBytes = 0;       ///< size of the setup area
+  std::uint64_t inBytes = 0;          ///< size of each robot's frame area
+  std::uint64_t outBytes = 0;         ///< size of each robot's reply area
+  std::uint64_t spinNanoseconds = 0;  ///< how long the host spins before it sleeps
+  std::int64_t step = 0;              ///< the step to sample (Step)
+  double dt = 0.0;                    ///< the run's step, seconds (Build)
+  std::uint32_t pictures = 0;         ///< 1: replies carry each robot's picture
   Doorbell request;
   Doorbell reply;
   // Written by the host: what it was doing, and what it tried that was refused.

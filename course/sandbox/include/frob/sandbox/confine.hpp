@@ -20,10 +20,10 @@ struct Layer {
 
 /// Resource limits; 0 leaves a limit as it is.
 struct Limits {
-  std::uint64_t cpuSeconds = 0;    ///< CPU time of the whole process (SIGXCPU, then SIGKILL a second later)
-  std::uint64_t memoryBytes = 0;   ///< address space (malloc and new fail past it)
-  std::uint64_t fileBytes = 0;     ///< largest file it may write (SIGXFSZ past it)
-  std::uint64_t openFiles = 0;     ///< open file descriptors
+  std::uint64_t cpuSeconds = 0;   ///< CPU time of the whole process (SIGXCPU, then SIGKILL a second later)
+  std::uint64_t memoryBytes = 0;  ///< address space (malloc and new fail past it)
+  std::uint64_t fileBytes = 0;    ///< largest file it may write (SIGXFSZ past it)
+  std::uint64_t openFiles = 0;    ///< open file descriptors
 };
 
 /// What the files allow: everything else is neither read, written nor run.
