@@ -2,8 +2,9 @@
 # Installs the Debian 12 packages Frob Sandbox builds against; does nothing when all are present.
 set -euo pipefail
 packages=(
-  cmake ninja-build pkg-config ccache              # build tools
-  clang-16 libclang-rt-16-dev                      # the compiler (see README: GCC 12 breaks coroutines)
+  cmake ninja-build pkg-config ccache clang-format-16   # build tools; the house style
+  clang-16 libclang-rt-16-dev                      # the compiler (see README: GCC 12 breaks coroutines), its sanitizers
+  binutils                                         # addr2line: names the line in a checked run's report
   libeigen3-dev libbox2d-dev libassimp-dev         # maths, physics, meshes
   libseccomp-dev                                   # the controller host's system-call filter
   libzip-dev                                       # the Gradescope autograder zip

@@ -4,9 +4,8 @@
 // a reason a student can act on. Course example 6 (the paper's BUG), copied as it is or with its
 // goal corrected, does not pass: it goes all the way round every obstacle and nothing limits how
 // long it goes round.
-#include "grade_assignment.hpp"
-
 #include "frob/course/generate.hpp"
+#include "grade_assignment.hpp"
 
 #include <gmock/gmock.h>
 
@@ -69,8 +68,7 @@ TEST(BugAssignment, VisibleWorldsAreGeneratedFields) {
     Result<worlds::WorldDef> made = course::generateWorld(course::WorldKind::Obstacles, seed);
     ASSERT_TRUE(made.ok()) << made.error();
     std::string text = readFile(assignmentFile(kAssignment, file));
-    const std::string note = "# frob world generate obstacles --seed " + std::to_string(seed) +
-                             " --out assignments/bug/" + file + "\n";
+    const std::string note = "# frob world generate obstacles --seed " + std::to_string(seed) + " --out assignments/bug/" + file + "\n";
     const std::size_t at = text.find(note);
     ASSERT_NE(at, std::string::npos) << file;
     text.erase(at, note.size());

@@ -3,9 +3,8 @@
 // tests/assignments/go_to_goal/ exactly the partial score it deserves, failing the checks it should
 // with a reason a student can act on. Course examples 4 (driveTo to one point) and 6 (BUG), copied,
 // do not pass.
-#include "grade_assignment.hpp"
-
 #include "frob/worlds/world_file.hpp"
+#include "grade_assignment.hpp"
 
 #include <gmock/gmock.h>
 

@@ -3,9 +3,8 @@
 // tests/assignments/multi_robot/ exactly the partial score it deserves, failing the checks it
 // should with a reason a student can act on. Course example 4 (driveTo to two fixed points),
 // copied, gets nothing.
-#include "grade_assignment.hpp"
-
 #include "frob/worlds/world_file.hpp"
+#include "grade_assignment.hpp"
 
 #include <gmock/gmock.h>
 

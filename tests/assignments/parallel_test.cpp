@@ -3,9 +3,8 @@
 // submission of tests/assignments/parallel/ exactly the partial score it deserves, failing the
 // checks it should with a reason a student can act on. Course example 7 (withTask with a trip
 // meter), copied, does not pass: the key, the bumpers and the reason change what must happen.
-#include "grade_assignment.hpp"
-
 #include "frob/worlds/world_file.hpp"
+#include "grade_assignment.hpp"
 
 #include <gmock/gmock.h>
 
@@ -59,8 +58,8 @@ TEST(ParallelAssignment, RubricHasTheChecksTheHandoutDescribes) {
 // The handout gives the route's coordinates once: every world, visible or hidden, has them there.
 TEST(ParallelAssignment, EveryWorldHasTheHandoutsRouteAndStart) {
   const std::map<std::string, Point2> handout = {{"p1", {1.5, 1.5}}, {"p2", {6.5, 1.5}}, {"p3", {6.5, 4.5}}, {"p4", {1.5, 4.5}}};
-  for (const char* file : {"worlds/warehouse.toml", "worlds/warehouse_key.toml", "worlds/warehouse_box.toml",
-                           "hidden_worlds/warehouse_keys.toml", "hidden_worlds/warehouse_box2.toml"}) {
+  for (const char* file : {"worlds/warehouse.toml", "worlds/warehouse_key.toml", "worlds/warehouse_box.toml", "hidden_worlds/warehouse_keys.toml",
+                           "hidden_worlds/warehouse_box2.toml"}) {
     Result<worlds::WorldDef> world = worlds::loadWorld(assignmentFile(kAssignment, file));
     ASSERT_TRUE(world) << world.error();
     for (const auto& [name, at] : handout) {

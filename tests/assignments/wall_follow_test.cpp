@@ -3,9 +3,8 @@
 // tests/assignments/wall_follow/ exactly the partial score it deserves, failing the checks it
 // should with a reason a student can act on. Course example 2 (the paper's rerror), copied as it
 // is, does not pass: it follows the LEFT wall, 50 cm away, and stops where that wall ends.
-#include "grade_assignment.hpp"
-
 #include "frob/worlds/world_file.hpp"
+#include "grade_assignment.hpp"
 
 #include <gmock/gmock.h>
 
@@ -135,8 +134,12 @@ TEST(WallFollowAssignment, BangBangOscillatesAndBumpsAtCorners) {
 TEST(WallFollowAssignment, StoppingAtTheEndOfTheWallDoesNotGoRound) {
   course::Grade g = gradeFile(wrongSubmission(kAssignment, "stops_at_end.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 0}, {kUnseenRound, 0}, {kUnseenKeeps, 0}}));
-  EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/l_room.toml, seed 1: reached a at 9.7 s, reached b at 17.4 s, reached c at 25.3 s, never came within 0.30 m of d after that"));
-  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/l_room.toml, seed 1: covered 12% of the floor it could reach (20 of 168 cells of 0.50 m); 15% required"));
+  EXPECT_THAT(
+      reasons(g, kRound),
+      HasSubstr(
+          "in worlds/l_room.toml, seed 1: reached a at 9.7 s, reached b at 17.4 s, reached c at 25.3 s, never came within 0.30 m of d after that"));
+  EXPECT_THAT(reasons(g, kKeeps),
+              HasSubstr("in worlds/l_room.toml, seed 1: covered 12% of the floor it could reach (20 of 168 cells of 0.50 m); 15% required"));
   EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/notched_block.toml, seed 1: covered 2% of the floor it could reach"));
   EXPECT_THAT(reasons(g, kUnseenKeeps), HasSubstr("covered 7% of the floor it could reach"));
 }

@@ -3,9 +3,8 @@
 // tests/assignments/wander/ exactly the partial score it deserves, failing the checks it should
 // with a reason a student can act on. Course example 1 (the paper's runAround), copied as it is,
 // does not pass: it stops for the door posts, goes back down the hall and spins there for ever.
-#include "grade_assignment.hpp"
-
 #include "frob/worlds/world_file.hpp"
+#include "grade_assignment.hpp"
 
 #include <gmock/gmock.h>
 
