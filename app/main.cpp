@@ -61,25 +61,28 @@ Result<worlds::WorldDef> loadWorldNamed(const std::string& name) {
 }
 
 // A controller by file (.cpp compiled, .so as it is) or by example name, as a module.
-Result<course::CompiledController> compileController(const std::string& name, bool quiet) {
+Result<course::CompiledController> compileController(const std::string& name, bool quiet, const course::CompilerSetup& setup) {
   const fs::path path(name);
-  if (path.extension() == ".so") return course::CompiledController{.module = path, .source = name};
+  if (path.extension() == ".so") {
+    if (setup.checked) return Status::failure("--check compiles the controller with its checks: give its .cpp, not " + name);
+    return course::CompiledController{.module = path, .source = name};
+  }
   if (path.extension() == ".cpp" || fs::exists(path)) {
     const auto start = std::chrono::steady_clock::now();
     ProgressBar status(stderr, !quiet && ::isatty(STDERR_FILENO) == 1, "");
-    status.say("frob: compiling " + name + " (unless it is unchanged since its last run)...");
-    Result<course::CompiledController> c = course::compileControllerFile(path);
+    status.say("frob: compiling " + name + (setup.checked ? " with checks" : "") + " (unless it is unchanged since its last run)...");
+    Result<course::CompiledController> c = course::compileControllerFile(path, setup);
     status.finish();
     if (c && c.value().compiled && !quiet) std::fprintf(stderr, "frob: compiled %s in %.1f s\n", name.c_str(), secondsSince(start));
     return c;
   }
-  if (std::optional<course::Example> e = course::findExample(name)) return course::compileExample(*e);
+  if (std::optional<course::Example> e = course::findExample(name)) return course::compileExample(*e, setup);
   return Status::failure("unknown controller '" + name + "': not a file and not an example (see frob list)");
 }
 
 // The controller `name`, described by a sandboxed host (isolated) or loaded into this process.
 Result<course::LoadedController> loadController(const std::string& name, const std::optional<course::IsolationDef>& isolation, bool quiet) {
-  Result<course::CompiledController> c = compileController(name, quiet);
+  Result<course::CompiledController> c = compileController(name, quiet, course::compilerSetup(isolation && isolation->checked));
   if (!c) return c.status();
   if (!isolation) return course::loadInProcess(c.value());
   return course::describeInHost(c.value(), *isolation);
@@ -104,7 +107,7 @@ struct RunArgs {
   int fps = 30;
   std::optional<double> speed;
   course::RunOutputs outputs;
-  bool json = false, quiet = false, isolate = true;
+  bool json = false, quiet = false, isolate = true, check = false;
 };
 
 int runCommand(RunArgs a) {
@@ -116,7 +119,8 @@ int runCommand(RunArgs a) {
   }
   // The demo's video plays 4 times faster than the robot drives: two minutes of BUG in half a minute.
   course::RunDef def{.options = {.dt = a.dt, .seed = a.seed}, .outputs = a.outputs, .fps = a.fps, .speed = a.speed.value_or(demo ? 4.0 : 1.0)};
-  if (a.isolate) def.isolation.emplace();
+  if (a.check && !a.isolate) return fail("--check runs the controllers in their sandboxed process: leave out --no-isolate");
+  if (a.isolate) def.isolation.emplace(course::IsolationDef{.checked = a.check});
   for (const std::string& name : a.controllers) {
     Result<course::LoadedController> c = loadController(name, def.isolation, a.quiet);
     if (!c) return fail(c.error());
@@ -261,6 +265,9 @@ int main(int argc, char** argv) {
   runCmd->add_flag("--isolate,!--no-isolate", run.isolate,
                    "Run the controllers in a sandboxed process of their own (the default); --no-isolate runs them "
                    "inside frob itself, where a crash takes frob down");
+  runCmd->add_flag("--check", run.check,
+                   "Compile the controllers with AddressSanitizer, UndefinedBehaviorSanitizer and the C++ library's checks: an index "
+                   "out of range, a use after free or an integer division by zero stops the run naming your file and line (slower)");
   runCmd->add_flag("-q,--quiet", run.quiet, "No progress bar or notes on stderr");
 
   std::string renderWorld, renderOut, renderSize = "960x720";

@@ -13,6 +13,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
@@ -93,7 +94,9 @@ std::string onPath(const std::string& program) {
 
 std::string compilerDescription() { return std::string(FROB_CONTROLLER_COMPILER) + " (" + FROB_CONTROLLER_COMPILER_VERSION + ")"; }
 
-CompilerSetup compilerSetup() {
+std::string sanitizerRuntime() { return FROB_CONTROLLER_SANITIZER_RUNTIME; }
+
+CompilerSetup compilerSetup(bool checked) {
   const Layout& files = layout();
   CompilerSetup s{.compiler = FROB_CONTROLLER_COMPILER, .precompiledHeader = files.precompiledHeader.string()};
   std::stringstream flags(FROB_CONTROLLER_FLAGS);
@@ -105,6 +108,17 @@ CompilerSetup compilerSetup() {
   s.reads = {files.headerOverlay.string(), files.includeDir.string()};
   // A Task called and not awaited does nothing: Task's [[nodiscard]] says so, and here it stops the build.
   s.flags.emplace_back("-Werror=unused-result");
+  if (checked) {
+    // Code that stops at its first mistake and says where: asserts on, line tables for the
+    // report's stack, and -O1, at which the stack still names the student's functions.
+    std::erase(s.flags, "-DNDEBUG");
+    std::replace(s.flags.begin(), s.flags.end(), std::string("-O2"), std::string("-O1"));
+    // DWARF 4: binutils 2.40's addr2line, which symbolizes the reports, misnames headers in clang's DWARF 5.
+    s.flags.insert(s.flags.end(), {"-fsanitize=address,undefined", "-fno-sanitize-recover=all", "-fno-omit-frame-pointer", "-gline-tables-only",
+                                   "-gdwarf-4", "-D_GLIBCXX_ASSERTIONS"});
+    s.precompiledHeader.clear();  // made with other flags
+    s.checked = true;
+  }
   if (const char* dir = std::getenv("FROB_CACHE_DIR"); dir != nullptr && *dir != '\0') {
     s.cacheDir = dir;
   } else if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg != '\0') {
@@ -149,7 +163,7 @@ Result<CompiledController> compileControllerFile(const fs::path& source, const C
   char name[32];
   std::snprintf(name, sizeof name, "%016llx", static_cast<unsigned long long>(key.value()));
   const fs::path module = setup.cacheDir / (source.stem().string() + "-" + name + ".so");
-  const CompiledController compiled{.module = module, .source = source.string(), .compiled = true};
+  const CompiledController compiled{.module = module, .source = source.string(), .compiled = true, .checked = setup.checked};
   // The compiler's warnings are kept beside the module and shown again on every cached run.
   const fs::path warnings = fs::path(module).replace_extension(".warnings");
   const auto show = [&](const std::string& text) {
@@ -164,7 +178,7 @@ Result<CompiledController> compileControllerFile(const fs::path& source, const C
   if (fs::exists(module)) {
     std::ifstream kept(warnings, std::ios::binary);
     show(std::string{std::istreambuf_iterator<char>(kept), std::istreambuf_iterator<char>()});
-    return CompiledController{.module = module, .source = source.string()};
+    return CompiledController{.module = module, .source = source.string(), .checked = setup.checked};
   }
 
   // A build folder of its own: the only place the compiler may write.

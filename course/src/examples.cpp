@@ -30,17 +30,17 @@ std::optional<Example> findExample(std::string_view name) {
   return std::nullopt;
 }
 
-Result<CompiledController> compileExample(const Example& example) {
+Result<CompiledController> compileExample(const Example& example, const CompilerSetup& setup) {
   // Named as people would type it from where they are (course/examples/06_bug.cpp from the
   // repository's root), or in full from elsewhere.
   std::error_code ec;
   fs::path source = fs::proximate(example.source, ec);
   if (ec || source.empty() || *source.begin() == "..") source = example.source;
   // A module older than its source (edited since the build) is compiled afresh, like a student's file.
-  if (fs::exists(example.module) && fs::last_write_time(example.module, ec) >= fs::last_write_time(example.source, ec)) {
+  if (!setup.checked && fs::exists(example.module) && fs::last_write_time(example.module, ec) >= fs::last_write_time(example.source, ec)) {
     return CompiledController{.module = example.module, .source = source.string()};
   }
-  return compileControllerFile(source);
+  return compileControllerFile(source, setup);
 }
 
 }  // namespace frob::course

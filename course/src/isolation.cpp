@@ -5,6 +5,7 @@
 #include "frob/sandbox/wire.hpp"
 #include "jail.hpp"
 #include "load_error.hpp"
+#include "sanitizer_report.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -33,6 +34,7 @@ constexpr std::size_t kSetupBytes = 1 << 20;
 constexpr std::size_t kFrameBytes = 64 << 10;   // a frame: its sonars, bumps and keys
 constexpr std::size_t kReplyBytes = 256 << 10;  // a reply: wheels, task records, a picture
 constexpr std::uint32_t kNobody = 65534;
+constexpr std::size_t kTailBytes = 4096;  // of the host's output kept for a checked run's report
 
 std::string seconds(double s) {
   char buf[32];
@@ -81,6 +83,7 @@ struct ControllerHost::Impl {
   int wake = -1;    // eventfd the host writes when it answers and we sleep
   int output = -1;  // read end of its stdout and stderr
   std::uint64_t outputSeen = 0;
+  std::string outputTail;  // the last of what it printed, where a failed assertion's message is
   std::vector<std::string> sources;
   std::vector<ControllerEntry> entries;
   std::vector<sandbox::Layer> layers;
@@ -108,17 +111,29 @@ struct ControllerHost::Impl {
       const std::uint64_t room = def.outputBytes > outputSeen ? def.outputBytes - outputSeen : 0;
       const std::string_view text(buf, std::min<std::uint64_t>(room, static_cast<std::uint64_t>(n)));
       outputSeen += static_cast<std::uint64_t>(n);
-      if (text.empty()) continue;
-      if (def.output) {
-        def.output(text);
-      } else {
-        std::fwrite(text.data(), 1, text.size(), stderr);
-      }
+      outputTail.append(buf, static_cast<std::size_t>(n));
+      if (outputTail.size() > kTailBytes) outputTail.erase(0, outputTail.size() - kTailBytes);
+      if (!text.empty()) say(text);
     }
   }
 
-  // Why the host ended, from its wait status and what it claimed it was doing.
+  // Passes on `text` as the host's output is.
+  void say(std::string_view text) const {
+    if (def.output) {
+      def.output(text);
+    } else {
+      std::fwrite(text.data(), 1, text.size(), stderr);
+    }
+  }
+
+  // Why the host ended, from its sanitizers' report when checked, else its wait status and what it claimed it was doing.
   std::string death(int status) const {
+    if (def.checked) {
+      if (std::optional<SanitizerFinding> f = readSanitizerReport(scratch, outputTail)) {
+        say("frob --check: " + f->reason + "\n" + f->stack);
+        return f->reason;
+      }
+    }
     const sandbox::Header& h = header();
     if (WIFEXITED(status)) {
       return "ended its program with exit status " + std::to_string(WEXITSTATUS(status)) +
@@ -252,16 +267,24 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
                .files = {.read = {"/usr", "/lib", "/lib64", "/etc/ld.so.cache"}, .write = {scratch}},
                .cwd = scratch,
                .fds = {-1, out[1], out[1], impl->channel.fd(), impl->wake}};
-  if constexpr (kSanitizedBuild) {
-    // Memory is watched by its size instead of limited (see kSanitizedBuild); crashes are left to
-    // the kernel so that they read as the signals they are.
+  if (d.checked) {
+    // The sanitizers' runtime (unless this program has its own), reporting into the scratch folder.
+    jail.env = sanitizerEnvironment(impl->scratch);
+    if (!kSanitizedBuild) {
+      if (!fs::exists(sanitizerRuntime()))
+        return failure("a checked controller needs clang's AddressSanitizer runtime " + sanitizerRuntime() + " (Debian package libclang-rt-16-dev)");
+      jail.env.push_back("LD_PRELOAD=" + sanitizerRuntime());
+    }
+  } else if constexpr (kSanitizedBuild) {
+    // Crashes are left to the kernel so that they read as the signals they are.
     // Real stacks (no fake ones for use-after-return), so that an overflow faults next to the stack.
     jail.env = {
         "ASAN_OPTIONS=detect_leaks=0:handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_abort=0:symbolize=0:"
         "detect_stack_use_after_return=0"};
-    jail.files.read.push_back("/proc");
   }
-  impl->memoryLimited = !kSanitizedBuild;
+  // AddressSanitizer reserves terabytes of address space: then memory is watched by its size instead of limited.
+  impl->memoryLimited = !kSanitizedBuild && !d.checked;
+  if (!impl->memoryLimited) jail.limits.memoryBytes = 0, jail.files.read.push_back("/proc");
   Result<Jailed> process = Jailed::start(jail);
   ::close(out[1]);
   if (!process) return failure(process.error());
@@ -467,8 +490,9 @@ std::string missingLayers(const std::vector<sandbox::Layer>& layers) {
   return out;
 }
 
-Result<LoadedController> describeInHost(const CompiledController& compiled, const IsolationDef& def) {
-  Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start({compiled.module}, {compiled.source}, def);
+Result<LoadedController> describeInHost(const CompiledController& compiled, IsolationDef def) {
+  def.checked = def.checked || compiled.checked;
+  Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start({compiled.module}, {compiled.source}, std::move(def));
   if (!host) return host.status();
   return LoadedController{
       .entry = host.value()->entries().at(0), .source = compiled.source, .module = compiled.module, .compiled = compiled.compiled};

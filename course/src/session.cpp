@@ -167,6 +167,7 @@ Result<Summary> runSession(const RunDef& def) {
   worlds::Run run(def.world, def.options, driverFor(def, host, drawFrames || !out.plot.empty()), {.window = 1});
   const worlds::Simulation& sim = run.simulation();
   const std::size_t n = sim.robotCount();
+  const bool checked = def.isolation && def.isolation->checked;
 
   // Outputs, opened before the first step so that a bad path fails at once.
   std::optional<render::RunView> view;
@@ -278,6 +279,13 @@ Result<Summary> runSession(const RunDef& def) {
     w.summary.lastTasks.assign(w.lastEnded.begin(), w.lastEnded.end());
     const std::vector<TaskRecord> running = run.timeline(i).running();
     w.summary.hints = diagnosis.hints(i, w.summary.name, running, sim.time());
+    // A run that looks stuck may be a silent bug: say how to look for one.
+    const bool stuck = w.summary.distance < 0.05 || (w.lastEnded.empty() && running.size() > 1);
+    if (stuck && !checked) {
+      w.summary.hints.push_back(w.summary.name + (w.summary.distance < 0.05 ? " never moved" : "'s first task never ended") +
+                                ", and this run was not checked: frob run --check stops at an index out of range, a use after free or an integer "
+                                "division by zero, naming your file and line");
+    }
     for (TaskRecord r : running) {
       r.end = sim.time();
       if (!out.timeline.empty()) w.all.push_back(r);

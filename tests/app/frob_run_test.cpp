@@ -157,6 +157,34 @@ TEST(FrobRun, AControllerThatLoopsForeverIsStopped) {
                      "nomad: used more than 1 s of CPU in one step (an endless loop?) at t = 0.51 s;");
 }
 
+// --check: the same vector read past its end drives on unchecked, and stops checked with the
+// student's file, function and line on one line, with the stack above it.
+TEST(FrobRun, CheckStopsAtAnIndexOutOfRangeNamingTheLine) {
+  const std::string file = controller("lift([](double t) { return speeds[t < 0.5 ? 0 : 3]; }, time())",
+                                      "#include <vector>\nconst std::vector<double> speeds{0.1, 0.1, 0.1};\n");
+  const fs::path dir = freshFolder("check");
+  write(dir, "reads_past.cpp", file);
+  EXPECT_EQ(runFrob(dir, {"run", "reads_past.cpp", "--quiet", "--seconds", "1"}).status, 0);
+  const FrobResult r = runFrob(dir, {"run", "reads_past.cpp", "--check", "--quiet", "--seconds", "1"});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(lines(r.err).back(),
+            "frob: the controller failed: nomad: the C++ library's check '__n < this->size()' failed (an index out of range?) in "
+            "drive(frob::Robot const&)'s lambda at reads_past.cpp:5 at t = 0.50 s; no output files were written")
+      << r.err;
+  EXPECT_NE(r.err.find("\n    drive(frob::Robot const&)'s lambda at reads_past.cpp:5\n"), std::string::npos) << r.err;
+}
+
+TEST(FrobRun, CheckNeedsTheSandboxAndASourceFile) {
+  const fs::path dir = freshFolder("check_refused");
+  write(dir, "go.cpp", controller("0.1"));
+  FrobResult r = runFrob(dir, {"run", "go.cpp", "--check", "--no-isolate"});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, "frob: --check runs the controllers in their sandboxed process: leave out --no-isolate\n");
+  r = runFrob(dir, {"run", "go.so", "--check"});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, "frob: --check compiles the controller with its checks: give its .cpp, not go.so\n");
+}
+
 TEST(FrobRun, IsolatedAndInProcessRunsDriveTheSameTrajectory) {
   const fs::path dir = freshFolder("isolated_same");
   write(dir, "slow.cpp", controller("0.2"));

@@ -22,20 +22,26 @@ struct CompilerSetup {
   std::filesystem::path cacheDir;          ///< where compiled controllers are kept, named by a hash of what made them
   double seconds = 120.0;                  ///< wall-clock and CPU time a compile may take
   std::uint64_t memoryBytes = 4ULL << 30;  ///< address space of the compiler
+  bool checked = false;                    ///< with AddressSanitizer, UBSan and the C++ library's checks (`frob run --check`)
 };
 
 /// The compiler controllers are compiled with, and its version: "/usr/bin/clang++-16 (Clang 16.0.6)".
 [[nodiscard]] std::string compilerDescription();
 
 /// The build's compiler and flags, and the headers and precompiled header of frob::layout(); the cache is $FROB_CACHE_DIR, else
-/// $XDG_CACHE_HOME/frob, else ~/.cache/frob.
-[[nodiscard]] CompilerSetup compilerSetup();
+/// $XDG_CACHE_HOME/frob, else ~/.cache/frob. With `checked`, controllers are compiled with AddressSanitizer, UBSan, asserts
+/// and std::vector's index checks on, for a host started with IsolationDef::checked (no precompiled header: slower to build).
+[[nodiscard]] CompilerSetup compilerSetup(bool checked = false);
+
+/// Where clang's AddressSanitizer runtime is, which a checked controller needs (Debian: libclang-rt-16-dev).
+[[nodiscard]] std::string sanitizerRuntime();
 
 /// A controller file compiled into a module, not loaded anywhere yet.
 struct CompiledController {
   std::filesystem::path module;  ///< the shared object
   std::string source;            ///< the file it came from, as given
   bool compiled = false;         ///< true when it was compiled now, false when the cache (or the build) had it
+  bool checked = false;          ///< compiled with CompilerSetup::checked: it runs only in a checked host
 };
 
 /// A controller ready to run: what its FROB_CONTROLLER declared, and where it came from.

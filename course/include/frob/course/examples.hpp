@@ -23,7 +23,8 @@ struct Example {
 [[nodiscard]] std::vector<Example> examples();
 /// The example called `name`, with or without its number ("06_bug" or "bug").
 [[nodiscard]] std::optional<Example> findExample(std::string_view name);
-/// `example` as a module: the one the build made, or its source compiled when that is missing or older.
-[[nodiscard]] Result<CompiledController> compileExample(const Example& example);
+/// `example` as a module: the one the build made, or its source compiled with `setup` when that is missing or
+/// older, or when `setup` is checked.
+[[nodiscard]] Result<CompiledController> compileExample(const Example& example, const CompilerSetup& setup = compilerSetup());
 
 }  // namespace frob::course

@@ -33,6 +33,8 @@ struct IsolationDef {
   std::uint64_t fileBytes = 16ULL << 20;         ///< largest file it may write in its scratch folder
   std::uint64_t spinNanoseconds = 50'000;        ///< each side spins this long before it sleeps; 0 when runs share the cores
   std::function<void(std::string_view)> output;  ///< where its output goes; empty: this process's stderr
+  bool checked = false;                          ///< its modules were compiled with compilerSetup(true): load the sanitizers' runtime,
+                                                 ///< watch memory instead of limiting address space, and explain their reports
 };
 
 /// A controller host process with the modules it loaded. Killed, and its scratch folder removed,
@@ -70,6 +72,6 @@ class ControllerHost : public std::enable_shared_from_this<ControllerHost> {
 [[nodiscard]] std::string missingLayers(const std::vector<sandbox::Layer>& layers);
 
 /// What `compiled` declares, as a sandboxed host reports it: its code never runs in this process.
-[[nodiscard]] Result<LoadedController> describeInHost(const CompiledController& compiled, const IsolationDef& def = {});
+[[nodiscard]] Result<LoadedController> describeInHost(const CompiledController& compiled, IsolationDef def = {});
 
 }  // namespace frob::course
