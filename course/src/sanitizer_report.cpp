@@ -1,5 +1,6 @@
 #include "sanitizer_report.hpp"
 
+#include "frob/base/layout.hpp"
 #include "jail.hpp"
 
 #include <sys/wait.h>
@@ -55,7 +56,7 @@ std::string lambdaNamed(const std::string& function) {
 
 // The student's code: not the system's headers and libraries, not frob's.
 bool isStudents(const SourceFrame& f) {
-  return !f.place.empty() && f.place.rfind("??", 0) != 0 && f.place.rfind("/usr/", 0) != 0 && f.place.find("/frob-sdk/") == std::string::npos;
+  return !f.place.empty() && f.place.rfind("??", 0) != 0 && f.place.rfind("/usr/", 0) != 0 && f.place.rfind(kSdkIncludeDir, 0) != 0;
 }
 
 // The last failed assertion in `output`, in words: "the assert 'x > 0' failed", or "".
