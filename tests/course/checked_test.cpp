@@ -98,7 +98,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"use_after_free",
                            "AddressSanitizer: heap-use-after-free, reading 8 bytes (a pointer or reference to something already destroyed?)",
                            "speedAt(double)"},
-                      Case{"int_division", "undefined behaviour: division by zero", "stepsPerSecond(int, int)"}),
+                      Case{"int_division", "undefined behaviour: division by zero", "stepsPerSecond(int, int)"},
+                      Case{"fails_assert", "the assert 'speed > 0' failed", "speedAt(double)"}),
     [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
 
 // The same mistakes unchecked go unnoticed: the run drives on (which is why --check exists).
