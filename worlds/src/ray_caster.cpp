@@ -197,18 +197,20 @@ double RayCaster::castCone(const Point2& origin, std::span<const double> dirX, s
   const double ox = origin.x(), oy = origin.y();
   const std::size_t n = dirX.size();
   double nearest = range;
-  // From inside the grid, four rays at a time (five when five are left, three as four with the
-  // first repeated); the rest one by one. Each is cast only as far as the nearest echo so far: the
-  // reading is the minimum over the rays, so neither the order nor a repeat changes it.
+  // From inside the grid, in fans of at least three rays: up to eight with AVX-512, else four (five
+  // when five are left, three as four with the first repeated); the rest one by one. Each is cast
+  // only as far as the nearest echo so far: the reading is the minimum over the rays, so neither the
+  // order nor a repeat changes it.
   std::size_t fanned = 0;
+  const int width = fanWidth();
   if (ox >= x0_ && ox <= x1_ && oy >= y0_ && oy <= y1_) [[likely]] {
     while (n - fanned >= 3) {
       const std::size_t left = n - fanned;
-      const int rays = left == 5 ? 5 : 4;
+      const int rays = width == 8 ? static_cast<int>(std::min<std::size_t>(left, 8)) : left == 5 ? 5 : 4;
       const double* ux = &dirX[fanned];
       const double* uy = &dirY[fanned];
       double padX[4], padY[4];
-      if (left == 3) {
+      if (left == 3 && width != 8) {
         padX[0] = padX[3] = ux[0], padX[1] = ux[1], padX[2] = ux[2];
         padY[0] = padY[3] = uy[0], padY[1] = uy[1], padY[2] = uy[2];
         ux = padX, uy = padY;
