@@ -158,20 +158,21 @@ struct FanCaster {
     double nearest = cap;  // the nearest echo of the lanes found final so far
     M live = splat<M>(-1);
     int pi0 = 1, pj0 = 1, pi1 = 0, pj1 = 0;  // the cells of the previous band, already tested
+    const V far = splat<V>(INFINITY);
+    // The extreme directions of the live rays, found again only when a ray finishes: a piece's end
+    // ox + d ux is monotone in ux for d >= 0 (rounding too), so the ends of the extremes bound all.
+    double uxLo, uxHi, uyLo, uyHi;
+    auto bound = [&] {
+      uxLo = __builtin_reduce_min(select(live, f.ux, far)), uxHi = __builtin_reduce_max(select(live, f.ux, -far));
+      uyLo = __builtin_reduce_min(select(live, f.uy, far)), uyHi = __builtin_reduce_max(select(live, f.uy, -far));
+      if (lone.live) uxLo = std::min(uxLo, lone.ux), uxHi = std::max(uxHi, lone.ux), uyLo = std::min(uyLo, lone.uy), uyHi = std::max(uyHi, lone.uy);
+    };
+    bound();
     for (double d0 = 0.0; (any(live) || lone.live) && d0 < nearest;) {
       const double d1 = std::min(d0 + g.cell_, nearest);
       // The live rays' pieces over [d0, d1] lie in the box of their end points.
-      const V xa = ox + d0 * f.ux, xb = ox + d1 * f.ux, ya = oy + d0 * f.uy, yb = oy + d1 * f.uy;
-      const V far = splat<V>(INFINITY);
-      const V lxs = select(live, xa < xb ? xa : xb, far), hxs = select(live, xa < xb ? xb : xa, -far);
-      const V lys = select(live, ya < yb ? ya : yb, far), hys = select(live, ya < yb ? yb : ya, -far);
-      double lx = __builtin_reduce_min(lxs), hx = __builtin_reduce_max(hxs);
-      double ly = __builtin_reduce_min(lys), hy = __builtin_reduce_max(hys);
-      if (lone.live) {
-        const double xa1 = ox + d0 * lone.ux, xb1 = ox + d1 * lone.ux, ya1 = oy + d0 * lone.uy, yb1 = oy + d1 * lone.uy;
-        lx = std::min(lx, std::min(xa1, xb1)), hx = std::max(hx, std::max(xa1, xb1));
-        ly = std::min(ly, std::min(ya1, yb1)), hy = std::max(hy, std::max(ya1, yb1));
-      }
+      const double lx = std::min(ox + d0 * uxLo, ox + d1 * uxLo), hx = std::max(ox + d0 * uxHi, ox + d1 * uxHi);
+      const double ly = std::min(oy + d0 * uyLo, oy + d1 * uyLo), hy = std::max(oy + d0 * uyHi, oy + d1 * uyHi);
       int i0, j0, i1, j1;
       RayCaster::cellSpan(lx, hx, g.x0_, g.inv_, g.nx_, i0, i1);
       RayCaster::cellSpan(ly, hy, g.y0_, g.inv_, g.ny_, j0, j1);
@@ -184,10 +185,12 @@ struct FanCaster {
       const M echoes = done & (f.best < nearest) & (f.cos >= cosCutoff);  // false for NaN
       if (any(echoes)) nearest = __builtin_reduce_min(select(echoes, f.best, far));
       live &= ~done;
-      if (lone.live && lone.best.distance <= d1) {
+      const bool loneDone = lone.live && lone.best.distance <= d1;
+      if (loneDone) {
         lone.live = false;
         if (lone.best.distance < nearest && lone.best.cosIncidence >= cosCutoff) nearest = lone.best.distance;
       }
+      if (any(done) || loneDone) bound();
       d0 = d1;
     }
     return nearest;
