@@ -28,11 +28,13 @@ RayCaster::RayCaster(const std::vector<WallDef>& walls, const Point2& lo, const 
   }
   segmentCount_ = segs.size();
 
-  // Cells about as wide as the mean spacing of walls, within bounds that keep the grid small.
+  // Cells about as wide as the mean spacing of walls, within bounds that keep the grid small. Not
+  // under a metre: a fan is swept a cell's length at a time, and with smaller cells the sweep's own
+  // cost outgrows the tests it saves (10,000 short walls a metre apart: 1 m cells 17% faster than 0.77 m).
   x0_ = lo.x(), y0_ = lo.y();
   const double w = std::max(hi.x() - lo.x(), 1e-3), h = std::max(hi.y() - lo.y(), 1e-3);
   const double items = static_cast<double>(segs.size() + circles.size()) + 1.0;
-  cell_ = std::clamp(std::sqrt(w * h / items) * 0.75, 0.25, 8.0);
+  cell_ = std::clamp(std::sqrt(w * h / items) * 0.75, 1.0, 8.0);
   cell_ = std::max(cell_, std::sqrt(w * h / kMaxCells) * 1.01);
   inv_ = 1.0 / cell_;
   nx_ = std::max(1, static_cast<int>(std::ceil(w * inv_)));
