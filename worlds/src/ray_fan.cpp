@@ -51,15 +51,12 @@ template <class M>
 [[gnu::always_inline]] inline bool any(M m) {
   return __builtin_reduce_or(m) != 0;
 }
-// Lane-wise square root, two lanes per instruction: correctly rounded, so each lane equals std::sqrt.
+// Lane-wise square root, correctly rounded, so each lane equals std::sqrt: one vsqrtpd of the
+// caller's width, as this file is built without errno for math (worlds/CMakeLists.txt).
 template <class V>
 [[gnu::always_inline]] inline V sqrtLanes(V v) {
-  using V2 = double __attribute__((vector_size(16)));
   V r;
-  for (int k = 0; k < kLanes<V>; k += 2) {
-    const V2 s = __builtin_ia32_sqrtpd(V2{v[k], v[k + 1]});
-    r[k] = s[0], r[k + 1] = s[1];
-  }
+  for (int k = 0; k < kLanes<V>; ++k) r[k] = std::sqrt(v[k]);
   return r;
 }
 
@@ -167,8 +164,9 @@ struct FanCaster {
       uyLo = __builtin_reduce_min(select(live, f.uy, far)), uyHi = __builtin_reduce_max(select(live, f.uy, -far));
       if (lone.live) uxLo = std::min(uxLo, lone.ux), uxHi = std::max(uxHi, lone.ux), uyLo = std::min(uyLo, lone.uy), uyHi = std::max(uyHi, lone.uy);
     };
-    bound();
+    bool stale = true;  // the extremes need finding again
     for (double d0 = 0.0; (any(live) || lone.live) && d0 < nearest;) {
+      if (stale) bound(), stale = false;
       const double d1 = std::min(d0 + g.cell_, nearest);
       // The live rays' pieces over [d0, d1] lie in the box of their end points.
       const double lx = std::min(ox + d0 * uxLo, ox + d1 * uxLo), hx = std::max(ox + d0 * uxHi, ox + d1 * uxHi);
@@ -190,7 +188,7 @@ struct FanCaster {
         lone.live = false;
         if (lone.best.distance < nearest && lone.best.cosIncidence >= cosCutoff) nearest = lone.best.distance;
       }
-      if (any(done) || loneDone) bound();
+      stale = any(done) || loneDone;
       d0 = d1;
     }
     return nearest;
