@@ -15,10 +15,11 @@ namespace {
 
 constexpr int kVelocityIterations = 8;
 constexpr int kPositionIterations = 3;
-// Robots per chunk of parallel work at least (Workers makes a few chunks per thread): sensing a
-// robot costs some 5 us; noisy odometry some 0.15 us, so chunks of 32 are worth handing out.
-constexpr std::size_t kSenseGrain = 1;
-constexpr std::size_t kOdometryGrain = 32;
+// Robots per chunk of parallel work at least (Workers makes up to 16 chunks per thread), so that a
+// chunk is some 50 us of work, worth its claim (about 1 us): sensing a robot costs some 4 us, noisy
+// odometry some 0.15 us.
+constexpr std::size_t kSenseGrain = 12;
+constexpr std::size_t kOdometryGrain = 256;
 // Continuous collision is on when a robot can cover more than this part of its radius in a step.
 constexpr double kTunnelFraction = 0.25;
 
