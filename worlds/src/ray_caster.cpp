@@ -28,11 +28,13 @@ RayCaster::RayCaster(const std::vector<WallDef>& walls, const Point2& lo, const 
   }
   segmentCount_ = segs.size();
 
-  // Cells about as wide as the mean spacing of walls, within bounds that keep the grid small.
+  // Cells about as wide as the mean spacing of walls, within bounds that keep the grid small. Not
+  // under a metre: a fan is swept a cell's length at a time, and with smaller cells the sweep's own
+  // cost outgrows the tests it saves (10,000 short walls a metre apart: 1 m cells 17% faster than 0.77 m).
   x0_ = lo.x(), y0_ = lo.y();
   const double w = std::max(hi.x() - lo.x(), 1e-3), h = std::max(hi.y() - lo.y(), 1e-3);
   const double items = static_cast<double>(segs.size() + circles.size()) + 1.0;
-  cell_ = std::clamp(std::sqrt(w * h / items) * 0.75, 0.25, 8.0);
+  cell_ = std::clamp(std::sqrt(w * h / items) * 0.75, 1.0, 8.0);
   cell_ = std::max(cell_, std::sqrt(w * h / kMaxCells) * 1.01);
   inv_ = 1.0 / cell_;
   nx_ = std::max(1, static_cast<int>(std::ceil(w * inv_)));
@@ -197,18 +199,20 @@ double RayCaster::castCone(const Point2& origin, std::span<const double> dirX, s
   const double ox = origin.x(), oy = origin.y();
   const std::size_t n = dirX.size();
   double nearest = range;
-  // From inside the grid, four rays at a time (five when five are left, three as four with the
-  // first repeated); the rest one by one. Each is cast only as far as the nearest echo so far: the
-  // reading is the minimum over the rays, so neither the order nor a repeat changes it.
+  // From inside the grid, in fans of at least three rays: up to eight with AVX-512, else four (five
+  // when five are left, three as four with the first repeated); the rest one by one. Each is cast
+  // only as far as the nearest echo so far: the reading is the minimum over the rays, so neither the
+  // order nor a repeat changes it.
   std::size_t fanned = 0;
+  const int width = fanWidth();
   if (ox >= x0_ && ox <= x1_ && oy >= y0_ && oy <= y1_) [[likely]] {
     while (n - fanned >= 3) {
       const std::size_t left = n - fanned;
-      const int rays = left == 5 ? 5 : 4;
+      const int rays = width == 8 ? static_cast<int>(std::min<std::size_t>(left, 8)) : left == 5 ? 5 : 4;
       const double* ux = &dirX[fanned];
       const double* uy = &dirY[fanned];
       double padX[4], padY[4];
-      if (left == 3) {
+      if (left == 3 && width != 8) {
         padX[0] = padX[3] = ux[0], padX[1] = ux[1], padX[2] = ux[2];
         padY[0] = padY[3] = uy[0], padY[1] = uy[1], padY[2] = uy[2];
         ux = padX, uy = padY;

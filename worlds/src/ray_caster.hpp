@@ -19,9 +19,11 @@ struct RayHit {
   double cosIncidence = 1.0;   // |cos| of the angle between the ray and the surface normal
 };
 
-// For tests: casts fans with AVX2 when `on` and the CPU has it, else with plain x86-64; returns
-// the previous setting. Both give bit-identical results.
-bool useAvx2(bool on);
+// The instruction sets cones are cast with, narrowest first. All give bit-identical results.
+enum class Isa { Baseline, Avx2, Avx512 };
+// For tests: casts with the widest set the CPU has up to `widest` (the widest of all by default);
+// returns the one now in use.
+Isa useIsa(Isa widest);
 
 class RayCaster {
  public:
@@ -73,9 +75,12 @@ class RayCaster {
   static void hitCircle(double cx, double cy, double r, double ox, double oy, double ux, double uy, RayHit& best);
   void testOutside(double ox, double oy, double ux, double uy, int self, RayHit& best) const;
   void testCell(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const;
-  // `rays` (4 or 5) rays of one cone at once (ray_fan.cpp): the nearest echo below `cap`, else `cap`.
+  // Most rays a fan casts at once: 8 with AVX-512, else 5 (four lanes and a lone fifth ray).
+  static int fanWidth();
+  // `rays` rays of one cone at once (ray_fan.cpp), 3 to fanWidth(), with four lanes 4 or 5 (the
+  // caller pads 3 to 4): the nearest echo below `cap`, else `cap`.
   double castFan(int rays, double ox, double oy, const double* ux, const double* uy, double cap, int self, double cosCutoff) const;
-  friend struct FanCaster;  // ray_fan.cpp: castFan's body, compiled for AVX2 and for plain x86-64
+  friend struct FanCaster;  // ray_fan.cpp: castFan's body, compiled for each instruction set
 
   std::size_t segmentCount_ = 0;
   std::vector<Robot> robots_;

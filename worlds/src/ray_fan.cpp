@@ -1,9 +1,9 @@
-// Four rays of a sonar cone cast together, and a fifth alongside. Rays from one origin a few
-// degrees apart cross nearly the same cells, so instead of walking each ray's cells alone (most of
-// the cost was the walk, not the tests), the fan is swept in bands of one cell's length: each band
-// tests the cells under the bounding box of the rays' pieces in it, against four rays at once in
-// SIMD lanes (and a fifth in scalar). A lane is final once its nearest hit lies within the bands
-// swept so far. Every lane computes the same
+// The rays of a sonar cone cast together: eight at once with AVX-512, else four, and a fifth
+// alongside. Rays from one origin a few degrees apart cross nearly the same cells, so instead of
+// walking each ray's cells alone (most of the cost was the walk, not the tests), the fan is swept in
+// bands of one cell's length: each band tests the cells under the bounding box of the rays' pieces
+// in it, against all rays at once in SIMD lanes (with four lanes, a fifth in scalar). A lane is
+// final once its nearest hit lies within the bands swept so far. Every lane computes the same
 // operations as RayCaster::cast() in the same order, so each ray's distance and incidence are
 // bit-identical to casting it alone; only exact ties between two different surfaces could resolve
 // differently, as the cells are visited in another order.
@@ -21,18 +21,47 @@
 namespace frob::worlds::detail {
 namespace {
 
-using V = double __attribute__((vector_size(32)));        // one ray per lane
-using M = std::int64_t __attribute__((vector_size(32)));  // lane masks: all ones or zero
+// One ray per lane: four lanes (AVX2 or plain x86-64, with a fifth ray alone) or eight (AVX-512).
+using V4 = double __attribute__((vector_size(32)));
+using V8 = double __attribute__((vector_size(64)));
+template <class V>
+using MaskOf = std::int64_t __attribute__((vector_size(sizeof(V))));  // lane masks: all ones or zero
+template <class V>
+constexpr int kLanes = sizeof(V) / sizeof(double);
 
 constexpr std::int64_t kSign = INT64_MIN;
 
-[[gnu::always_inline]] inline V splat(double x) { return V{x, x, x, x}; }
-[[gnu::always_inline]] inline M bitsOf(V v) { return __builtin_bit_cast(M, v); }
-[[gnu::always_inline]] inline V fromBits(M m) { return __builtin_bit_cast(V, m); }
-[[gnu::always_inline]] inline V select(M mask, V a, V b) { return fromBits((bitsOf(a) & mask) | (bitsOf(b) & ~mask)); }
-[[gnu::always_inline]] inline bool any(M m) { return __builtin_reduce_or(m) != 0; }
+template <class V>
+[[gnu::always_inline]] inline V splat(double x) {
+  return V{} + x;
+}
+template <class V>
+[[gnu::always_inline]] inline MaskOf<V> bitsOf(V v) {
+  return __builtin_bit_cast(MaskOf<V>, v);
+}
+template <class V>
+[[gnu::always_inline]] inline V fromBits(MaskOf<V> m) {
+  return __builtin_bit_cast(V, m);
+}
+template <class V>
+[[gnu::always_inline]] inline V select(MaskOf<V> mask, V a, V b) {
+  return fromBits<V>((bitsOf(a) & mask) | (bitsOf(b) & ~mask));
+}
+template <class M>
+[[gnu::always_inline]] inline bool any(M m) {
+  return __builtin_reduce_or(m) != 0;
+}
+// Lane-wise square root, correctly rounded, so each lane equals std::sqrt: one vsqrtpd of the
+// caller's width, as this file is built without errno for math (worlds/CMakeLists.txt).
+template <class V>
+[[gnu::always_inline]] inline V sqrtLanes(V v) {
+  V r;
+  for (int k = 0; k < kLanes<V>; ++k) r[k] = std::sqrt(v[k]);
+  return r;
+}
 
 // The rays of the fan and each one's nearest hit so far.
+template <class V>
 struct Fan {
   double ox, oy;
   V ux, uy;
@@ -40,32 +69,32 @@ struct Fan {
   V cos;   // as RayHit::cosIncidence
 };
 
-// A fifth ray swept with the fan but tested in scalar: five lanes cost less than eight.
+// A fifth ray swept with a four-lane fan but tested in scalar: five lanes cost less than eight.
 struct Lone {
   double ux, uy;
   RayHit best;
   bool live;
 };
 
-// As hitCircle() in ray_caster.cpp, lane by lane: the scalar parts are shared, the rest per lane.
-[[gnu::always_inline]] inline void fanCircle(double cx, double cy, double r, Fan& f) {
+// As hitCircle() in ray_caster.hpp, in every lane: the scalar parts are shared, the rest per lane.
+template <class V>
+[[gnu::always_inline]] inline void fanCircle(double cx, double cy, double r, Fan<V>& f) {
   const double px = f.ox - cx, py = f.oy - cy;
   const double c = px * px + py * py - r * r;
   if (c < 0) {  // the origin is inside: every ray reads 0
-    f.best = splat(0.0), f.cos = splat(1.0);
+    f.best = splat<V>(0.0), f.cos = splat<V>(1.0);
     return;
   }
   const V b = px * f.ux + py * f.uy;
   const V disc = b * b - c;
-  const M misses = (disc < 0) | (b > 0);
+  const MaskOf<V> misses = (disc < 0) | (b > 0);
   if (!any(~misses)) return;
-  for (int k = 0; k < 4; ++k) {
-    if (misses[k]) continue;
-    const double t = -b[k] - std::sqrt(disc[k]);
-    if (t >= f.best[k]) continue;
-    const double nx = (px + t * f.ux[k]) / r, ny = (py + t * f.uy[k]) / r;
-    f.best[k] = t, f.cos[k] = std::abs(nx * f.ux[k] + ny * f.uy[k]);
-  }
+  const V t = -b - sqrtLanes(disc < 0 ? splat<V>(0.0) : disc);  // a missing lane's t is never taken
+  const MaskOf<V> nearer = ~misses & ~(t >= f.best);
+  const V nx = (px + t * f.ux) / r, ny = (py + t * f.uy) / r;
+  const V cosI = nx * f.ux + ny * f.uy;
+  f.best = select(nearer, t, f.best);
+  f.cos = select(nearer, fromBits<V>(bitsOf(cosI) & ~splat<MaskOf<V>>(kSign)), f.cos);
 }
 
 }  // namespace
@@ -76,9 +105,10 @@ struct FanCaster {
   using Span = RayCaster::Span;
   using Robot = RayCaster::Robot;
 
-  template <bool WithLone>
-  [[gnu::always_inline]] static void testCell(const RayCaster& g, int cell, Fan& f, Lone& lone, int self) {
-    const M sign = M{kSign, kSign, kSign, kSign};
+  template <class V, bool WithLone>
+  [[gnu::always_inline]] static void testCell(const RayCaster& g, int cell, Fan<V>& f, Lone& lone, int self) {
+    using M = MaskOf<V>;
+    const M sign = splat<M>(kSign);
     for (std::uint32_t k = g.segStart_[cell], end = g.segStart_[cell + 1]; k < end; ++k) {
       // As testCell(): the sign of denom folded in (an exact sign flip), then compared without dividing.
       const Seg& s = g.cellSegs_[k];
@@ -88,70 +118,77 @@ struct FanCaster {
       const double tn = wx * s.dy - wy * s.dx;  // the same for every ray of the fan
       const V vnRaw = wx * f.uy - wy * f.ux;
       const M flip = bitsOf(denomRaw) & sign;
-      const V denom = fromBits(bitsOf(denomRaw) ^ flip), vn = fromBits(bitsOf(vnRaw) ^ flip);
-      const V tns = fromBits(bitsOf(splat(tn)) ^ flip);
+      const V denom = fromBits<V>(bitsOf(denomRaw) ^ flip), vn = fromBits<V>(bitsOf(vnRaw) ^ flip);
+      const V tns = fromBits<V>(bitsOf(splat<V>(tn)) ^ flip);
       const M hit = (tns >= 0.0) & (vn >= 0.0) & (vn <= denom) & (tns < f.best * denom);
       if (!any(hit)) continue;
       const V cosI = f.ux * s.nx + f.uy * s.ny;
       f.best = select(hit, tns / denom, f.best);
-      f.cos = select(hit, fromBits(bitsOf(cosI) & ~sign), f.cos);
+      f.cos = select(hit, fromBits<V>(bitsOf(cosI) & ~sign), f.cos);
     }
     for (std::uint32_t k = g.pillarStart_[cell], end = g.pillarStart_[cell + 1]; k < end; ++k)
-      testCircle<WithLone>(g.cellPillars_[k].cx, g.cellPillars_[k].cy, g.cellPillars_[k].r, f, lone);
+      testCircle<V, WithLone>(g.cellPillars_[k].cx, g.cellPillars_[k].cy, g.cellPillars_[k].r, f, lone);
     const Span robots = g.robotSpan_[cell];
     for (std::uint32_t k = robots.begin; k < robots.end; ++k) {
       const Robot& c = g.cellRobots_[k];
-      if (c.index != self) testCircle<WithLone>(c.cx, c.cy, c.r, f, lone);
+      if (c.index != self) testCircle<V, WithLone>(c.cx, c.cy, c.r, f, lone);
     }
   }
 
-  template <bool WithLone>
-  [[gnu::always_inline]] static void testCircle(double cx, double cy, double r, Fan& f, Lone& lone) {
+  template <class V, bool WithLone>
+  [[gnu::always_inline]] static void testCircle(double cx, double cy, double r, Fan<V>& f, Lone& lone) {
     if constexpr (WithLone) RayCaster::hitCircle(cx, cy, r, f.ox, f.oy, lone.ux, lone.uy, lone.best);
     fanCircle(cx, cy, r, f);
   }
 
-  // The fan of ux/uy[0..3], and ux/uy[4] as a lone fifth ray when WithLone.
-  template <bool WithLone>
+  // The fan of ux/uy[0 .. lanes - 1], and the next ray as a lone extra one when WithLone.
+  template <class V, bool WithLone>
   [[gnu::always_inline]] static double cast(const RayCaster& g, double ox, double oy, const double* ux, const double* uy, double cap, int self,
                                             double cosCutoff) {
-    Fan f{ox, oy, V{ux[0], ux[1], ux[2], ux[3]}, V{uy[0], uy[1], uy[2], uy[3]}, splat(cap), splat(1.0)};
-    Lone lone{WithLone ? ux[4] : 0.0, WithLone ? uy[4] : 0.0, RayHit{cap, 1.0}, WithLone};
+    using M = MaskOf<V>;
+    constexpr int lanes = kLanes<V>;
+    Fan<V> f{ox, oy, {}, {}, splat<V>(cap), splat<V>(1.0)};
+    for (int k = 0; k < lanes; ++k) f.ux[k] = ux[k], f.uy[k] = uy[k];
+    Lone lone{WithLone ? ux[lanes] : 0.0, WithLone ? uy[lanes] : 0.0, RayHit{cap, 1.0}, WithLone};
     for (int k : g.outside_)
-      if (k != self) testCircle<WithLone>(g.robots_[k].cx, g.robots_[k].cy, g.robots_[k].r, f, lone);
+      if (k != self) testCircle<V, WithLone>(g.robots_[k].cx, g.robots_[k].cy, g.robots_[k].r, f, lone);
     double nearest = cap;  // the nearest echo of the lanes found final so far
-    M live = M{-1, -1, -1, -1};
+    M live = splat<M>(-1);
     int pi0 = 1, pj0 = 1, pi1 = 0, pj1 = 0;  // the cells of the previous band, already tested
+    const V far = splat<V>(INFINITY);
+    // The extreme directions of the live rays, found again only when a ray finishes: a piece's end
+    // ox + d ux is monotone in ux for d >= 0 (rounding too), so the ends of the extremes bound all.
+    double uxLo, uxHi, uyLo, uyHi;
+    auto bound = [&] {
+      uxLo = __builtin_reduce_min(select(live, f.ux, far)), uxHi = __builtin_reduce_max(select(live, f.ux, -far));
+      uyLo = __builtin_reduce_min(select(live, f.uy, far)), uyHi = __builtin_reduce_max(select(live, f.uy, -far));
+      if (lone.live) uxLo = std::min(uxLo, lone.ux), uxHi = std::max(uxHi, lone.ux), uyLo = std::min(uyLo, lone.uy), uyHi = std::max(uyHi, lone.uy);
+    };
+    bool stale = true;  // the extremes need finding again
     for (double d0 = 0.0; (any(live) || lone.live) && d0 < nearest;) {
+      if (stale) bound(), stale = false;
       const double d1 = std::min(d0 + g.cell_, nearest);
       // The live rays' pieces over [d0, d1] lie in the box of their end points.
-      const V xa = ox + d0 * f.ux, xb = ox + d1 * f.ux, ya = oy + d0 * f.uy, yb = oy + d1 * f.uy;
-      const V far = splat(INFINITY);
-      const V lxs = select(live, xa < xb ? xa : xb, far), hxs = select(live, xa < xb ? xb : xa, -far);
-      const V lys = select(live, ya < yb ? ya : yb, far), hys = select(live, ya < yb ? yb : ya, -far);
-      double lx = __builtin_reduce_min(lxs), hx = __builtin_reduce_max(hxs);
-      double ly = __builtin_reduce_min(lys), hy = __builtin_reduce_max(hys);
-      if (lone.live) {
-        const double xa1 = ox + d0 * lone.ux, xb1 = ox + d1 * lone.ux, ya1 = oy + d0 * lone.uy, yb1 = oy + d1 * lone.uy;
-        lx = std::min(lx, std::min(xa1, xb1)), hx = std::max(hx, std::max(xa1, xb1));
-        ly = std::min(ly, std::min(ya1, yb1)), hy = std::max(hy, std::max(ya1, yb1));
-      }
+      const double lx = std::min(ox + d0 * uxLo, ox + d1 * uxLo), hx = std::max(ox + d0 * uxHi, ox + d1 * uxHi);
+      const double ly = std::min(oy + d0 * uyLo, oy + d1 * uyLo), hy = std::max(oy + d0 * uyHi, oy + d1 * uyHi);
       int i0, j0, i1, j1;
       RayCaster::cellSpan(lx, hx, g.x0_, g.inv_, g.nx_, i0, i1);
       RayCaster::cellSpan(ly, hy, g.y0_, g.inv_, g.ny_, j0, j1);
       for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i)
-          if (i < pi0 || i > pi1 || j < pj0 || j > pj1) testCell<WithLone>(g, j * g.nx_ + i, f, lone, self);
+          if (i < pi0 || i > pi1 || j < pj0 || j > pj1) testCell<V, WithLone>(g, j * g.nx_ + i, f, lone, self);
       pi0 = i0, pj0 = j0, pi1 = i1, pj1 = j1;
       // A hit within [0, d1] is final: every cell the ray crosses up to d1 has been tested.
       const M done = live & (f.best <= d1);
       const M echoes = done & (f.best < nearest) & (f.cos >= cosCutoff);  // false for NaN
       if (any(echoes)) nearest = __builtin_reduce_min(select(echoes, f.best, far));
       live &= ~done;
-      if (lone.live && lone.best.distance <= d1) {
+      const bool loneDone = lone.live && lone.best.distance <= d1;
+      if (loneDone) {
         lone.live = false;
         if (lone.best.distance < nearest && lone.best.cosIncidence >= cosCutoff) nearest = lone.best.distance;
       }
+      stale = any(done) || loneDone;
       d0 = d1;
     }
     return nearest;
@@ -160,25 +197,56 @@ struct FanCaster {
 
 namespace {
 
-// Both builds give bit-identical results: the same IEEE operations, no fused multiply-adds.
+// Every build gives bit-identical results: the same IEEE operations, no fused multiply-adds.
+// Four lanes: 4 rays, or 5 with the fifth alone; fewer are padded by the caller.
 [[gnu::target("avx2")]] double castAvx2(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy, double cap, int self,
                                         double cosCutoff) {
-  return rays == 5 ? FanCaster::cast<true>(g, ox, oy, ux, uy, cap, self, cosCutoff) : FanCaster::cast<false>(g, ox, oy, ux, uy, cap, self, cosCutoff);
+  return rays == 5 ? FanCaster::cast<V4, true>(g, ox, oy, ux, uy, cap, self, cosCutoff)
+                   : FanCaster::cast<V4, false>(g, ox, oy, ux, uy, cap, self, cosCutoff);
 }
 double castBaseline(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy, double cap, int self, double cosCutoff) {
-  return rays == 5 ? FanCaster::cast<true>(g, ox, oy, ux, uy, cap, self, cosCutoff) : FanCaster::cast<false>(g, ox, oy, ux, uy, cap, self, cosCutoff);
+  return rays == 5 ? FanCaster::cast<V4, true>(g, ox, oy, ux, uy, cap, self, cosCutoff)
+                   : FanCaster::cast<V4, false>(g, ox, oy, ux, uy, cap, self, cosCutoff);
 }
-std::atomic<bool> avx2 = [] {
+// Eight lanes: up to 8 rays, padded with copies of the first (a repeat leaves the minimum as it is).
+[[gnu::target("avx512f,avx512dq,avx512vl")]] double castAvx512(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy,
+                                                               double cap, int self, double cosCutoff) {
+  double x[8], y[8];
+  for (int k = 0; k < 8; ++k) x[k] = ux[k < rays ? k : 0], y[k] = uy[k < rays ? k : 0];
+  return FanCaster::cast<V8, false>(g, ox, oy, x, y, cap, self, cosCutoff);
+}
+
+bool supported(Isa isa) {
   __builtin_cpu_init();  // may run before the runtime's own initialisation
-  return __builtin_cpu_supports("avx2") != 0;
-}();
+  switch (isa) {
+    case Isa::Avx512:
+      return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl");
+    case Isa::Avx2:
+      return __builtin_cpu_supports("avx2");
+    case Isa::Baseline:
+      return true;
+  }
+  return false;
+}
+// The widest instruction set the CPU has, or a narrower one a test asked for.
+Isa widestUpTo(Isa wanted) {
+  return wanted == Isa::Avx512 && !supported(Isa::Avx512) ? widestUpTo(Isa::Avx2) : supported(wanted) ? wanted : Isa::Baseline;
+}
+std::atomic<Isa> isa = widestUpTo(Isa::Avx512);
 
 }  // namespace
 
+int RayCaster::fanWidth() { return isa.load(std::memory_order_relaxed) == Isa::Avx512 ? 8 : 5; }
+
 double RayCaster::castFan(int rays, double ox, double oy, const double* ux, const double* uy, double cap, int self, double cosCutoff) const {
-  return (avx2.load(std::memory_order_relaxed) ? castAvx2 : castBaseline)(*this, rays, ox, oy, ux, uy, cap, self, cosCutoff);
+  const Isa now = isa.load(std::memory_order_relaxed);
+  return (now == Isa::Avx512 ? castAvx512 : now == Isa::Avx2 ? castAvx2 : castBaseline)(*this, rays, ox, oy, ux, uy, cap, self, cosCutoff);
 }
 
-bool useAvx2(bool on) { return avx2.exchange(on && __builtin_cpu_supports("avx2")); }
+Isa useIsa(Isa widest) {
+  const Isa now = widestUpTo(widest);
+  isa.store(now);
+  return now;
+}
 
 }  // namespace frob::worlds::detail

@@ -15,10 +15,11 @@ namespace {
 
 constexpr int kVelocityIterations = 8;
 constexpr int kPositionIterations = 3;
-// Robots per chunk of parallel work at least (Workers makes a few chunks per thread): sensing a
-// robot costs some 5 us; noisy odometry some 0.15 us, so chunks of 32 are worth handing out.
-constexpr std::size_t kSenseGrain = 1;
-constexpr std::size_t kOdometryGrain = 32;
+// Robots per chunk of parallel work at least (Workers makes up to 16 chunks per thread), so that a
+// chunk is some 50 us of work, worth its claim (about 1 us): sensing a robot costs some 4 us, noisy
+// odometry some 0.15 us.
+constexpr std::size_t kSenseGrain = 12;
+constexpr std::size_t kOdometryGrain = 256;
 // Continuous collision is on when a robot can cover more than this part of its radius in a step.
 constexpr double kTunnelFraction = 0.25;
 
@@ -29,7 +30,6 @@ struct RobotState {
   b2Body* body = nullptr;
   std::vector<double> rayX, rayY;      // per sonar, per ray: direction relative to heading
   std::vector<Vec2> sonarOffsets;      // per sonar: sensor position relative to the centre, robot frame
-  std::vector<double> worldX, worldY;  // scratch while sensing: rayX/rayY in the world frame
   double cosCutoff = 1.0;
   double forward = 0.0, turn = 0.0;  // commands after acceleration limits
   Pose2 odometry;
@@ -165,7 +165,6 @@ struct Simulation::Impl : b2ContactListener {
         r.rayX.push_back(u.x()), r.rayY.push_back(u.y());
       }
     }
-    r.worldX.resize(r.rayX.size()), r.worldY.resize(r.rayY.size());
     r.cosCutoff = std::cos(s.specularCutoff);
     r.previous = poseOf(r.body);
     r.odometry = r.previous;
@@ -214,16 +213,19 @@ struct Simulation::Impl : b2ContactListener {
 
   // The sensor frame of robot `i`, with the keys from `keysNow` on that fall in this step. Sonars
   // read per sonar the nearest echoing ray, with noise proportional to range.
-  void senseRobot(std::size_t i, Keys::const_iterator keysNow) {
+  // `worldX`/`worldY`: scratch for rayX/rayY in the world frame, one pair per chunk of robots
+  // rather than per robot, so that a step touches less memory.
+  void senseRobot(std::size_t i, Keys::const_iterator keysNow, std::vector<double>& worldX, std::vector<double>& worldY) {
     RobotState& r = robots[i];
     SensorFrame& f = r.frame;
     const SonarDef& s = r.def.sonar;
     const Pose2 pose = poseOf(r.body);
     const double c = std::cos(pose.heading), sn = std::sin(pose.heading);
     auto rotate = [&](const Vec2& v) { return Vec2(c * v.x() - sn * v.y(), sn * v.x() + c * v.y()); };
+    worldX.resize(r.rayX.size()), worldY.resize(r.rayY.size());
     for (std::size_t k = 0; k < r.rayX.size(); ++k) {  // every ray at once: the compiler vectorises it
-      r.worldX[k] = c * r.rayX[k] - sn * r.rayY[k];
-      r.worldY[k] = sn * r.rayX[k] + c * r.rayY[k];
+      worldX[k] = c * r.rayX[k] - sn * r.rayY[k];
+      worldY[k] = sn * r.rayX[k] + c * r.rayY[k];
     }
     const std::size_t rays = static_cast<std::size_t>(s.rays);
     for (std::size_t j = 0; j < r.sonarOffsets.size(); ++j) {
@@ -232,7 +234,7 @@ struct Simulation::Impl : b2ContactListener {
       // surface beyond it cannot change the reading, and the shorter walk saves most of the work.
       // A hit whose cosIncidence is below the cutoff is reflected away and does not echo.
       const double nearest =
-          caster.castCone(origin, {&r.worldX[j * rays], rays}, {&r.worldY[j * rays], rays}, s.maxRange, static_cast<int>(i), r.cosCutoff);
+          caster.castCone(origin, {&worldX[j * rays], rays}, {&worldY[j * rays], rays}, s.maxRange, static_cast<int>(i), r.cosCutoff);
       const double noise = r.sonarRng.gaussian();  // drawn for every sonar so the stream never depends on hits
       f.sonar[j] = nearest >= s.maxRange ? s.maxRange : std::clamp(nearest * (1.0 + s.noise * noise), s.minRange, s.maxRange);
     }
@@ -304,7 +306,8 @@ void Simulation::sense() {
   // may be sensed on any thread in any order with bit-identical results.
   const auto keysNow = std::lower_bound(s.keys.begin(), s.keys.end(), s.steps, [](const auto& k, std::int64_t step) { return k.first < step; });
   s.workers.run(s.robots.size(), kSenseGrain, [&s, keysNow](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) s.senseRobot(i, keysNow);
+    std::vector<double> worldX, worldY;
+    for (std::size_t i = begin; i < end; ++i) s.senseRobot(i, keysNow, worldX, worldY);
   });
 }
 
