@@ -28,8 +28,8 @@ struct RobotState {
   RobotDef def;
   RobotSpec spec;
   b2Body* body = nullptr;
-  std::vector<double> rayX, rayY;      // per sonar, per ray: direction relative to heading
-  std::vector<Vec2> sonarOffsets;      // per sonar: sensor position relative to the centre, robot frame
+  std::vector<double> rayX, rayY;  // per sonar, per ray: direction relative to heading
+  std::vector<Vec2> sonarOffsets;  // per sonar: sensor position relative to the centre, robot frame
   double cosCutoff = 1.0;
   double forward = 0.0, turn = 0.0;  // commands after acceleration limits
   Pose2 odometry;
