@@ -116,6 +116,8 @@ CompilerSetup compilerSetup(bool checked) {
     // DWARF 4: binutils 2.40's addr2line, which symbolizes the reports, misnames headers in clang's DWARF 5.
     s.flags.insert(s.flags.end(), {"-fsanitize=address,undefined", "-fno-sanitize-recover=all", "-fno-omit-frame-pointer", "-gline-tables-only",
                                    "-gdwarf-4", "-D_GLIBCXX_ASSERTIONS"});
+    // It calls its own, checked copies of the library's inline functions, never the host's unchecked ones.
+    s.flags.emplace_back("-Wl,-Bsymbolic-functions");
     s.precompiledHeader.clear();  // made with other flags
     s.checked = true;
   }

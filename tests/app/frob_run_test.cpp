@@ -164,7 +164,11 @@ TEST(FrobRun, CheckStopsAtAnIndexOutOfRangeNamingTheLine) {
                                       "#include <vector>\nconst std::vector<double> speeds{0.1, 0.1, 0.1};\n");
   const fs::path dir = freshFolder("check");
   write(dir, "reads_past.cpp", file);
+#if defined(__has_feature)
+#if !__has_feature(address_sanitizer)  // a sanitized build compiles every controller with the sanitizers
   EXPECT_EQ(runFrob(dir, {"run", "reads_past.cpp", "--quiet", "--seconds", "1"}).status, 0);
+#endif
+#endif
   const FrobResult r = runFrob(dir, {"run", "reads_past.cpp", "--check", "--quiet", "--seconds", "1"});
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(lines(r.err).back(),
