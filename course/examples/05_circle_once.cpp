@@ -130,15 +130,14 @@ Task<Wheels> circleOnce() {
 }
 
 // circleOnceP: circleOnce, and where we were closest to `g`. withB's function makes the behavior
-// from the task state when the task starts, so atMin starts watching there. The pair withB returns
-// holds circleOnce's result (nothing) and the closest point: we keep the second.
+// from the task state when the task starts, so atMin starts watching there. circleOnce has no
+// result, so withB gives the closest point alone (for a task with a result, a pair of both).
 Task<Wheels, Point2> circleOnceP(Point2 g) {
   auto closestP = [g](const TaskState& ts) {
     const Robot& r = ts.robot();
     return atMin(distance(place(r), g), place(r));
   };
-  auto result = co_await withB(closestP, circleOnce());
-  co_return result.second;
+  co_return co_await withB(closestP, circleOnce());
 }
 
 // ---- Step 4. The controller: to the obstacle, once round it, back to the closest point ---------

@@ -2,13 +2,28 @@
 /// Task transformers (the paper's section 3.2): new tasks made from old ones, each scoped to the
 /// task it wraps and all of that task's subtasks.
 
-#include "frob/detail/task_transformers.hpp"
 #include "frob/task.hpp"
 
 #include <memory>
 #include <optional>
 #include <type_traits>
 #include <utility>
+
+namespace frob {
+
+/// What timeLimit(t, s) gives: `t`'s result or std::nullopt when time ran out; for a task without
+/// a result, true when it ended in time (the paper's `Maybe ()`).
+template <class B>
+using TimeLimitResult = std::conditional_t<std::is_void_v<B>, bool, std::optional<B>>;
+
+/// What withB(f, t) gives: `t`'s result paired with the behavior's value `C` as `t` ended; for a
+/// task without a result, the behavior's value alone.
+template <class B, class C>
+using WithBResult = std::conditional_t<std::is_void_v<B>, C, std::pair<B, C>>;
+
+}  // namespace frob
+
+#include "frob/detail/task_transformers.hpp"  // the coroutines behind the declarations below
 
 namespace frob {
 
@@ -30,11 +45,11 @@ template <class A, class B>
   return detail::interrupted(std::move(t), std::move(asException)).at(loc).named(std::move(name));
 }
 
-/// The paper's timeLimit: `t`'s result, or no value if `t` has not ended within `seconds`
-/// (then `t` and its subtasks are aborted).
+/// The paper's timeLimit: `t`'s result, or std::nullopt if `t` has not ended within `seconds`
+/// (then `t` and its subtasks are aborted). For a task without a result (Task<A>), a bool: true
+/// when `t` ended in time, so `if (!co_await timeLimit(t, 5_s))` reads "if it ran out of time".
 template <class A, class B>
-[[nodiscard]] Task<A, std::optional<ResultOf<B>>> timeLimit(Task<A, B> t, double seconds,
-                                                            std::source_location loc = std::source_location::current()) {
+[[nodiscard]] Task<A, TimeLimitResult<B>> timeLimit(Task<A, B> t, double seconds, std::source_location loc = std::source_location::current()) {
   std::string name = "timeLimit(" + t.name() + ")";
   return detail::limited(std::move(t), seconds).at(loc).named(std::move(name));
 }
@@ -49,7 +64,8 @@ template <class X, class A, class B>
 }
 
 /// The paper's withB: runs `t` with the behavior `f(state)` started beside it, and returns
-/// `t`'s result paired with that behavior's value at the instant `t` ended. `f` gets the task state of withB's start by value, as
+/// `t`'s result paired with that behavior's value at the instant `t` ended; for a task without a
+/// result (Task<A>), that value alone. `f` gets the task state of withB's start by value, as
 /// mkTask's function does: it stays put while `t`'s subtasks run.
 template <class F, class A, class B>
   requires std::invocable<F&, const TaskState&>

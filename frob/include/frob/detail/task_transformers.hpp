@@ -1,6 +1,7 @@
 #pragma once
 // The machinery behind task_transformers.hpp: scopes kept in a run's context while a wrapped task
-// runs, and the coroutines behind each transformer.
+// runs, and the coroutines behind each transformer. task_transformers.hpp includes it once it has
+// defined TimeLimitResult and WithBResult.
 
 #include "frob/picture.hpp"
 #include "frob/task.hpp"
@@ -142,7 +143,7 @@ Task<A, B> catching(Task<A, B> body, H handler) {
 
 // timeLimit: `body` with a scope that aborts it `limit` seconds after it starts.
 template <class A, class B>
-Task<A, std::optional<ResultOf<B>>> limited(Task<A, B> body, double limit) {
+Task<A, TimeLimitResult<B>> limited(Task<A, B> body, double limit) {
   RunContext<A>* ctx = co_await GetContext{};
   std::int64_t id = ctx->nextScope++;
   char reason[64];
@@ -155,7 +156,11 @@ Task<A, std::optional<ResultOf<B>>> limited(Task<A, B> body, double limit) {
   } catch (const ScopeSignal& s) {
     if (s.scope != id) throw;
   }
-  co_return result;
+  if constexpr (std::is_void_v<B>) {
+    co_return result.has_value();
+  } else {
+    co_return result;
+  }
 }
 
 // withExit: `body` with a scope that aborts it when `e` occurs, giving the event's value.
@@ -181,14 +186,19 @@ Task<A, X> exiting(Event<X> e, Task<A, B> body) {
 
 // withB: `body` with the behavior `make(state)` sampled beside it from its start.
 template <class C, class F, class A, class B>
-Task<A, std::pair<ResultOf<B>, C>> beside(F make, Task<A, B> body) {
+Task<A, WithBResult<B, C>> beside(F make, Task<A, B> body) {
   RunContext<A>* ctx = co_await GetContext{};
   const TaskState start = ctx->state;  // a copy: the context's state moves on with each subtask
   Behavior<C> c = toBehavior(std::invoke(make, start));
   c.at(*ctx->now);  // it starts with the task
   ScopeEntry<std::function<void(const Instant&)>> watch(ctx->watchers, [c](const Instant& now) { c.at(now); });
-  ResultOf<B> r = co_await resultOf(std::move(body)).quiet();
-  co_return std::pair<ResultOf<B>, C>(std::move(r), c.at(*ctx->now));
+  if constexpr (std::is_void_v<B>) {
+    co_await std::move(body);
+    co_return c.at(*ctx->now);
+  } else {
+    B r = co_await std::move(body);
+    co_return std::pair<B, C>(std::move(r), c.at(*ctx->now));
+  }
 }
 
 // withMyResult: the task `make(mine)`, with `mine` its run's output one instant late.
