@@ -40,8 +40,8 @@ Task<Wheels, bool> driveTo(Point2 goal) {
     Behavior<double> left = distance(place(r), goal);
     auto forward = min(kSpeed, left) * max(cos(error), 0.0);
     auto ahead = min(sonar(r, 15), sonar(r, 0), sonar(r, 1));
-    Event<bool> there = predicate(left < 15_cm).map([] { return true; });
-    Event<bool> blocked = predicate(ahead < 40_cm).map([] { return false; });
+    Event<bool> there = predicate(left < 15_cm).as(true);
+    Event<bool> blocked = predicate(ahead < 40_cm).as(false);
     return std::pair{wheels(forward, clamp(2.0 * error, -1.0, 1.0)), there | blocked};
   });
 }
@@ -105,7 +105,7 @@ Task<Wheels> roundCorner() {
     Behavior<double> d = wallOnLeft(r).map(&Wall::distance);
     double radius = kSetpoint + r.spec().radius;  // the robot's centre keeps this far from the end
     return std::tuple{wheels(kSpeed, kSpeed / radius), predicate(d < 80_cm),
-                      after(8_s).map([] { return RoboErr("followWall: the wall is lost"); })};
+                      after(8_s).as(RoboErr("followWall: the wall is lost"))};
   });
 }
 
