@@ -247,10 +247,10 @@ Task<Wheels> bug(Point2 g);
 
 // goAround: round the obstacle in at most 30 s, then BUG again from here (the paper's tail call).
 // A robot that follows a wall for longer has lost the obstacle it met: it may be going round a
-// neighbour whose circle never passes where it started. timeLimit gives no value then, and we
+// neighbour whose circle never passes where it started. timeLimit gives false then, and we
 // raise an error for taskCatch.
 Task<Wheels> goAround(Point2 g) {
-  std::optional<Unit> done = co_await timeLimit(roundObstacle(g), 30_s);
+  bool done = co_await timeLimit(roundObstacle(g), 30_s);
   if (!done) co_await taskError(RoboErr("going round one obstacle took more than 30 s"));
   co_await become(bug(g));
 }

@@ -107,8 +107,8 @@ Task<Wheels, bool> driveTo(Point2 goal) {
     Behavior<double> error = wrapAngle(heading(goal - place(r)) - orientation(r));
     Behavior<double> left = distance(place(r), goal);
     auto forward = min(kSpeed, left) * max(cos(error), 0.0);  // slow down at the end
-    Event<DriveEnd> there = predicate(left < 10_cm).map([] { return DriveEnd{DriveEnd::there}; });
-    Event<DriveEnd> blocked = blockedAhead(r).map([] { return DriveEnd{DriveEnd::blocked}; });
+    Event<DriveEnd> there = predicate(left < 10_cm).as(DriveEnd{DriveEnd::there});
+    Event<DriveEnd> blocked = blockedAhead(r).as(DriveEnd{DriveEnd::blocked});
     Event<DriveEnd> bumped = bumper(r).map([](const BumperHit& h) { return DriveEnd{DriveEnd::bumped, h.angle}; });
     return std::pair{wheels(forward, clamp(2.0 * error, -1.0, 1.0)), there | blocked | bumped};
   });
@@ -155,7 +155,7 @@ Task<Wheels> roundCorner() {
     Behavior<double> d = wallOnLeft(r).map(&Wall::distance);
     double radius = kSetpoint + r.spec().radius;
     return std::tuple{wheels(kSpeed, kSpeed / radius), predicate(d < 80_cm),
-                      after(8_s).map([] { return RoboErr("followWall: the wall is lost"); })};
+                      after(8_s).as(RoboErr("followWall: the wall is lost"))};
   });
 }
 

@@ -36,8 +36,8 @@ Task<Wheels, bool> driveTo(Point2 goal) {
     Behavior<double> left = distance(place(r), goal);
     auto forward = min(kSpeed, left) * max(cos(angle), 0.0);
     auto turn = clamp(2.0 * angle, -1.0, 1.0);
-    Event<bool> there = predicate(left < 10_cm).map([] { return true; });
-    Event<bool> blocked = predicate(frontSonar(r) < 30_cm).map([] { return false; });
+    Event<bool> there = predicate(left < 10_cm).as(true);
+    Event<bool> blocked = predicate(frontSonar(r) < 30_cm).as(false);
     return std::pair{wheels(forward, turn), there | blocked};
   });
 }

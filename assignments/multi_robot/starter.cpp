@@ -46,7 +46,7 @@ Task<Wheels, bool> driveTo(Point2 goal) {
     Behavior<double> error = wrapAngle(heading(goal - place(r)) - orientation(r));
     Behavior<double> left = distance(place(r), goal);
     auto forward = min(kSpeed, left) * max(cos(error), 0.0);  // slow down at the end
-    Event<bool> there = predicate(left < 10_cm).map([] { return true; });
+    Event<bool> there = predicate(left < 10_cm).as(true);
     return std::pair{wheels(forward, clamp(2.0 * error, -1.0, 1.0)), there};
   });
 }

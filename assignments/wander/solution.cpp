@@ -85,7 +85,7 @@ Task<Wheels> turnUntilClear(bool left, double clear) {
 // Step 5. runAround, as in the paper: goAhead, turn, again and again.
 // The first part of each turn lasts from 0.5 to 2 s (30 to 115 degrees): the fractional parts of
 // k times the golden ratio, a sequence that never repeats and spreads evenly over [0, 1). Then we
-// turn on until the way ahead is long (at most one full turn: timeLimit gives no value when time
+// turn on until the way ahead is long (at most one full turn: timeLimit gives false when time
 // is up); in a tight spot, where there is no long way, until it is merely clear.
 Task<Wheels> runAround() {
   for (int k = 1;; ++k) {

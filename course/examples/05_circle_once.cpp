@@ -40,8 +40,8 @@ Task<Wheels, bool> driveTo(Point2 goal) {
     Behavior<double> left = distance(place(r), goal);
     auto forward = min(kSpeed, left) * max(cos(error), 0.0);
     auto ahead = min(sonar(r, 15), sonar(r, 0), sonar(r, 1));
-    Event<bool> there = predicate(left < 15_cm).map([] { return true; });
-    Event<bool> blocked = predicate(ahead < 40_cm).map([] { return false; });
+    Event<bool> there = predicate(left < 15_cm).as(true);
+    Event<bool> blocked = predicate(ahead < 40_cm).as(false);
     return std::pair{wheels(forward, clamp(2.0 * error, -1.0, 1.0)), there | blocked};
   });
 }
@@ -105,7 +105,7 @@ Task<Wheels> roundCorner() {
     Behavior<double> d = wallOnLeft(r).map(&Wall::distance);
     double radius = kSetpoint + r.spec().radius;  // the robot's centre keeps this far from the end
     return std::tuple{wheels(kSpeed, kSpeed / radius), predicate(d < 80_cm),
-                      after(8_s).map([] { return RoboErr("followWall: the wall is lost"); })};
+                      after(8_s).as(RoboErr("followWall: the wall is lost"))};
   });
 }
 
@@ -130,15 +130,14 @@ Task<Wheels> circleOnce() {
 }
 
 // circleOnceP: circleOnce, and where we were closest to `g`. withB's function makes the behavior
-// from the task state when the task starts, so atMin starts watching there. The pair withB returns
-// holds circleOnce's result (nothing) and the closest point: we keep the second.
+// from the task state when the task starts, so atMin starts watching there. circleOnce has no
+// result, so withB gives the closest point alone (for a task with a result, a pair of both).
 Task<Wheels, Point2> circleOnceP(Point2 g) {
   auto closestP = [g](const TaskState& ts) {
     const Robot& r = ts.robot();
     return atMin(distance(place(r), g), place(r));
   };
-  auto result = co_await withB(closestP, circleOnce());
-  co_return result.second;
+  co_return co_await withB(closestP, circleOnce());
 }
 
 // ---- Step 4. The controller: to the obstacle, once round it, back to the closest point ---------

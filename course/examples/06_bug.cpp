@@ -75,8 +75,8 @@ Task<Wheels, bool> driveTo(Point2 goal) {
     Behavior<double> error = wrapAngle(heading(goal - place(r)) - orientation(r));
     Behavior<double> left = distance(place(r), goal);
     auto forward = min(kSpeed, left) * max(cos(error), 0.0);  // slow down at the end
-    Event<bool> there = predicate(left < 15_cm).map([] { return true; });
-    Event<bool> blocked = predicate(frontArc(r) < 40_cm).map([] { return false; });
+    Event<bool> there = predicate(left < 15_cm).as(true);
+    Event<bool> blocked = predicate(frontArc(r) < 40_cm).as(false);
     return std::pair{wheels(forward, clamp(2.0 * error, -1.0, 1.0)), there | blocked};
   });
 }
@@ -115,7 +115,7 @@ Task<Wheels> roundCorner() {
     Behavior<double> d = wallOnLeft(r).map(&Wall::distance);
     double radius = kSetpoint + r.spec().radius;  // the robot's centre keeps this far from the end
     return std::tuple{wheels(kSpeed, kSpeed / radius), predicate(d < 80_cm),
-                      after(8_s).map([] { return RoboErr("followWall: the wall is lost"); })};
+                      after(8_s).as(RoboErr("followWall: the wall is lost"))};
   });
 }
 
@@ -144,15 +144,14 @@ Task<Wheels> circleOnce() {
 }
 
 // circleOnceP: circleOnce, and the place where we were closest to the goal. withB runs a behavior
-// beside a task and adds its final value to the task's result; atMin(a, b) is the value of b when a
-// was smallest. We also draw that point as it changes.
+// beside a task and gives its final value (with the task's result, if it has one); atMin(a, b)
+// is the value of b when a was smallest. We also draw that point as it changes.
 Task<Wheels, Point2> circleOnceP(Point2 g) {
   TaskState ts = co_await getTaskState();
   const Robot& r = ts.robot();
   Behavior<Point2> closest = atMin(distance(place(r), g), place(r));
   auto closestP = [closest](const TaskState&) { return closest; };
-  auto result = co_await withB(closestP, withPicture(marker(closest), circleOnce()));
-  co_return result.second;
+  co_return co_await withB(closestP, withPicture(marker(closest), circleOnce()));
 }
 
 // circleTo: follow the wall until we are at `p`.

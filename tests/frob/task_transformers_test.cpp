@@ -47,31 +47,42 @@ Task<Wheels, int> driveThen(double forward, double seconds, int result) {
   return mkTask([=](const TaskState&) { return std::pair{wheels(forward, 0), after(seconds).map([result] { return result; })}; });
 }
 
+// A task with a result gives std::optional of it; one without gives whether it ended in time.
+static_assert(std::is_same_v<decltype(timeLimit(driveThen(3, 0.1, 5), 1.0)), Task<Wheels, std::optional<int>>>);
+static_assert(std::is_same_v<decltype(timeLimit(drive(2, 0.1), 1.0)), Task<Wheels, bool>>);
+
 TEST(Transformers, TimeLimitAbortsOrPassesTheResultThrough) {
-  std::optional<Unit> late;
-  std::optional<Unit> early;
+  bool late = true;
+  bool early = false;
   std::optional<int> value;
+  std::optional<int> cut = 0;
   auto seq = [&]() -> Task<Wheels> {
     late = co_await timeLimit(forever(1), 0.3);
     early = co_await timeLimit(drive(2, 0.1), 1.0);
     value = co_await timeLimit(driveThen(3, 0.1, 5), 1.0);
+    cut = co_await timeLimit(driveThen(4, 1.0, 6), 0.1);
   };
-  std::vector<double> f = forwardOf(runTask(idleRobot(), seq()), 7);
-  EXPECT_FALSE(late.has_value());
-  EXPECT_TRUE(early.has_value());
+  std::vector<double> f = forwardOf(runTask(idleRobot(), seq()), 8);
+  EXPECT_FALSE(late);  // cut short at 0.3 s
+  EXPECT_TRUE(early);  // ended at 0.1 s, within its 1 s
   EXPECT_EQ(value, 5);
-  EXPECT_EQ(f, (std::vector<double>{1, 1, 1, 2, 3, 0, 0}));
+  EXPECT_EQ(cut, std::nullopt);
+  EXPECT_EQ(f, (std::vector<double>{1, 1, 1, 2, 3, 4, 0, 0}));
 }
 
+// A task with a result gives it paired with the behavior's value; one without, the value alone.
+static_assert(std::is_same_v<decltype(withB([](const TaskState&) { return time(); }, driveThen(1, 0.2, 8))), Task<Wheels, std::pair<int, double>>>);
+static_assert(std::is_same_v<decltype(withB([](const TaskState&) { return time(); }, drive(1, 0.5))), Task<Wheels, double>>);
+
 TEST(Transformers, WithBPairsTheResultWithTheBehaviorAtTheEnd) {
-  std::pair<Unit, double> got;
+  double got = 0;
   std::pair<int, double> both;
   auto seq = [&]() -> Task<Wheels> {
     got = co_await withB([](const TaskState&) { return integral(constant(2.0)); }, drive(1, 0.5));
     both = co_await withB([](const TaskState&) { return integral(constant(3.0)); }, driveThen(1, 0.2, 8));
   };
   (void)forwardOf(runTask(idleRobot(), seq()), 9);
-  EXPECT_NEAR(got.second, 1.0, 1e-12);  // 2 m/s for the task's 0.5 s
+  EXPECT_NEAR(got, 1.0, 1e-12);  // 2 m/s for the task's 0.5 s
   EXPECT_EQ(both.first, 8);
   EXPECT_NEAR(both.second, 0.6, 1e-12);  // 3 m/s for 0.2 s
 }
@@ -87,13 +98,12 @@ TEST(Transformers, WithBGivesItsFunctionTheStateOfItsStartByValue) {
   };
   auto seq = [&]() -> Task<Wheels> {
     co_await drive(1, 0.2);
-    travelled = (co_await withB(
-                     [](const TaskState& ts) {
-                       const Point2& start = ts.initialPlace();  // kept by reference, as students write
-                       return lift([&start](const Point2& p) { return distance(p, start); }, place(ts.robot()));
-                     },
-                     twoLegs()))
-                    .second;
+    travelled = co_await withB(
+        [](const TaskState& ts) {
+          const Point2& start = ts.initialPlace();  // kept by reference, as students write
+          return lift([&start](const Point2& p) { return distance(p, start); }, place(ts.robot()));
+        },
+        twoLegs());
   };
   (void)forwardOf(runTask(r, seq()), 12);
   EXPECT_NEAR(travelled, 0.8, 1e-12);  // from x = 0.2 to x = 1.0, not from the second leg's start (0.3)

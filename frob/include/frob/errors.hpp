@@ -22,10 +22,6 @@ class UsageError : public std::logic_error {
   using std::logic_error::logic_error;
 };
 
-namespace detail {
-[[noreturn]] void failAssert(const char* condition, const char* message, const char* file, int line);
-}  // namespace detail
-
 /// Checks a precondition in every build; throws UsageError naming the file, line and `message`.
 #define FROB_ASSERT(condition, message) ((condition) ? static_cast<void>(0) : ::frob::detail::failAssert(#condition, message, __FILE__, __LINE__))
 
@@ -35,26 +31,11 @@ namespace detail {
 [[nodiscard]] inline bool isFinite(const Wheels& w) { return std::isfinite(w.forward) && std::isfinite(w.turn); }
 [[nodiscard]] inline bool isFinite(const Pose2& p) { return p.position.allFinite() && std::isfinite(p.heading); }
 
-namespace detail {
-[[nodiscard]] std::string notFiniteMessage(const std::string& what, const Instant& now);
+}  // namespace frob
 
-template <class T>
-class CheckFiniteNode final : public BehaviorNode<T> {
- public:
-  CheckFiniteNode(std::shared_ptr<BehaviorNode<T>> b, std::string what) : b_(std::move(b)), what_(std::move(what)) {}
+#include "frob/detail/errors.hpp"  // the machinery behind the declarations below, which needs isFinite
 
- protected:
-  T compute(const Instant& now) override {
-    const T& v = b_->at(now);
-    if (!isFinite(v)) throw FrobError(notFiniteMessage(what_, now));
-    return v;
-  }
-
- private:
-  std::shared_ptr<BehaviorNode<T>> b_;
-  std::string what_;
-};
-}  // namespace detail
+namespace frob {
 
 /// `b`, except that sampling a non-finite value (NaN, infinity) throws FrobError naming `what`
 /// and the simulated time, so that a NaN is never hidden.

@@ -1,7 +1,9 @@
 #pragma once
 /// Frob: functional reactive robotics. The one header a controller includes.
 /// Where to start: frob/README.md lists every public name, grouped, with its meaning and header;
-/// course/examples/01_run_around.cpp is the first program, course/lessons/ the course.
+/// course/examples/01_run_around.cpp is the first program, course/lessons/ the course. Each header
+/// below is a list of `///`-commented declarations, task.hpp and behavior.hpp first; the machinery
+/// behind them is in frob/detail/, which a controller never needs to read.
 
 #include "frob/behavior.hpp"
 #include "frob/calculus.hpp"

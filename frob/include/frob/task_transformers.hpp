@@ -4,86 +4,28 @@
 
 #include "frob/task.hpp"
 
-#include <cstdio>
 #include <memory>
+#include <optional>
+#include <type_traits>
+#include <utility>
 
 namespace frob {
-namespace detail {
 
-// Keeps a scope entry in a run's context while the wrapping frame lives (also when it is aborted).
-template <class T>
-class ScopeEntry {
- public:
-  ScopeEntry(std::vector<T>& stack, T entry) : stack_(stack) { stack_.push_back(std::move(entry)); }
-  ScopeEntry(const ScopeEntry&) = delete;
-  ScopeEntry& operator=(const ScopeEntry&) = delete;
-  ~ScopeEntry() { stack_.pop_back(); }
+/// What timeLimit(t, s) gives: `t`'s result or std::nullopt when time ran out; for a task without
+/// a result, true when it ended in time (the paper's `Maybe ()`).
+template <class B>
+using TimeLimitResult = std::conditional_t<std::is_void_v<B>, bool, std::optional<B>>;
 
- private:
-  std::vector<T>& stack_;
-};
+/// What withB(f, t) gives: `t`'s result paired with the behavior's value `C` as `t` ended; for a
+/// task without a result, the behavior's value alone.
+template <class B, class C>
+using WithBResult = std::conditional_t<std::is_void_v<B>, C, std::pair<B, C>>;
 
-class PublishedPicture {
- public:
-  PublishedPicture(std::shared_ptr<DebugChannel> debug, Behavior<Picture> p) : debug_(std::move(debug)), handle_(debug_->publish(std::move(p))) {}
-  PublishedPicture(const PublishedPicture&) = delete;
-  PublishedPicture& operator=(const PublishedPicture&) = delete;
-  ~PublishedPicture() { debug_->withdraw(handle_); }
+}  // namespace frob
 
- private:
-  std::shared_ptr<DebugChannel> debug_;
-  std::int64_t handle_;
-};
+#include "frob/detail/task_transformers.hpp"  // the coroutines behind the declarations below
 
-// Runs `body` with the scope `open(ctx)` makes alive around it.
-template <class A, class B, class Open>
-Task<A, B> scoped(Task<A, B> body, Open open) {
-  RunContext<A>* ctx = co_await GetContext{};
-  auto scope = open(*ctx);
-  if constexpr (std::is_void_v<B>) {
-    co_await std::move(body);
-  } else {
-    co_return co_await std::move(body);
-  }
-}
-
-// The parameter type of a lambda's call operator.
-template <class M>
-struct FirstArg;
-template <class R, class C, class Arg>
-struct FirstArg<R (C::*)(Arg) const> {
-  using type = std::remove_cvref_t<Arg>;
-};
-template <class R, class C, class Arg>
-struct FirstArg<R (C::*)(Arg)> {
-  using type = std::remove_cvref_t<Arg>;
-};
-
-// The output type A of the task `f(Behavior<A>)` makes: from f's parameter, or Wheels (what a
-// robot drives) for a generic lambda such as [](auto mine) { ... }.
-template <class F>
-auto fedOutput() {
-  if constexpr (requires { &F::operator(); }) {
-    return std::type_identity<frob::ValueOf<typename FirstArg<decltype(&F::operator())>::type>>{};
-  } else {
-    return std::type_identity<Wheels>{};
-  }
-}
-template <class F>
-using FedOutput = typename decltype(fedOutput<F>())::type;
-
-// Awaits `body` and gives its result, with Unit for a void task.
-template <class A, class B>
-Task<A, ResultOf<B>> resultOf(Task<A, B> body) {
-  if constexpr (std::is_void_v<B>) {
-    co_await std::move(body);
-    co_return Unit{};
-  } else {
-    co_return co_await std::move(body);
-  }
-}
-
-}  // namespace detail
+namespace frob {
 
 /// The paper's taskCatch: runs `t`; if it fails with a RoboErr, becomes `handler(error)`.
 /// The handler takes this task's place (a tail call), so a task that restarts itself from its
@@ -92,22 +34,7 @@ template <class A, class B, class H>
   requires std::invocable<H&, const RoboErr&>
 [[nodiscard]] Task<A, B> taskCatch(Task<A, B> t, H handler, std::source_location loc = std::source_location::current()) {
   std::string inner = t.name();
-  return [](Task<A, B> body, H h) -> Task<A, B> {
-    std::optional<RoboErr> caught;
-    try {
-      if constexpr (std::is_void_v<B>) {
-        co_await std::move(body);
-        co_return;
-      } else {
-        co_return co_await std::move(body);
-      }
-    } catch (const RoboErr& e) {
-      caught = e;
-    }
-    co_await become(Task<A, B>(std::invoke(h, *caught)));
-  }(std::move(t), std::move(handler))
-                                         .at(loc)
-                                         .named("taskCatch(" + inner + ")");
+  return detail::catching(std::move(t), std::move(handler)).at(loc).named("taskCatch(" + inner + ")");
 }
 
 /// The paper's addError: `error` fails every subtask of `t` while `t` runs (scoped).
@@ -115,37 +42,16 @@ template <class A, class B>
 [[nodiscard]] Task<A, B> addError(Event<RoboErr> error, Task<A, B> t, std::source_location loc = std::source_location::current()) {
   std::string name = "addError(" + t.name() + ")";
   auto asException = error.map([](const RoboErr& e) { return std::make_exception_ptr(e); });
-  return detail::scoped(std::move(t),
-                        [asException](detail::RunContext<A>& ctx) {
-                          return std::make_unique<detail::ScopeEntry<Event<std::exception_ptr>>>(ctx.interrupts, asException);
-                        })
-      .at(loc)
-      .named(std::move(name));
+  return detail::interrupted(std::move(t), std::move(asException)).at(loc).named(std::move(name));
 }
 
-/// The paper's timeLimit: `t`'s result, or no value if `t` has not ended within `seconds`
-/// (then `t` and its subtasks are aborted).
+/// The paper's timeLimit: `t`'s result, or std::nullopt if `t` has not ended within `seconds`
+/// (then `t` and its subtasks are aborted). For a task without a result (Task<A>), a bool: true
+/// when `t` ended in time, so `if (!co_await timeLimit(t, 5_s))` reads "if it ran out of time".
 template <class A, class B>
-[[nodiscard]] Task<A, std::optional<ResultOf<B>>> timeLimit(Task<A, B> t, double seconds,
-                                                            std::source_location loc = std::source_location::current()) {
+[[nodiscard]] Task<A, TimeLimitResult<B>> timeLimit(Task<A, B> t, double seconds, std::source_location loc = std::source_location::current()) {
   std::string name = "timeLimit(" + t.name() + ")";
-  return [](Task<A, B> body, double limit) -> Task<A, std::optional<ResultOf<B>>> {
-    detail::RunContext<A>* ctx = co_await detail::GetContext{};
-    std::int64_t id = ctx->nextScope++;
-    char reason[64];
-    std::snprintf(reason, sizeof reason, "time limit of %.3g s reached", limit);
-    auto expiry = after(limit).map([id, why = std::string(reason)] { return std::make_exception_ptr(detail::ScopeSignal{id, why}); });
-    std::optional<ResultOf<B>> result;
-    try {
-      detail::ScopeEntry<Event<std::exception_ptr>> scope(ctx->interrupts, expiry);
-      result = co_await detail::resultOf(std::move(body)).quiet();
-    } catch (const detail::ScopeSignal& s) {
-      if (s.scope != id) throw;
-    }
-    co_return result;
-  }(std::move(t), seconds)
-                                                  .at(loc)
-                                                  .named(std::move(name));
+  return detail::limited(std::move(t), seconds).at(loc).named(std::move(name));
 }
 
 /// The paper's withExit (an untilB around `t`): runs `t` until `exit` occurs, then aborts it and
@@ -154,47 +60,19 @@ template <class A, class B>
 template <class X, class A, class B>
 [[nodiscard]] Task<A, X> withExit(Event<X> exit, Task<A, B> t, std::source_location loc = std::source_location::current()) {
   std::string name = "withExit(" + t.name() + ")";
-  return [](Event<X> e, Task<A, B> body) -> Task<A, X> {
-    detail::RunContext<A>* ctx = co_await detail::GetContext{};
-    std::int64_t id = ctx->nextScope++;
-    auto signal = e.map([id](const X& x) { return std::make_exception_ptr(detail::ScopeExit<X>{{id, "its withExit event occurred"}, x}); });
-    std::string bodyName = body.name();
-    std::optional<X> value;
-    try {
-      detail::ScopeEntry<Event<std::exception_ptr>> scope(ctx->interrupts, signal);
-      co_await detail::resultOf(std::move(body)).quiet();
-    } catch (const detail::ScopeExit<X>& s) {
-      if (s.scope != id) throw;
-      value = s.value;
-    }
-    // A tie goes to the event, as in the paper's untilB: the body's last step was sampled with it.
-    if (!value) value = e.at(*ctx->now);
-    if (!value) throw RoboErr("task '" + bodyName + "' ended before its withExit event occurred");
-    co_return std::move(*value);
-  }(std::move(exit), std::move(t))
-                                                .at(loc)
-                                                .named(std::move(name));
+  return detail::exiting(std::move(exit), std::move(t)).at(loc).named(std::move(name));
 }
 
 /// The paper's withB: runs `t` with the behavior `f(state)` started beside it, and returns
-/// `t`'s result paired with that behavior's value at the instant `t` ended. `f` gets the task state
-/// of withB's start by value, as mkTask's function does: it stays put while `t`'s subtasks run.
+/// `t`'s result paired with that behavior's value at the instant `t` ended; for a task without a
+/// result (Task<A>), that value alone. `f` gets the task state of withB's start by value, as
+/// mkTask's function does: it stays put while `t`'s subtasks run.
 template <class F, class A, class B>
   requires std::invocable<F&, const TaskState&>
 [[nodiscard]] auto withB(F f, Task<A, B> t, std::source_location loc = std::source_location::current()) {
   using C = ValueOf<std::invoke_result_t<F&, const TaskState&>>;
   std::string name = "withB(" + t.name() + ")";
-  return [](F make, Task<A, B> body) -> Task<A, std::pair<ResultOf<B>, C>> {
-    detail::RunContext<A>* ctx = co_await detail::GetContext{};
-    const TaskState start = ctx->state;  // a copy: the context's state moves on with each subtask
-    Behavior<C> c = toBehavior(std::invoke(make, start));
-    c.at(*ctx->now);  // it starts with the task
-    detail::ScopeEntry<std::function<void(const Instant&)>> watch(ctx->watchers, [c](const Instant& now) { c.at(now); });
-    ResultOf<B> r = co_await detail::resultOf(std::move(body)).quiet();
-    co_return std::pair<ResultOf<B>, C>(std::move(r), c.at(*ctx->now));
-  }(std::move(f), std::move(t))
-                                            .at(loc)
-                                            .named(std::move(name));
+  return detail::beside<C>(std::move(f), std::move(t)).at(loc).named(std::move(name));
 }
 
 /// The paper's withMyResult: the task `f(mine)` where `mine` is that task's own output, one
@@ -204,17 +82,7 @@ template <class F>
 [[nodiscard]] auto withMyResult(F f, std::source_location loc = std::source_location::current()) {
   using A = detail::FedOutput<F>;
   using B = typename std::invoke_result_t<F&, Behavior<A>>::result_type;
-  return [](F make) -> Task<A, B> {
-    detail::RunContext<A>* ctx = co_await detail::GetContext{};
-    Behavior<A> mine = ctx->delayedOutput();
-    if constexpr (std::is_void_v<B>) {
-      co_await std::invoke(make, mine);
-    } else {
-      co_return co_await std::invoke(make, mine);
-    }
-  }(std::move(f))
-                           .at(loc)
-                           .named("withMyResult");
+  return detail::fedBack<A, B>(std::move(f)).at(loc).named("withMyResult");
 }
 
 /// The paper's withFilter: every output of `t` and its subtasks passes through `f`, either a
@@ -222,31 +90,14 @@ template <class F>
 template <class F, class A, class B>
 [[nodiscard]] Task<A, B> withFilter(F f, Task<A, B> t, std::source_location loc = std::source_location::current()) {
   std::string name = "withFilter(" + t.name() + ")";
-  std::function<Behavior<A>(Behavior<A>)> filter;
-  // A function of behaviors is tried first: a function of values would also accept a Behavior
-  // argument's implicit lifting the other way round.
-  if constexpr (requires(F& g, Behavior<A> b) {
-                  { std::invoke(g, b) } -> BehaviorType;
-                }) {
-    filter = [f](Behavior<A> b) { return toBehavior(std::invoke(f, std::move(b))); };
-  } else {
-    filter = [f](Behavior<A> b) { return Behavior<A>(lift(f, b)); };
-  }
-  return detail::scoped(std::move(t),
-                        [filter](detail::RunContext<A>& ctx) {
-                          return std::make_unique<detail::ScopeEntry<std::function<Behavior<A>(Behavior<A>)>>>(ctx.filters, filter);
-                        })
-      .at(loc)
-      .named(std::move(name));
+  return detail::filtered(std::move(t), detail::asFilter<A>(std::move(f))).at(loc).named(std::move(name));
 }
 
 /// The paper's withPicture: `p` is drawn (in world coordinates) while `t` runs.
 template <class A, class B>
 [[nodiscard]] Task<A, B> withPicture(Behavior<Picture> p, Task<A, B> t, std::source_location loc = std::source_location::current()) {
   std::string name = "withPicture(" + t.name() + ")";
-  return detail::scoped(std::move(t), [p](detail::RunContext<A>& ctx) { return std::make_unique<detail::PublishedPicture>(ctx.debug, p); })
-      .at(loc)
-      .named(std::move(name));
+  return detail::publishing(std::move(t), std::move(p)).at(loc).named(std::move(name));
 }
 
 /// Plots `b` under `name` while `t` runs: `frob run --plot` charts it beside the front sonar and

@@ -186,8 +186,7 @@ Task<Wheels, Point2> circleOnceP(Point2 g) {
     const Robot& r = ts.robot();
     return atMin(distance(place(r), g), place(r));
   };
-  auto result = co_await withB(closestP, circleOnce());
-  co_return result.second;
+  co_return co_await withB(closestP, circleOnce());
 }
 
 Task<Wheels> circleTo(Point2 p) {

@@ -140,15 +140,14 @@ Task<Wheels> circleOnce() {
 }
 
 // circleOnceP: circleOnce, and the place where we were closest to the goal. withB runs a behavior
-// beside a task and adds its final value to the task's result; atMin(a, b) is the value of b when a
-// was smallest. We also draw that point as it changes.
+// beside a task and gives its final value (with the task's result, if it has one); atMin(a, b)
+// is the value of b when a was smallest. We also draw that point as it changes.
 Task<Wheels, Point2> circleOnceP(Point2 g) {
   TaskState ts = co_await getTaskState();
   const Robot& r = ts.robot();
   Behavior<Point2> closest = atMin(distance(place(r), g), place(r));
   auto closestP = [closest](const TaskState&) { return closest; };
-  auto result = co_await withB(closestP, withPicture(marker(closest), circleOnce()));
-  co_return result.second;
+  co_return co_await withB(closestP, withPicture(marker(closest), circleOnce()));
 }
 
 // circleTo: follow the wall until we are at `p`.

@@ -1,5 +1,6 @@
 #pragma once
-// The machinery behind Task: promises, awaiters, the per-run context and the runner node.
+// The machinery behind task.hpp: promises, awaiters and the per-run context (the runner node is in
+// runner.hpp).
 // Every frame of one runTask shares a RunContext; an atomic task parks itself in the context and
 // suspends back to the runner, which checks its events each instant and resumes it when one occurs.
 
@@ -260,6 +261,315 @@ struct FinalAwaiter {
   }
   void await_resume() noexcept {}
 };
+
+// Awaitables a task may co_await, and the promise that accepts them.
+template <class A, class B>
+class TaskPromise;
+template <class A, class E>
+class AtomicAwaiter;
+struct GetState {};
+
+// Raises a RoboErr where it is awaited, or stands for a task that fails at once.
+struct Raise {
+  RoboErr error;
+  bool await_ready() noexcept { return true; }
+  template <class P>
+  void await_suspend(std::coroutine_handle<P>) noexcept {}
+  [[noreturn]] void await_resume() { throw error; }
+  template <class A, class B>
+  operator Task<A, B>() const {  // NOLINT(google-explicit-constructor)
+    return [](RoboErr e) -> Task<A, B> {
+      (void)co_await GetState{};  // a coroutine needs an await; throwing from one is plain C++
+      throw e;
+    }(error);
+  }
+};
+
+template <class A, class B>
+struct SubtaskAwaiter;
+template <class A, class B>
+struct Become {
+  Task<A, B> task;
+};
+struct GetContext {};
+struct GetRecord {};
+struct SetState {
+  TaskState state;
+};
+template <class A, class B>
+Task<A> discardResult(Task<A, B> t);
+
+template <class R, class P>
+struct ReturnValue {
+  void return_value(R v) { static_cast<P*>(this)->deliver(std::move(v)); }
+};
+template <class P>
+struct ReturnVoid {
+  void return_void() { static_cast<P*>(this)->deliver(Unit{}); }
+};
+
+template <class A, class B>
+class TaskPromise : public PromiseBase<A>,
+                    public std::conditional_t<std::is_void_v<B>, ReturnVoid<TaskPromise<A, B>>, ReturnValue<ResultOf<B>, TaskPromise<A, B>>> {
+ public:
+  using R = ResultOf<B>;
+  explicit TaskPromise(std::source_location loc = std::source_location::current()) : PromiseBase<A>(loc) {}
+
+  Task<A, B> get_return_object() { return Task<A, B>(std::coroutine_handle<TaskPromise>::from_promise(*this)); }
+  std::suspend_always initial_suspend() noexcept { return {}; }
+  FinalAwaiter final_suspend() noexcept { return {}; }
+  void unhandled_exception() {
+    slot->error = std::current_exception();
+    this->noteException();
+  }
+  void deliver(R v) {
+    this->end(TaskEnd::Returned, printable(v));
+    slot->value.emplace(std::move(v));
+  }
+
+  // What a task may co_await: tasks driving the same A, its state, become, and taskError.
+  template <class B2>
+  SubtaskAwaiter<A, B2> await_transform(Task<A, B2>&& t) {
+    return SubtaskAwaiter<A, B2>(std::move(t));
+  }
+  template <class B2>
+  SubtaskAwaiter<A, B2> await_transform(Task<A, B2>& t) {
+    return SubtaskAwaiter<A, B2>(std::move(t));
+  }
+  auto await_transform(GetState) {
+    struct Awaiter : std::suspend_never {
+      TaskState state;
+      TaskState await_resume() { return state; }
+    };
+    return Awaiter{{}, this->ctx->state};
+  }
+  auto await_transform(GetContext) {  // the library's own access to the run (transformers)
+    struct Awaiter : std::suspend_never {
+      RunContext<A>* ctx;
+      RunContext<A>* await_resume() { return ctx; }
+    };
+    return Awaiter{{}, this->ctx};
+  }
+  auto await_transform(GetRecord) {  // the timeline record subtasks hang under
+    struct Awaiter : std::suspend_never {
+      std::int64_t record;
+      std::int64_t await_resume() { return record; }
+    };
+    return Awaiter{{}, this->recordForChildren()};
+  }
+  auto await_transform(SetState s) {
+    this->ctx->state = std::move(s.state);
+    return std::suspend_never{};
+  }
+  auto await_transform(Become<A, B>&& b);
+  template <class E>
+  auto await_transform(AtomicAwaiter<A, E>& atom) {  // an atomic task, which stays where it was made
+    struct Ref {
+      AtomicAwaiter<A, E>* atom;
+      bool await_ready() noexcept { return false; }
+      std::coroutine_handle<> await_suspend(std::coroutine_handle<TaskPromise> h) { return atom->await_suspend(h); }
+      E await_resume() { return atom->await_resume(); }
+    };
+    return Ref{&atom};
+  }
+  template <class X>
+  void await_transform(X&&) {
+    static_assert(sizeof(X) == 0,
+                  "a Task<A, B> can co_await only tasks that drive the same output type A, getTaskState(), "
+                  "setTaskState(ts), become(task) and taskError(error)");
+  }
+  auto await_transform(Raise r) { return r; }
+
+  ResultSlot<R>* slot = nullptr;
+};
+
+// Awaiting a subtask: runs it to completion, then yields its result or rethrows its error.
+template <class A, class B>
+struct SubtaskAwaiter {
+  explicit SubtaskAwaiter(Task<A, B> t) : task(std::move(t)) {}
+  SubtaskAwaiter(SubtaskAwaiter&&) noexcept = default;
+  ~SubtaskAwaiter() {
+    if (slot.frame) slot.frame.destroy();  // aborted while waiting: the subtask goes too
+  }
+  bool await_ready() noexcept { return false; }
+  template <class P>
+  std::coroutine_handle<> await_suspend(std::coroutine_handle<P> parent) {
+    PromiseBase<A>& p = parent.promise();
+    return task.startIn(slot, p.ctx, parent, p.recordForChildren(), &p);
+  }
+  B await_resume() {
+    std::exchange(slot.frame, {}).destroy();
+    if (slot.error) std::rethrow_exception(slot.error);
+    if constexpr (!std::is_void_v<B>) return std::move(*slot.value);
+  }
+
+  Task<A, B> task;
+  ResultSlot<ResultOf<B>> slot;
+};
+
+template <class A, class B>
+auto TaskPromise<A, B>::await_transform(Become<A, B>&& b) {
+  // A tail call: the new task takes this frame's place (its slot, parent and owner) and this
+  // frame is destroyed, so recursion such as runAround calling itself runs in bounded memory.
+  struct Awaiter {
+    Task<A, B> next;
+    bool await_ready() noexcept { return false; }
+    std::coroutine_handle<> await_suspend(std::coroutine_handle<TaskPromise> self) {
+      TaskPromise& p = self.promise();
+      p.end(TaskEnd::Replaced, "became " + next.name());
+      ResultSlot<R>& mine = *p.slot;
+      std::coroutine_handle<> h = next.startIn(mine, p.ctx, p.continuation, p.parentRecord, p.caller);
+      self.destroy();  // destroys this awaiter too: nothing of it is touched after this line
+      return h;
+    }
+    void await_resume() noexcept {}
+  };
+  return Awaiter{std::move(b.task)};
+}
+
+template <class A, class B>
+Task<A> discardResult(Task<A, B> t) {
+  co_await std::move(t);
+}
+
+// An atomic task: a behavior until its exit event (result), its error event, or an enclosing
+// scope's interrupt occurs. Lives in the awaiting frame while the runner watches it.
+template <class A, class E>
+class AtomicAwaiter final : public AtomicBase<A> {
+ public:
+  AtomicAwaiter(Behavior<A> b, Event<E> exit, std::optional<Event<RoboErr>> error)
+      : behavior_(std::move(b)),
+        exit_(std::move(exit)),
+        error_(std::move(error)),
+        exitNever_(dynamic_cast<NeverNode<E>*>(exit_.node().get()) != nullptr) {}
+
+  bool await_ready() noexcept { return false; }
+  template <class P>
+  std::coroutine_handle<> await_suspend(std::coroutine_handle<P> h) {
+    ctx_ = h.promise().ctx;
+    this->name = &h.promise().name;
+    this->output = ctx_->filtered(behavior_);
+    this->waiter = h;
+    ctx_->current = this;
+    return std::noop_coroutine();  // back to the runner, which checks the events this instant
+  }
+  E await_resume() {
+    if (failure_) std::rethrow_exception(failure_);
+    return std::move(*result_);
+  }
+
+  const A* step(const Instant& now) override {
+    if (!error_ && ctx_->interrupts.empty()) {  // the common case, kept short: it runs every step
+      if (!exitNever_) {
+        if (const std::optional<E>& exit = exit_.at(now)) {
+          result_ = *exit;
+          return nullptr;
+        }
+      }
+      return &this->output.at(now);
+    }
+    return check(now) ? nullptr : &this->output.at(now);
+  }
+  void fail(std::exception_ptr e) override { failure_ = std::move(e); }
+
+ private:
+  bool check(const Instant& now) {
+    const std::optional<E>& exit = exit_.at(now);
+    // Every event is sampled each instant so stateful ones stay current; the exit wins ties, then
+    // the task's own error, then the innermost scope.
+    const std::optional<RoboErr>* error = error_ ? &error_->at(now) : nullptr;
+    const std::optional<std::exception_ptr>* interrupt = nullptr;
+    for (auto it = ctx_->interrupts.rbegin(); it != ctx_->interrupts.rend(); ++it) {
+      const std::optional<std::exception_ptr>& o = it->at(now);
+      if (o && interrupt == nullptr) interrupt = &o;
+    }
+    if (exit) {
+      result_ = *exit;
+    } else if (error && *error) {
+      failure_ = std::make_exception_ptr(**error);
+    } else if (interrupt) {
+      failure_ = **interrupt;
+    } else {
+      return false;
+    }
+    return true;
+  }
+
+  Behavior<A> behavior_;
+  Event<E> exit_;
+  std::optional<Event<RoboErr>> error_;
+  bool exitNever_;  // never() as the exit: nothing to sample
+  RunContext<A>* ctx_ = nullptr;
+  std::optional<E> result_;
+  std::exception_ptr failure_;
+};
+
+template <class T>
+struct EventValue;
+template <class T>
+struct EventValue<Event<T>> {
+  using type = T;
+};
+
+// The coroutine behind mkTask and mkTaskE; an exit event of Unit makes a Task<A> (no result).
+template <class A, class B, class E, class F>
+Task<A, B> atomicTask(F f) {
+  TaskState ts = co_await GetState{};
+  auto parts = std::invoke(f, static_cast<const TaskState&>(ts));
+  std::optional<Event<RoboErr>> error;
+  if constexpr (std::tuple_size_v<decltype(parts)> == 3) error = std::get<2>(parts);
+  AtomicAwaiter<A, E> atom(toBehavior(std::get<0>(parts)), std::get<1>(parts), std::move(error));
+  if constexpr (std::is_void_v<B>) {
+    co_await atom;
+  } else {
+    co_return co_await atom;
+  }
+}
+
+template <class F>
+using MkTaskParts = std::invoke_result_t<F&, const TaskState&>;
+template <class F>
+using MkTaskOutput = frob::ValueOf<std::tuple_element_t<0, MkTaskParts<F>>>;
+template <class F>
+using MkTaskExit = typename EventValue<std::remove_cvref_t<std::tuple_element_t<1, MkTaskParts<F>>>>::type;
+template <class F>
+using MkTaskResult = std::conditional_t<std::is_same_v<MkTaskExit<F>, Unit>, void, MkTaskExit<F>>;
+
+template <class T>
+inline constexpr bool kNever = false;
+
+// Whether mkTask's function returns {behavior, event[, error event]}; if not, a compile error that
+// says what is wrong in the student's words, instead of one from deep inside the library.
+template <class Parts>
+consteval bool checkTaskParts() {
+  if constexpr (!requires { std::tuple_size<Parts>::value; }) {
+    static_assert(kNever<Parts>,
+                  "mkTask: the function must return std::pair{behavior, event} "
+                  "(or std::tuple{behavior, event, error event} for mkTaskE)");
+    return false;
+  } else {
+    using Drives = std::remove_cvref_t<std::tuple_element_t<0, Parts>>;
+    using Ends = std::remove_cvref_t<std::tuple_element_t<1, Parts>>;
+    if constexpr (!BehaviorType<Drives>) {
+      static_assert(kNever<Parts>,
+                    "mkTask: the pair's first element must be a behavior, what the task drives "
+                    "(e.g. wheels(0.1, 0))");
+      return false;
+    } else if constexpr (BehaviorType<Ends> && std::is_same_v<frob::ValueOf<Ends>, bool>) {
+      static_assert(kNever<Parts>,
+                    "mkTask: the pair's second element is a Behavior<bool>, a condition, but a task "
+                    "ends on an event: did you forget predicate(...)?");
+      return false;
+    } else if constexpr (!EventType<Ends>) {
+      static_assert(kNever<Parts>,
+                    "mkTask: the pair's second element must be the event that ends the task "
+                    "(e.g. predicate(frontSonar(r) < 0.5) or after(2.0))");
+      return false;
+    } else {
+      return true;
+    }
+  }
+}
 
 }  // namespace detail
 }  // namespace frob

@@ -1,0 +1,35 @@
+#pragma once
+// The machinery behind errors.hpp: what FROB_ASSERT calls, and the node checkFinite makes.
+// errors.hpp includes it once it has declared FrobError and isFinite.
+
+#include "frob/behavior.hpp"
+
+#include <memory>
+#include <string>
+
+namespace frob {
+namespace detail {
+
+// Throws UsageError for FROB_ASSERT.
+[[noreturn]] void failAssert(const char* condition, const char* message, const char* file, int line);
+[[nodiscard]] std::string notFiniteMessage(const std::string& what, const Instant& now);
+
+template <class T>
+class CheckFiniteNode final : public BehaviorNode<T> {
+ public:
+  CheckFiniteNode(std::shared_ptr<BehaviorNode<T>> b, std::string what) : b_(std::move(b)), what_(std::move(what)) {}
+
+ protected:
+  T compute(const Instant& now) override {
+    const T& v = b_->at(now);
+    if (!isFinite(v)) throw FrobError(notFiniteMessage(what_, now));
+    return v;
+  }
+
+ private:
+  std::shared_ptr<BehaviorNode<T>> b_;
+  std::string what_;
+};
+
+}  // namespace detail
+}  // namespace frob

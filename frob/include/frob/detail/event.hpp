@@ -1,0 +1,177 @@
+#pragma once
+// The machinery behind event.hpp: the nodes each event combinator makes. event.hpp includes it
+// once it has defined Unit, which PredicateNode needs.
+
+#include "frob/behavior.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <type_traits>
+#include <utility>
+
+namespace frob {
+
+template <class T>
+class Event;
+
+namespace detail {
+
+template <class T>
+struct IsEvent : std::false_type {};
+template <class T>
+struct IsEvent<Event<T>> : std::true_type {};
+
+// The result of an event's map function, which may take the occurrence's value or nothing.
+template <class F, class T>
+struct MapResult {
+  using type = std::invoke_result_t<F&>;
+};
+template <class F, class T>
+  requires std::invocable<F&, const T&>
+struct MapResult<F, T> {
+  using type = std::invoke_result_t<F&, const T&>;
+};
+
+template <class F, class T>
+decltype(auto) callWith(F& f, const T& v) {
+  if constexpr (std::invocable<F&, const T&>) {
+    return std::invoke(f, v);
+  } else {
+    return std::invoke(f);
+  }
+}
+
+template <class T>
+class NeverNode final : public EventNode<T> {
+ protected:
+  std::optional<T> compute(const Instant&) override { return std::nullopt; }
+};
+
+template <class R, class T, class F>
+class MapNode final : public EventNode<R> {
+ public:
+  MapNode(std::shared_ptr<EventNode<T>> e, F f) : e_(std::move(e)), f_(std::move(f)) {}
+
+ protected:
+  std::optional<R> compute(const Instant& now) override {
+    const std::optional<T>& o = e_->at(now);
+    if (!o) return std::nullopt;
+    return R(plain(callWith(f_, *o)));
+  }
+
+ private:
+  std::shared_ptr<EventNode<T>> e_;
+  F f_;
+};
+
+template <class T, class P>
+class FilterNode final : public EventNode<T> {
+ public:
+  FilterNode(std::shared_ptr<EventNode<T>> e, P p) : e_(std::move(e)), p_(std::move(p)) {}
+
+ protected:
+  std::optional<T> compute(const Instant& now) override {
+    const std::optional<T>& o = e_->at(now);
+    if (o && std::invoke(p_, *o)) return o;
+    return std::nullopt;
+  }
+
+ private:
+  std::shared_ptr<EventNode<T>> e_;
+  P p_;
+};
+
+// Both sides are checked every instant (so stateful events on the right keep their state current);
+// on a tie the left occurrence wins.
+template <class T>
+class OrNode final : public EventNode<T> {
+ public:
+  OrNode(std::shared_ptr<EventNode<T>> a, std::shared_ptr<EventNode<T>> b) : a_(std::move(a)), b_(std::move(b)) {}
+
+ protected:
+  std::optional<T> compute(const Instant& now) override {
+    const std::optional<T>& a = a_->at(now);
+    const std::optional<T>& b = b_->at(now);
+    return a ? a : b;
+  }
+
+ private:
+  std::shared_ptr<EventNode<T>> a_, b_;
+};
+
+// Fires when the condition becomes true, including at its first sample if it already holds.
+class PredicateNode final : public EventNode<Unit> {
+ public:
+  explicit PredicateNode(std::shared_ptr<BehaviorNode<bool>> b) : b_(std::move(b)) {}
+
+ protected:
+  std::optional<Unit> compute(const Instant& now) override {
+    bool v = b_->at(now);
+    bool rising = v && !previous_;
+    previous_ = v;
+    return rising ? std::optional<Unit>(Unit{}) : std::nullopt;
+  }
+
+ private:
+  std::shared_ptr<BehaviorNode<bool>> b_;
+  bool previous_ = false;
+};
+
+// The first occurrence only; the source is released after it so that it can be freed.
+template <class T>
+class OnceNode final : public EventNode<T> {
+ public:
+  explicit OnceNode(std::shared_ptr<EventNode<T>> e) : e_(std::move(e)) {}
+
+ protected:
+  std::optional<T> compute(const Instant& now) override {
+    if (!e_) return std::nullopt;
+    std::optional<T> o = e_->at(now);
+    if (o) e_.reset();
+    return o;
+  }
+
+ private:
+  std::shared_ptr<EventNode<T>> e_;
+};
+
+// The behavior is sampled every instant, not only at occurrences, so stateful behaviors stay current.
+template <class T, class U>
+class SnapshotNode final : public EventNode<std::pair<T, U>> {
+ public:
+  SnapshotNode(std::shared_ptr<EventNode<T>> e, std::shared_ptr<BehaviorNode<U>> b) : e_(std::move(e)), b_(std::move(b)) {}
+
+ protected:
+  std::optional<std::pair<T, U>> compute(const Instant& now) override {
+    const U& u = b_->at(now);
+    const std::optional<T>& o = e_->at(now);
+    if (!o) return std::nullopt;
+    return std::pair<T, U>(*o, u);
+  }
+
+ private:
+  std::shared_ptr<EventNode<T>> e_;
+  std::shared_ptr<BehaviorNode<U>> b_;
+};
+
+// Occurs at local times k × period for k = 1, 2, ... (or once at `period` when not repeating),
+// on the first instant at or after each; carries the number of periods elapsed, which may step by
+// more than one when the period is shorter than the clock's step.
+class TimerNode final : public EventNode<std::int64_t> {
+ public:
+  TimerNode(double period, bool repeat) : period_(period), repeat_(repeat) {}
+
+ protected:
+  std::optional<std::int64_t> compute(const Instant& now) override;
+
+ private:
+  StartTime start_;
+  double period_;
+  bool repeat_;
+  std::int64_t fired_ = 0;
+};
+
+}  // namespace detail
+}  // namespace frob

@@ -1,0 +1,191 @@
+#pragma once
+// The machinery behind parallel.hpp: strands (tasks run beside the current one in runs of their
+// own) and the coroutines behind each composition. parallel.hpp includes it once it has defined
+// Outcome.
+
+#include "frob/run_task.hpp"
+#include "frob/task_transformers.hpp"
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace frob {
+namespace detail {
+
+// A task run beside the current one in a run of its own: a fresh copy of the task state, none of
+// the parent's scopes or filters (as the paper's cloneState). Destroying it aborts the task.
+template <class A, class B>
+struct Strand {
+  std::shared_ptr<RunnerNode<A, B>> runner;
+  Behavior<A> output;
+
+  [[nodiscard]] bool done() const { return runner->done(); }
+  [[nodiscard]] Outcome<B> outcome() const {
+    const auto& slot = runner->result();
+    if (slot.value) return {slot.value, std::nullopt};
+    if (slot.error) return {std::nullopt, roboErrIn(slot.error)};  // the runner holds only RoboErrs
+    return {};
+  }
+};
+
+template <class A, class B>
+Strand<A, B> startStrand(const TaskState& state, std::int64_t parentRecord, Task<A, B> t) {
+  auto runner = std::make_shared<RunnerNode<A, B>>(state, std::move(t), Behavior<A>(zeroOf<A>()), parentRecord, true);
+  return {runner, Behavior<A>(runner)};
+}
+
+// Occurs once, at the instant the strand's task has ended, carrying how.
+template <class A, class B>
+class StrandEndNode final : public EventNode<Outcome<B>> {
+ public:
+  explicit StrandEndNode(Strand<A, B> s) : strand_(std::move(s)) {}
+
+ protected:
+  std::optional<Outcome<B>> compute(const Instant& now) override {
+    if (fired_) return std::nullopt;
+    strand_.output.at(now);  // run it up to now
+    if (!strand_.done()) return std::nullopt;
+    fired_ = true;
+    return strand_.outcome();
+  }
+
+ private:
+  Strand<A, B> strand_;
+  bool fired_ = false;
+};
+
+template <class A, class B>
+Event<Outcome<B>> endOf(const Strand<A, B>& s) {
+  return Event<Outcome<B>>(std::make_shared<StrandEndNode<A, B>>(s));
+}
+
+using Watcher = std::function<void(const Instant&)>;
+
+// Samples `out` every instant, so a strand runs whether or not anyone reads its output.
+template <class A>
+Watcher keepSampling(Behavior<A> out) {
+  return [out](const Instant& now) { out.at(now); };
+}
+
+// A behavior merged with the outputs of a changing set of strands.
+template <class A, class B, class M>
+class MergeStrandsNode final : public BehaviorNode<A> {
+ public:
+  MergeStrandsNode(Behavior<A> own, std::shared_ptr<std::vector<Strand<A, B>>> strands, M merge)
+      : own_(std::move(own)), strands_(std::move(strands)), merge_(std::move(merge)) {}
+
+ protected:
+  A compute(const Instant& now) override {
+    A v = own_.at(now);
+    for (const Strand<A, B>& s : *strands_) v = std::invoke(merge_, v, s.output.at(now));
+    return v;
+  }
+
+ private:
+  Behavior<A> own_;
+  std::shared_ptr<std::vector<Strand<A, B>>> strands_;
+  M merge_;
+};
+
+// `t` with its output merged (merge(other, own)) with another behavior.
+template <class A, class B, class M>
+Task<A, B> mergedWith(Behavior<A> other, M merge, Task<A, B> t) {
+  return withFilter([other, merge](Behavior<A> own) { return Behavior<A>(lift(merge, other, own)); }, std::move(t));
+}
+
+// withTask: `second(first's output, first's end)` beside `first(second's output, one step late)`.
+template <class A2, class A1, class B1, class B2, class F1, class F2>
+Task<A2, B2> feeding(F1 first, F2 second) {
+  RunContext<A2>* ctx = co_await GetContext{};
+  std::int64_t record = co_await GetRecord{};
+  Behavior<A2> secondOut = ctx->delayedOutput();
+  Strand<A1, B1> strand = startStrand(ctx->state, record, std::invoke(first, secondOut));
+  ScopeEntry<Watcher> keep(ctx->watchers, keepSampling(strand.output));
+  if constexpr (std::is_void_v<B2>) {
+    co_await std::invoke(second, strand.output, endOf(strand));
+  } else {
+    co_return co_await std::invoke(second, strand.output, endOf(strand));
+  }
+}
+
+// parallel: `first` in a strand, `second` here with the outputs merged; both results.
+template <class A, class BP, class BQ, class M>
+Task<A, std::pair<ResultOf<BP>, ResultOf<BQ>>> bothOf(Task<A, BP> first, Task<A, BQ> second, M m) {
+  RunContext<A>* ctx = co_await GetContext{};
+  std::int64_t record = co_await GetRecord{};
+  Strand<A, BP> strand = startStrand(ctx->state, record, std::move(first));
+  ScopeEntry<Watcher> keep(ctx->watchers, keepSampling(strand.output));
+  Event<RoboErr> firstFailed = endOf(strand).filter([](const Outcome<BP>& o) { return !o.ok(); }).map([](const Outcome<BP>& o) { return *o.error; });
+  ResultOf<BQ> secondResult = co_await resultOf(addError(firstFailed, mergedWith(strand.output, m, std::move(second)))).quiet();
+  if (!strand.done()) {  // the first goes on alone
+    Behavior<A> out = strand.output;
+    Event<Outcome<BP>> end = endOf(strand);
+    co_await mkTask([out, end](const TaskState&) { return std::pair{out, end}; }).named("waiting for the other branch");
+  }
+  Outcome<BP> o = strand.outcome();
+  if (!o.ok()) throw *o.error;
+  co_return std::pair<ResultOf<BP>, ResultOf<BQ>>(std::move(*o.value), std::move(secondResult));
+}
+
+// disable: `first` in a strand, `second` here with the outputs merged; the first to end wins.
+template <class A, class BP, class BQ, class M>
+Task<A, std::variant<ResultOf<BP>, ResultOf<BQ>>> firstOf(Task<A, BP> first, Task<A, BQ> second, M m) {
+  using Result = std::variant<ResultOf<BP>, ResultOf<BQ>>;
+  RunContext<A>* ctx = co_await GetContext{};
+  std::int64_t record = co_await GetRecord{};
+  std::int64_t id = ctx->nextScope++;
+  Strand<A, BP> strand = startStrand(ctx->state, record, std::move(first));
+  ScopeEntry<Watcher> keep(ctx->watchers, keepSampling(strand.output));
+  auto firstEnded = endOf(strand).map([id](const Outcome<BP>& o) {
+    return std::make_exception_ptr(ScopeExit<Outcome<BP>>{{id, "the other branch ended first"}, o});
+  });
+  std::optional<ResultOf<BQ>> secondResult;
+  std::optional<Outcome<BP>> o;
+  try {
+    ScopeEntry<Event<std::exception_ptr>> scope(ctx->interrupts, firstEnded);
+    secondResult = co_await resultOf(mergedWith(strand.output, m, std::move(second))).quiet();
+  } catch (const ScopeExit<Outcome<BP>>& s) {
+    if (s.scope != id) throw;
+    o = s.value;
+  }
+  if (secondResult) co_return Result(std::in_place_index<1>, std::move(*secondResult));
+  if (!o->ok()) throw *o->error;
+  co_return Result(std::in_place_index<0>, std::move(*o->value));
+}
+
+// syncLoop: p, q, p, q, ... forever.
+template <class A, class PF, class QF>
+Task<A> loop(PF p, QF q) {
+  for (;;) {
+    co_await std::invoke(p);
+    co_await std::invoke(q);
+  }
+}
+
+// asyncLoop: p, then q in a strand beside the next round; the output merged with every q running.
+template <class A, class BQ, class PF, class QF, class M>
+Task<A> spawningLoop(PF p, QF q, M m) {
+  RunContext<A>* ctx = co_await GetContext{};
+  std::int64_t record = co_await GetRecord{};
+  auto strands = std::make_shared<std::vector<Strand<A, BQ>>>();
+  ScopeEntry<std::function<Behavior<A>(Behavior<A>)>> merged(
+      ctx->filters, [strands, m](Behavior<A> own) { return Behavior<A>(std::make_shared<MergeStrandsNode<A, BQ, M>>(std::move(own), strands, m)); });
+  ScopeEntry<Watcher> keep(ctx->watchers, [strands](const Instant& now) {
+    for (const auto& s : *strands) s.output.at(now);
+    for (const auto& s : *strands) {
+      if (s.done() && !s.outcome().ok()) throw *s.outcome().error;
+    }
+    std::erase_if(*strands, [](const auto& s) { return s.done(); });
+  });
+  for (;;) {
+    co_await std::invoke(p);
+    strands->push_back(startStrand(ctx->state, record, std::invoke(q)));
+  }
+}
+
+}  // namespace detail
+}  // namespace frob

@@ -1,0 +1,139 @@
+#pragma once
+// The machinery behind run_task.hpp: the node a running task becomes.
+
+#include "frob/task.hpp"
+
+#include <cstdio>
+#include <exception>
+#include <string>
+
+namespace frob {
+namespace detail {
+
+// The behavior of a running task: each instant it checks the current atomic task's events,
+// moves on through as many tasks as end at this instant, then samples the current behavior.
+template <class A, class B>
+class RunnerNode final : public BehaviorNode<A> {
+ public:
+  // A run of `task` then `final`. A run inside another (parallel tasks) hangs its timeline under
+  // `parentRecord` and, with `holdRoboErrs`, keeps an uncaught RoboErr in result() for the other
+  // branch to catch; any other exception ends the whole run, as it would at the top.
+  RunnerNode(TaskState ts, Task<A, B> task, Behavior<A> final, std::int64_t parentRecord = -1, bool holdRoboErrs = false)
+      : ctx_(std::move(ts)), task_(std::move(task)), final_(std::move(final)), parentRecord_(parentRecord), holdRoboErrs_(holdRoboErrs) {}
+  RunnerNode(const RunnerNode&) = delete;
+  RunnerNode& operator=(const RunnerNode&) = delete;
+  ~RunnerNode() override {
+    if (slot_.frame) slot_.frame.destroy();  // stops every task still running, innermost last
+  }
+
+  /// The task's result or error once it has ended (done() is true).
+  [[nodiscard]] bool done() const { return slot_.value.has_value() || slot_.error != nullptr; }
+  [[nodiscard]] const ResultSlot<ResultOf<B>>& result() const { return slot_; }
+
+ protected:
+  A compute(const Instant& now) override {
+    ctx_.now = &now;
+    ctx_.time = now.time;
+    // The common step: the current task goes on. Everything else is in advance().
+    if (AtomicBase<A>* atom = ctx_.current; atom != nullptr && ctx_.watchers.empty() && !ctx_.output) {
+      try {
+        if (const A* out = atom->step(now)) {
+          if constexpr (requires { isFinite(*out); }) {
+            if (!isFinite(*out)) fail(nonFiniteMessage(*atom->name, printable(*out), now));
+          }
+          return *out;
+        }
+      } catch (const FrobError&) {
+        throw;
+      } catch (...) {
+        atom->fail(std::current_exception());  // an event or behavior that throws fails its task
+      }
+      return advance(now, true);
+    }
+    return advance(now, false);
+  }
+
+ private:
+  // Starts the task, moves through every task that ends at `now` (`ended`: the current one has),
+  // then samples the current one; or the final behavior once the task is over.
+  [[gnu::noinline]] A advance(const Instant& now, bool ended) {
+    if (failure_) std::rethrow_exception(failure_);
+    if (!started_) {
+      started_ = true;
+      ctx_.snapshot(now);
+      task_.startIn(slot_, &ctx_, std::noop_coroutine(), parentRecord_, nullptr).resume();
+    }
+    for (int transitions = 0;; ++transitions) {
+      AtomicBase<A>* atom = ctx_.current;
+      if (atom == nullptr) return finished(now);
+      if (transitions > kMaxTransitionsPerInstant) fail(runawayMessage(*atom->name, now));
+      if (!ended) {
+        try {
+          if (const A* out = atom->step(now)) {
+            for (const auto& watch : ctx_.watchers) watch(now);
+            if constexpr (requires { isFinite(*out); }) {
+              if (!isFinite(*out)) fail(nonFiniteMessage(*atom->name, printable(*out), now));
+            }
+            if (ctx_.output) ctx_.output->write(now, *out);
+            return *out;
+          }
+        } catch (const FrobError&) {
+          throw;
+        } catch (...) {
+          atom->fail(std::current_exception());  // an event or behavior that throws fails its task
+        }
+      }
+      ended = false;
+      ctx_.current = nullptr;
+      ctx_.snapshot(now);
+      atom->waiter.resume();
+    }
+  }
+
+  static constexpr int kMaxTransitionsPerInstant = 1000;
+
+  A finished(const Instant& now) {
+    if (slot_.error && !reported_ && !(holdRoboErrs_ && roboErrIn(slot_.error))) {
+      reported_ = true;
+      TaskEnd how = TaskEnd::Failed;
+      std::string what = describe(slot_.error, &how);
+      std::string who = slot_.error == ctx_.origin ? ctx_.originTask : "the controller";
+      fail("task '" + who + "' failed at t = " + seconds(now) + ": " + what);
+    }
+    A out = final_.at(now);
+    if (ctx_.output) ctx_.output->write(now, out);
+    return out;
+  }
+  [[noreturn]] void fail(const std::string& message) {
+    ctx_.current = nullptr;  // every later sample takes the slow path, which rethrows
+    failure_ = std::make_exception_ptr(FrobError(message));
+    std::rethrow_exception(failure_);
+  }
+  static std::string seconds(const Instant& now) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3f s", now.time);
+    return buf;
+  }
+  static std::string runawayMessage(const std::string& task, const Instant& now) {
+    return "task '" + task + "' ended at its start more than " + std::to_string(kMaxTransitionsPerInstant) + " times at t = " + seconds(now) +
+           ": each task in the loop ends in the same step it begins (an event that has already occurred, "
+           "e.g. one shared by consecutive tasks, or a condition that already holds)";
+  }
+  static std::string nonFiniteMessage(const std::string& task, const std::string& value, const Instant& now) {
+    return "task '" + task + "' produced a non-finite output " + value + " at t = " + seconds(now) +
+           " (a division by zero or a NaN in its behavior?)";
+  }
+
+  RunContext<A> ctx_;
+  Task<A, B> task_;
+  Behavior<A> final_;
+  ResultSlot<ResultOf<B>> slot_;
+  std::exception_ptr failure_;
+  std::int64_t parentRecord_;
+  bool holdRoboErrs_;
+  bool started_ = false;
+  bool reported_ = false;
+};
+
+}  // namespace detail
+}  // namespace frob
