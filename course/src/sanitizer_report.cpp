@@ -16,6 +16,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// One frame of a report, symbolized: "pick(double)" at "bad.cpp:9".
+struct SourceFrame {
+  std::string function;
+  std::string place;  // file:line
+};
+
 // Each error gets a hint at its usual cause in a controller.
 std::string_view likelyCause(std::string_view kind) {
   static const std::map<std::string_view, std::string_view> causes{
@@ -72,19 +78,36 @@ std::string failedAssertion(std::string_view output) {
   return last;
 }
 
-}  // namespace
-
-std::vector<std::string> sanitizerEnvironment(const fs::path& folder) {
-  // Stop at the first error with its report in `folder`, unsymbolized; leave crashes to the host's
-  // own handlers (they tell a stack overflow), but trace an abort(), which a failed check ends in.
-  const std::string common = "log_path=" + (folder / "sanitizer").string() + ":symbolize=0:print_summary=0";
-  return {"ASAN_OPTIONS=" + common +
-              ":detect_leaks=0:handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_abort=1:detect_stack_use_after_return=0:"
-              "quarantine_size_mb=64:malloc_context_size=8",
-          "UBSAN_OPTIONS=" + common + ":print_stacktrace=1:halt_on_error=1"};
+// Symbolizes with binutils' addr2line, run confined: it reads only the module and the system. The
+// frames of `module` at each offset, innermost first; an inlined call gives several.
+std::vector<std::vector<SourceFrame>> addr2line(const fs::path& module, const std::vector<std::string>& offsets) {
+  JailDef jail{.command = {"/usr/bin/addr2line", "--addresses", "--functions", "--demangle", "--inlines", "--exe", module.string()},
+               .limits = {.cpuSeconds = 10, .memoryBytes = 1ULL << 30, .fileBytes = 1 << 20, .openFiles = 32},
+               .files = {.read = {"/usr", "/lib", "/lib64", "/etc/ld.so.cache", module.string()}},
+               .cwd = "/",
+               .dropUser = true,
+               .noNetwork = true};
+  jail.command.insert(jail.command.end(), offsets.begin(), offsets.end());
+  Result<JailedRun> run = runJailed(std::move(jail), 10.0, 1 << 20);
+  std::vector<std::vector<SourceFrame>> frames;
+  if (!run || !WIFEXITED(run.value().status) || WEXITSTATUS(run.value().status) != 0) return frames;
+  // Each address on a line of its own ("0x..."), then pairs of lines: function, file:line.
+  std::istringstream out(run.value().output);
+  for (std::string line; std::getline(out, line);) {
+    if (line.rfind("0x", 0) == 0) {
+      frames.emplace_back();
+    } else if (!frames.empty()) {
+      std::string place;
+      std::getline(out, place);
+      frames.back().push_back({lambdaNamed(line), place});
+    }
+  }
+  return frames;
 }
 
-std::optional<SanitizerFinding> explainReport(std::string_view report, std::string_view output, const fs::path& folder, const Symbolizer& symbolize) {
+// The finding of `report` (what a sanitizer wrote), whose frames in modules under `folder` are
+// symbolized; `output` is what the host printed last. Empty when `report` holds no sanitizer error.
+std::optional<SanitizerFinding> explainReport(std::string_view report, std::string_view output, const fs::path& folder) {
   static const std::regex asanError(R"(ERROR: AddressSanitizer: ([A-Za-z-]+(?: [a-z-]+)?) on)");
   static const std::regex access(R"((READ|WRITE) of size (\d+))");
   static const std::regex ubsanError(R"(([^\s:]+:\d+(?::\d+)?): runtime error: ([^\n]*))");
@@ -126,7 +149,7 @@ std::optional<SanitizerFinding> explainReport(std::string_view report, std::stri
   }
   std::map<std::string, std::vector<SourceFrame>> frames;  // by "module+offset"
   for (const auto& [module, list] : offsets) {
-    const std::vector<std::vector<SourceFrame>> found = symbolize(module, list);
+    const std::vector<std::vector<SourceFrame>> found = addr2line(module, list);
     for (std::size_t i = 0; i < list.size() && i < found.size(); ++i) frames[module + "+" + list[i]] = found[i];
   }
   SanitizerFinding finding;
@@ -148,29 +171,16 @@ std::optional<SanitizerFinding> explainReport(std::string_view report, std::stri
   return finding;
 }
 
-std::vector<std::vector<SourceFrame>> addr2line(const fs::path& module, const std::vector<std::string>& offsets) {
-  JailDef jail{.command = {"/usr/bin/addr2line", "--addresses", "--functions", "--demangle", "--inlines", "--exe", module.string()},
-               .limits = {.cpuSeconds = 10, .memoryBytes = 1ULL << 30, .fileBytes = 1 << 20, .openFiles = 32},
-               .files = {.read = {"/usr", "/lib", "/lib64", "/etc/ld.so.cache", module.string()}},
-               .cwd = "/",
-               .dropUser = true,
-               .noNetwork = true};
-  jail.command.insert(jail.command.end(), offsets.begin(), offsets.end());
-  Result<JailedRun> run = runJailed(std::move(jail), 10.0, 1 << 20);
-  std::vector<std::vector<SourceFrame>> frames;
-  if (!run || !WIFEXITED(run.value().status) || WEXITSTATUS(run.value().status) != 0) return frames;
-  // Each address on a line of its own ("0x..."), then pairs of lines: function, file:line.
-  std::istringstream out(run.value().output);
-  for (std::string line; std::getline(out, line);) {
-    if (line.rfind("0x", 0) == 0) {
-      frames.emplace_back();
-    } else if (!frames.empty()) {
-      std::string place;
-      std::getline(out, place);
-      frames.back().push_back({lambdaNamed(line), place});
-    }
-  }
-  return frames;
+}  // namespace
+
+std::vector<std::string> sanitizerEnvironment(const fs::path& folder) {
+  // Stop at the first error with its report in `folder`, unsymbolized; leave crashes to the host's
+  // own handlers (they tell a stack overflow), but trace an abort(), which a failed check ends in.
+  const std::string common = "log_path=" + (folder / "sanitizer").string() + ":symbolize=0:print_summary=0";
+  return {"ASAN_OPTIONS=" + common +
+              ":detect_leaks=0:handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_abort=1:detect_stack_use_after_return=0:"
+              "quarantine_size_mb=64:malloc_context_size=8",
+          "UBSAN_OPTIONS=" + common + ":print_stacktrace=1:halt_on_error=1"};
 }
 
 std::optional<SanitizerFinding> readSanitizerReport(const fs::path& folder, std::string_view output) {
@@ -179,7 +189,7 @@ std::optional<SanitizerFinding> readSanitizerReport(const fs::path& folder, std:
     if (e.path().filename().string().rfind("sanitizer.", 0) != 0) continue;
     std::ifstream in(e.path(), std::ios::binary);
     const std::string report{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (std::optional<SanitizerFinding> f = explainReport(report, output, folder, addr2line)) return f;
+    if (std::optional<SanitizerFinding> f = explainReport(report, output, folder)) return f;
   }
   return std::nullopt;
 }
