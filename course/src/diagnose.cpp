@@ -104,9 +104,9 @@ std::vector<std::string> Diagnosis::hints(std::size_t i, const std::string& name
   std::vector<std::string> out;
   if (i >= impl_->robots.size()) return out;
   const Watch& w = impl_->robots[i];
-  if (w.distance < 0.05 && w.everForward) {
+  if (w.distance < kNeverMoved && w.everForward) {
     out.push_back(name + " never moved, though its controller commanded a forward speed: is it boxed in, or pushing into a wall from the start?");
-  } else if (w.distance < 0.05 && !w.everCommanded) {
+  } else if (w.distance < kNeverMoved && !w.everCommanded) {
     out.push_back(name + " never moved: its controller commanded no motion at all (every wheel command was {0, 0})");
   }
   if (w.firstPressedAt >= 0) {

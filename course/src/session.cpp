@@ -280,9 +280,9 @@ Result<Summary> runSession(const RunDef& def) {
     const std::vector<TaskRecord> running = run.timeline(i).running();
     w.summary.hints = diagnosis.hints(i, w.summary.name, running, sim.time());
     // A run that looks stuck may be a silent bug: say how to look for one.
-    const bool stuck = w.summary.distance < 0.05 || (w.lastEnded.empty() && running.size() > 1);
+    const bool stuck = w.summary.distance < kNeverMoved || (w.lastEnded.empty() && running.size() > 1);
     if (stuck && !checked) {
-      w.summary.hints.push_back(w.summary.name + (w.summary.distance < 0.05 ? " never moved" : "'s first task never ended") +
+      w.summary.hints.push_back(w.summary.name + (w.summary.distance < kNeverMoved ? " never moved" : "'s first task never ended") +
                                 ", and this run was not checked: frob run --check stops at an index out of range, a use after free or an integer "
                                 "division by zero, naming your file and line");
     }

@@ -61,6 +61,13 @@ TEST(Diagnosis, NeverMoved) {
             std::vector<std::string>{"ada never moved: its controller commanded no motion at all (every wheel command was {0, 0})"});
 }
 
+// A robot that drove 4 cm and then stopped did move: no "never moved" (it was said below 5 cm).
+TEST(Diagnosis, AFewCentimetresThenStoppingIsMoving) {
+  Diagnosis d(room(), {6, 4}, kDt);
+  for (int k = 0; k <= 30; ++k) d.observe(0, k * kDt, {.position = {3 + 0.01 * std::min(k, 4), 2}}, {0.1, 0}, 6.5, 6.5);
+  EXPECT_TRUE(d.hints(0, "ada", {}, 3.0).empty());
+}
+
 TEST(Diagnosis, SpinningInPlace) {
   Diagnosis d(room(), {6, 4}, kDt);
   // 0.8 rad/s for 40 s: about 5 turns on the spot.

@@ -17,6 +17,10 @@
 
 namespace frob::course {
 
+/// A robot whose true path is shorter than this (metres) never moved: under a centimetre of jitter
+/// against a wall, but not a robot that drove a few centimetres and stopped.
+inline constexpr double kNeverMoved = 0.02;
+
 /// Watches every robot of a run and says what went wrong, when something common did.
 class Diagnosis {
  public:
