@@ -1,5 +1,5 @@
 # What `cmake --install build --prefix P` puts where, and the Debian package `cpack -G DEB` makes of
-# it. The installed programs find everything relative to their own path (base/src/layout.cpp), so a
+# it. The installed programs find everything relative to their own path (worlds/base/src/layout.cpp), so a
 # prefix can be moved: P/bin/frob run my.cpp works from any folder, with no source tree present.
 #
 #   P/bin/frob                                  the command
