@@ -349,6 +349,8 @@ void RayCastBox2D(benchmark::State& state) {
 }
 BENCHMARK(RayCastBox2D);
 
+const detail::Neighbours noRobots;  // the ray micro benchmarks cast among walls only
+
 // Our uniform grid with DDA traversal over the same walls.
 void RayCastGrid(benchmark::State& state) {
   Simulation sim(maze());
@@ -357,7 +359,7 @@ void RayCastGrid(benchmark::State& state) {
   std::size_t k = 0;
   for (auto _ : state) {
     const Ray& r = rays[k++ % rays.size()];
-    benchmark::DoNotOptimize(caster.cast(r.origin, r.dir, 6.5, -1));
+    benchmark::DoNotOptimize(caster.cast(r.origin, r.dir, 6.5, noRobots));
   }
   state.counters["rays/s"] = benchmark::Counter(1, benchmark::Counter::kIsIterationInvariantRate);
 }
@@ -374,17 +376,19 @@ void RayCastCone(benchmark::State& state) {
     std::array<double, 5> x, y;  // axis first, then outwards, as the simulation orders them
   };
   std::vector<Cone> cones;
+  std::vector<detail::Spread> spreads;
   for (const Ray& r : rays) {
     const double a = std::atan2(r.dir.y(), r.dir.x());
     Cone c{};
     const double offsets[5] = {0.0, step, -step, 2 * step, -2 * step};
     for (int k = 0; k < 5; ++k) c.x[k] = std::cos(a + offsets[k]), c.y[k] = std::sin(a + offsets[k]);
     cones.push_back(c);
+    spreads.push_back(detail::spreadOf(c.x, c.y));
   }
   std::size_t k = 0;
   for (auto _ : state) {
     const std::size_t c = k++ % rays.size();
-    benchmark::DoNotOptimize(caster.castCone(rays[c].origin, cones[c].x, cones[c].y, 6.5, -1, cosCutoff));
+    benchmark::DoNotOptimize(caster.castCone(rays[c].origin, cones[c].x, cones[c].y, spreads[c], 6.5, cosCutoff, noRobots));
   }
   state.counters["rays/s"] = benchmark::Counter(5, benchmark::Counter::kIsIterationInvariantRate);
 }

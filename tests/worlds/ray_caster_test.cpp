@@ -1,6 +1,6 @@
 // The ray caster (private to worlds/): a cone cast in one call, with its rays four or five at a
-// time in SIMD lanes, reads what a brute-force cast of every ray against every wall and robot
-// reads, and the same bits with AVX-512, AVX2 and neither.
+// time in SIMD lanes and only the robots it may meet tested, reads what a brute-force cast of every
+// ray against every wall and robot reads, and the same bits with AVX-512, AVX2 and neither.
 #include "ray_caster.hpp"
 
 #include "frob/worlds/registry.hpp"
@@ -110,7 +110,8 @@ double coneByBruteForce(const Scene& s, const Point2& o, const std::vector<Vec2>
 TEST(RayCaster, AConeReadsWhatABruteForceCastReadsOnEveryInstructionSet) {
   const Scene s = crowdedMaze();
   RayCaster caster(s.walls, Point2(-1, -1), Point2(21, 21));
-  caster.setRobots(s.centres, s.radii);
+  caster.setRobots(s.centres, s.radii, 6.5);
+  Neighbours near;
   Rng rng(9, 1, Stream::Sonar);
   const double cosCutoff = std::cos(22.5 * pi / 180);
   int echoes = 0, inside = 0, skipped = 0, wide = 0;
@@ -121,18 +122,24 @@ TEST(RayCaster, AConeReadsWhatABruteForceCastReadsOnEveryInstructionSet) {
     Point2 o = self < 0 ? Point2(-2.0 + 24.0 * rng.uniform(), -2.0 + 24.0 * rng.uniform())
                         : s.centres[static_cast<std::size_t>(self)] + s.radii[static_cast<std::size_t>(self)] * unitVector(a);
     const int rays = 1 + k % 9;
-    const double width = (rays == 1 ? 0.0 : 25.0) * pi / 180, range = k % 5 == 0 ? 2.0 : 6.5;
+    // Mostly a sonar's 25 degrees; some cones as wide as a right angle or wider, where no robot is culled.
+    const double width = (rays == 1 ? 0.0 : k % 7 == 0 ? 200.0 : k % 11 == 0 ? 90.0 : 25.0) * pi / 180, range = k % 5 == 0 ? 2.0 : 6.5;
     std::vector<Vec2> dirs;
     for (int r = 0; r < rays; ++r) dirs.push_back(unitVector(a + (rays == 1 ? 0.0 : width * (r / (rays - 1.0) - 0.5))));
     bool ambiguous = false;
     const double expected = coneByBruteForce(s, o, dirs, range, self, cosCutoff, ambiguous);
     std::vector<double> xs, ys;
     for (const Vec2& d : dirs) xs.push_back(d.x()), ys.push_back(d.y());
+    // As the simulation gathers: around the sensing robot's centre, for sensors on its rim.
+    if (self < 0)
+      caster.gather(o, 0.0, range, self, near);
+    else
+      caster.gather(s.centres[static_cast<std::size_t>(self)], s.radii[static_cast<std::size_t>(self)], range, self, near);
     useIsa(Isa::Baseline);
-    const double baseline = caster.castCone(o, xs, ys, range, self, cosCutoff);
+    const double baseline = caster.castCone(o, xs, ys, spreadOf(xs, ys), range, cosCutoff, near);
     for (const Isa isa : {Isa::Avx2, Isa::Avx512}) {
       if (useIsa(isa) != isa) continue;  // the CPU lacks it
-      ASSERT_EQ(caster.castCone(o, xs, ys, range, self, cosCutoff), baseline)
+      ASSERT_EQ(caster.castCone(o, xs, ys, spreadOf(xs, ys), range, cosCutoff, near), baseline)
           << "cone " << k << ": instruction set " << static_cast<int>(isa) << " and plain x86-64 must agree bit for bit";
       ++wide;
     }

@@ -11,6 +11,13 @@ constexpr int kMaxCells = 1 << 16;  // keeps the grid small enough to rebuild ch
 
 }  // namespace
 
+Spread spreadOf(std::span<const double> dirX, std::span<const double> dirY) {
+  Spread s;
+  for (std::size_t k = 0; k < dirX.size(); ++k) s.cos = std::min(s.cos, dirX[0] * dirX[k] + dirY[0] * dirY[k]);
+  s.sin = std::sqrt(std::max(0.0, 1.0 - s.cos * s.cos));
+  return s;
+}
+
 RayCaster::RayCaster(const std::vector<WallDef>& walls, const Point2& lo, const Point2& hi) {
   std::vector<Seg> segs;
   std::vector<Circle> circles;
@@ -74,7 +81,6 @@ RayCaster::RayCaster(const std::vector<WallDef>& walls, const Point2& lo, const 
         return std::array{c.cx - c.r, c.cy - c.r, c.cx + c.r, c.cy + c.r};
       },
       pillarStart_, cellPillars_);
-  robotSpan_.assign(cells, Span{});
   x1_ = x0_ + nx_ * cell_, y1_ = y0_ + ny_ * cell_;
 }
 
@@ -83,58 +89,83 @@ void RayCaster::cellRange(double ax, double ay, double bx, double by, int& i0, i
   cellSpan(ay, by, y0_, inv_, ny_, j0, j1);
 }
 
-void RayCaster::setRobots(const std::vector<Point2>& centres, const std::vector<double>& radii) {
-  for (int c : touched_) robotSpan_[c] = Span{};
-  touched_.clear();
-  outside_.clear();
-  robots_.resize(centres.size());
-  for (std::size_t k = 0; k < centres.size(); ++k) robots_[k] = {centres[k].x(), centres[k].y(), radii[k], static_cast<int>(k)};
-  if (centres.size() == 1) return;  // a robot never sees itself: nothing to bin
-
-  // Count per cell, then place; both passes run in descending index, the order rays test them in.
-  const double x1 = x1_, y1 = y1_;
-  auto inside = [&](const Robot& c) {
-    return c.cx - c.r >= x0_ && c.cy - c.r >= y0_ && c.cx + c.r <= x1 && c.cy + c.r <= y1;  // false for NaN
+void RayCaster::setRobots(const std::vector<Point2>& centres, const std::vector<double>& radii, double reach) {
+  robots_.clear();
+  if (centres.size() <= 1) return;  // a robot never hears itself: nothing to bin
+  // Cells about as wide as the reach, so that a gather reads two or three a side; at most 64 a side.
+  const double side = std::max(reach, std::max(x1_ - x0_, y1_ - y0_) / 64.0);
+  robotInv_ = 1.0 / side;
+  robotNx_ = std::max(1, static_cast<int>(std::ceil((x1_ - x0_) * robotInv_)));
+  robotNy_ = std::max(1, static_cast<int>(std::ceil((y1_ - y0_) * robotInv_)));
+  auto cellOf = [&](const Point2& c) {
+    int i, j, unused;
+    cellSpan(c.x(), c.x(), x0_, robotInv_, robotNx_, i, unused);
+    cellSpan(c.y(), c.y(), y0_, robotInv_, robotNy_, j, unused);
+    return static_cast<std::size_t>(j * robotNx_ + i);
   };
-  auto forEachCell = [&](const Robot& c, auto&& visit) {
-    int i0, j0, i1, j1;
-    cellRange(c.cx - c.r, c.cy - c.r, c.cx + c.r, c.cy + c.r, i0, j0, i1, j1);
-    for (int j = j0; j <= j1; ++j)
-      for (int i = i0; i <= i1; ++i) visit(j * nx_ + i);
-  };
-  for (std::size_t k = 0; k < robots_.size(); ++k)
-    if (!inside(robots_[k])) outside_.push_back(static_cast<int>(k));  // tested directly, never binned
-  for (std::size_t k = robots_.size(); k-- > 0;)
-    if (inside(robots_[k]))
-      forEachCell(robots_[k], [&](int cell) {
-        if (robotSpan_[cell].end++ == 0) touched_.push_back(cell);
-      });
-  std::uint32_t total = 0;
-  for (int c : touched_) {
-    const std::uint32_t n = robotSpan_[c].end;
-    robotSpan_[c] = {total, total};
-    total += n;
+  // Count per cell, then place in index order.
+  robotStart_.assign(static_cast<std::size_t>(robotNx_) * static_cast<std::size_t>(robotNy_) + 1, 0);
+  robotRadius_ = 0;
+  for (std::size_t k = 0; k < centres.size(); ++k) {
+    ++robotStart_[cellOf(centres[k]) + 1];
+    robotRadius_ = std::max(robotRadius_, radii[k]);
   }
-  cellRobots_.resize(total);
-  for (std::size_t k = robots_.size(); k-- > 0;)
-    if (inside(robots_[k])) forEachCell(robots_[k], [&](int cell) { cellRobots_[robotSpan_[cell].end++] = robots_[k]; });
+  for (std::size_t c = 1; c < robotStart_.size(); ++c) robotStart_[c] += robotStart_[c - 1];
+  robots_.resize(centres.size());
+  std::vector<std::uint32_t> fill(robotStart_.begin(), robotStart_.end() - 1);
+  for (std::size_t k = 0; k < centres.size(); ++k)
+    robots_[fill[cellOf(centres[k])]++] = {centres[k].x(), centres[k].y(), radii[k], static_cast<int>(k)};
 }
 
-[[gnu::always_inline]] inline void RayCaster::testCell(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const {
+void RayCaster::gather(const Point2& centre, double rim, double range, int self, Neighbours& out) const {
+  out.found.clear();
+  out.count = 0;
+  if (robots_.empty()) {  // no rings
+    out.ringStart.assign(1, 0);
+    return;
+  }
+  const std::size_t rings = static_cast<std::size_t>(std::ceil(range * inv_)) + 1;
+  out.ringStart.assign(rings + 1, 0);
+  // A ray from within `rim` of the centre, shorter than the range, meets only robots whose centres
+  // lie within rim + range + their radius; a millimetre's margin outweighs any rounding.
+  const double cx = centre.x(), cy = centre.y(), reach = rim + range, far = reach + robotRadius_ + 1e-3;
+  int i0, i1, j0, j1;
+  cellSpan(cx - far, cx + far, x0_, robotInv_, robotNx_, i0, i1);
+  cellSpan(cy - far, cy + far, y0_, robotInv_, robotNy_, j0, j1);
+  for (int j = j0; j <= j1; ++j) {
+    for (std::uint32_t k = robotStart_[j * robotNx_ + i0], end = robotStart_[j * robotNx_ + i1 + 1]; k < end; ++k) {
+      const Robot& c = robots_[k];
+      const double dx = c.cx - cx, dy = c.cy - cy, within = reach + c.r + 1e-3;
+      if (c.index == self || !(dx * dx + dy * dy <= within * within)) continue;
+      // No sensor meets this robot nearer than `lower` (a micrometre less, against rounding).
+      const double lower = std::sqrt(dx * dx + dy * dy) - c.r - rim - 1e-6;
+      const auto ring = std::min(rings - 1, static_cast<std::size_t>(std::max(0.0, lower * inv_)));
+      Neighbours::Found& found = out.found.emplace_back();  // field by field: a braced temporary copied whole stalls
+      found.ring = static_cast<std::uint32_t>(ring), found.x = c.cx, found.y = c.cy, found.r = c.r;
+      ++out.ringStart[ring + 1];
+    }
+  }
+  // Placed by ring (counted above), keeping the order found within each.
+  for (std::size_t k = 1; k <= rings; ++k) out.ringStart[k] += out.ringStart[k - 1];
+  out.next.assign(out.ringStart.begin(), out.ringStart.end() - 1);
+  out.count = out.found.size();
+  for (std::vector<double>* v : {&out.x, &out.y, &out.r}) v->assign(out.count + 8, NAN);
+  for (const Neighbours::Found& f : out.found) {
+    const std::uint32_t slot = out.next[f.ring]++;
+    out.x[slot] = f.x, out.y[slot] = f.y, out.r[slot] = f.r;
+  }
+}
+
+[[gnu::always_inline]] inline void RayCaster::testCell(int cell, double ox, double oy, double ux, double uy, RayHit& best) const {
   for (std::uint32_t k = segStart_[cell], end = segStart_[cell + 1]; k < end; ++k) hitSegment(cellSegs_[k], ox, oy, ux, uy, best);
   for (std::uint32_t k = pillarStart_[cell], end = pillarStart_[cell + 1]; k < end; ++k) {
     const Circle& c = cellPillars_[k];
     hitCircle(c.cx, c.cy, c.r, ox, oy, ux, uy, best);
   }
-  const Span robots = robotSpan_[cell];
-  for (std::uint32_t k = robots.begin; k < robots.end; ++k) {
-    const Robot& c = cellRobots_[k];
-    if (c.index != self) hitCircle(c.cx, c.cy, c.r, ox, oy, ux, uy, best);
-  }
 }
 
 [[gnu::always_inline]] inline void RayCaster::walk(int i, int j, double bx0, double bx1, double by0, double by1, double ox, double oy, double ux,
-                                                   double uy, double tmax, int self, RayHit& best) const {
+                                                   double uy, double tmax, RayHit& best) const {
   // Walk the cells the ray crosses, nearest first; stop once the best hit lies within the cell.
   // bx0/bx1 (by0/by1): the offsets from the origin to cell i's (j's) lower and upper sides.
   const double ix = 1.0 / ux, iy = 1.0 / uy;  // +-inf along an axis; the steps handle it
@@ -143,7 +174,7 @@ void RayCaster::setRobots(const std::vector<Point2>& centres, const std::vector<
   double tx = ux > 0 ? bx1 * ix : ux < 0 ? bx0 * ix : INFINITY;
   double ty = uy > 0 ? by1 * iy : uy < 0 ? by0 * iy : INFINITY;
   for (;;) {
-    testCell(j * nx_ + i, ox, oy, ux, uy, self, best);
+    testCell(j * nx_ + i, ox, oy, ux, uy, best);
     const double exit = std::min(tx, ty);
     if (best.distance <= exit || exit >= tmax) break;
     if (tx < ty) {
@@ -156,15 +187,10 @@ void RayCaster::setRobots(const std::vector<Point2>& centres, const std::vector<
   }
 }
 
-[[gnu::always_inline]] inline void RayCaster::testOutside(double ox, double oy, double ux, double uy, int self, RayHit& best) const {
-  for (int k : outside_)
-    if (k != self) hitCircle(robots_[k].cx, robots_[k].cy, robots_[k].r, ox, oy, ux, uy, best);
-}
-
-RayHit RayCaster::cast(const Point2& origin, const Vec2& dir, double range, int self) const {
+RayHit RayCaster::cast(const Point2& origin, const Vec2& dir, double range, const Neighbours& near) const {
   const double ox = origin.x(), oy = origin.y(), ux = dir.x(), uy = dir.y();
   RayHit best{range, 1.0};
-  testOutside(ox, oy, ux, uy, self, best);
+  for (std::size_t k = 0; k < near.count; ++k) hitCircle(near.x[k], near.y[k], near.r[k], ox, oy, ux, uy, best);
 
   // Clip [0, range] to the grid's box (slab method), unless the ray starts inside it (the usual case).
   const double x1 = x1_, y1 = y1_;
@@ -188,16 +214,21 @@ RayHit RayCaster::cast(const Point2& origin, const Vec2& dir, double range, int 
     const double px = (ox + tmin * ux - x0_) * inv_, py = (oy + tmin * uy - y0_) * inv_;  // >= 0 up to rounding
     const int i = std::min(std::max(static_cast<int>(px), 0), nx_ - 1);
     const int j = std::min(std::max(static_cast<int>(py), 0), ny_ - 1);
-    walk(i, j, x0_ + i * cell_ - ox, x0_ + (i + 1) * cell_ - ox, y0_ + j * cell_ - oy, y0_ + (j + 1) * cell_ - oy, ox, oy, ux, uy, tmax, self, best);
+    walk(i, j, x0_ + i * cell_ - ox, x0_ + (i + 1) * cell_ - ox, y0_ + j * cell_ - oy, y0_ + (j + 1) * cell_ - oy, ox, oy, ux, uy, tmax, best);
   }
   if (best.distance >= range) best.distance = INFINITY;
   return best;
 }
 
-double RayCaster::castCone(const Point2& origin, std::span<const double> dirX, std::span<const double> dirY, double range, int self,
-                           double cosCutoff) const {
+double RayCaster::castCone(const Point2& origin, std::span<const double> dirX, std::span<const double> dirY, const Spread& spread, double range,
+                           double cosCutoff, const Neighbours& near) const {
   const double ox = origin.x(), oy = origin.y();
   const std::size_t n = dirX.size();
+  // A millionth, in the cosine and sine and in metres, outweighs any rounding, of turning the rays too.
+  constexpr double margin = 1e-6;
+  const bool narrow = spread.cos > 2 * margin;  // under 90 degrees: else every robot in range is tested
+  const Wedge wedge = narrow ? Wedge{dirX[0], dirY[0], spread.cos - margin, spread.sin + margin, margin, margin}
+                             : Wedge{dirX[0], dirY[0], 0.0, 1.0, margin, INFINITY};
   double nearest = range;
   // From inside the grid, in fans of at least three rays: up to eight with AVX-512, else four (five
   // when five are left, three as four with the first repeated); the rest one by one. Each is cast
@@ -217,12 +248,12 @@ double RayCaster::castCone(const Point2& origin, std::span<const double> dirX, s
         padY[0] = padY[3] = uy[0], padY[1] = uy[1], padY[2] = uy[2];
         ux = padX, uy = padY;
       }
-      nearest = castFan(rays, ox, oy, ux, uy, nearest, self, cosCutoff);
+      nearest = castFan(rays, ox, oy, ux, uy, nearest, cosCutoff, near, wedge);
       fanned += std::min<std::size_t>(left, static_cast<std::size_t>(rays));
     }
   }
   for (; fanned < n; ++fanned) {
-    const RayHit hit = cast(origin, Vec2(dirX[fanned], dirY[fanned]), nearest, self);
+    const RayHit hit = cast(origin, Vec2(dirX[fanned], dirY[fanned]), nearest, near);
     if (hit.cosIncidence >= cosCutoff) nearest = std::min(nearest, hit.distance);
   }
   return nearest;

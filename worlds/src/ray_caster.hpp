@@ -1,6 +1,8 @@
 #pragma once
 // Private: fast ray casts for sonars. Static walls (segments and circles) live in a uniform grid
-// walked by DDA (Amanatides & Woo); robots are circles re-binned into the same grid each step.
+// walked by DDA (Amanatides & Woo). Robots are circles, binned by centre each step into a coarser
+// grid of their own; a sensing robot gathers its neighbours once, in rings by distance, and each
+// cone tests a ring only once its sweep reaches it, and of it only the robots inside its wedge.
 // Casting is read-only, so many threads may cast at once.
 
 #include "frob/worlds/world_def.hpp"
@@ -25,20 +27,49 @@ enum class Isa { Baseline, Avx2, Avx512 };
 // returns the one now in use.
 Isa useIsa(Isa widest);
 
+// The robots a robot's sensors could hear, gathered once for all its cones: centres and radii by
+// ring, where ring k holds the robots no sensor can meet nearer than k cell lengths; then eight
+// entries of padding, so that lanes may load eight from any entry.
+struct Neighbours {
+  std::vector<double> x, y, r;
+  std::vector<std::uint32_t> ringStart = {0};  // ring k: [ringStart[k], ringStart[k + 1]); no rings at first
+  std::size_t count = 0;                       // robots; the rest is padding
+  // Scratch for gather(): the robots as found, with their rings, and the next free slot per ring.
+  struct Found {
+    std::uint32_t ring;
+    double x, y, r;
+  };
+  std::vector<Found> found;
+  std::vector<std::uint32_t> next;
+};
+
+// How far a cone's rays stray from its first ray: the cosine and sine of the widest angle between them.
+struct Spread {
+  double cos = 1.0, sin = 0.0;
+};
+// The spread of the rays along unit (dirX[k], dirY[k]).
+[[nodiscard]] Spread spreadOf(std::span<const double> dirX, std::span<const double> dirY);
+
 class RayCaster {
  public:
   // Builds the grid over [lo, hi] from the walls (rectangles become four segments).
   RayCaster(const std::vector<WallDef>& walls, const Point2& lo, const Point2& hi);
-  // Replaces the moving circles (robots); circle i is skipped by casts from robot i.
-  void setRobots(const std::vector<Point2>& centres, const std::vector<double>& radii);
-  // The nearest hit of the ray from `origin` along unit `dir` within `range`, ignoring robot `self`.
-  [[nodiscard]] RayHit cast(const Point2& origin, const Vec2& dir, double range, int self) const;
+  // Replaces the moving circles (robots). `reach`: the farthest any sensor hears from its robot's
+  // centre, which sizes the robots' grid.
+  void setRobots(const std::vector<Point2>& centres, const std::vector<double>& radii, double reach);
+  // Into `out`, the robots other than `self` that a sensor at most `rim` from `centre` could hear
+  // within `range`.
+  void gather(const Point2& centre, double rim, double range, int self, Neighbours& out) const;
+  // The nearest hit of the ray from `origin` along unit `dir` within `range`, among the walls and
+  // the robots `near`.
+  [[nodiscard]] RayHit cast(const Point2& origin, const Vec2& dir, double range, const Neighbours& near) const;
   // The sonar reading of a cone: rays from `origin` along the unit (dirX[k], dirY[k]), in order,
-  // each cast only as far as the nearest echo so far; a hit echoes when its cosIncidence >=
+  // at most `spread` from the first (spreadOf() these rays, or wider; the same rays turned give the
+  // same spread), each cast only as far as the nearest echo so far; a hit echoes when its cosIncidence >=
   // `cosCutoff`. Returns the nearest echo, or `range` when none. Bit-identical to calling cast()
   // per ray, but the rays of a cone share the walk through the grid.
-  [[nodiscard]] double castCone(const Point2& origin, std::span<const double> dirX, std::span<const double> dirY, double range, int self,
-                                double cosCutoff) const;
+  [[nodiscard]] double castCone(const Point2& origin, std::span<const double> dirX, std::span<const double> dirY, const Spread& spread, double range,
+                                double cosCutoff, const Neighbours& near) const;
   // Number of static segments (rectangles and polylines count their sides).
   [[nodiscard]] std::size_t segmentCount() const { return segmentCount_; }
 
@@ -51,12 +82,7 @@ class RayCaster {
   };
   struct Robot {
     double cx, cy, r;
-    int index;  // into robots_, to skip the casting robot
-  };
-  // Per cell, the items a ray must test, stored by value so that a cell's walls are contiguous:
-  // a ray reads one run of segments, then pillars and robots, without chasing indices.
-  struct Span {
-    std::uint32_t begin = 0, end = 0;
+    int index;  // as given to setRobots(), to skip the sensing robot
   };
   void cellRange(double x0, double y0, double x1, double y1, int& i0, int& j0, int& i1, int& j1) const;
   // Along one axis, the cells [c0, c1] of n, from `origin`, 1 / size `inv`, that [lo, hi] touches,
@@ -68,32 +94,42 @@ class RayCaster {
     c0 = static_cast<int>(std::min(top, std::max(0.0, (lo - origin) * inv - eps)));
     c1 = static_cast<int>(std::min(top, std::max(0.0, (hi - origin) * inv + eps)));
   }
-  void walk(int i, int j, double bx0, double bx1, double by0, double by1, double ox, double oy, double ux, double uy, double tmax, int self,
+  void walk(int i, int j, double bx0, double bx1, double by0, double by1, double ox, double oy, double ux, double uy, double tmax,
             RayHit& best) const;
   // Ray o + t u against one segment or circle: `best` becomes the hit when it is nearer.
   static void hitSegment(const Seg& s, double ox, double oy, double ux, double uy, RayHit& best);
   static void hitCircle(double cx, double cy, double r, double ox, double oy, double ux, double uy, RayHit& best);
-  void testOutside(double ox, double oy, double ux, double uy, int self, RayHit& best) const;
-  void testCell(int cell, double ox, double oy, double ux, double uy, int self, RayHit& best) const;
+  void testCell(int cell, double ox, double oy, double ux, double uy, RayHit& best) const;
   // Most rays a fan casts at once: 8 with AVX-512, else 5 (four lanes and a lone fifth ray).
   static int fanWidth();
   // `rays` rays of one cone at once (ray_fan.cpp), 3 to fanWidth(), with four lanes 4 or 5 (the
   // caller pads 3 to 4): the nearest echo below `cap`, else `cap`.
-  double castFan(int rays, double ox, double oy, const double* ux, const double* uy, double cap, int self, double cosCutoff) const;
+  // How a fan culls robots: its cone's rays lie within angle h of ray (ax, ay); a circle (q from the
+  // origin, radius r) can meet one only if it comes within r of that wedge, so only if
+  // |cross| cos h - max(along, 0) sin h <= r and along >= -r (for h under 90 degrees), along and
+  // cross measured on (ax, ay). An origin inside the circle passes both. `margin` widens every
+  // bound against rounding; `behind` is it, or infinite when h is 90 degrees or more.
+  struct Wedge {
+    double ax, ay, cosH, sinH, margin, behind;
+  };
+  double castFan(int rays, double ox, double oy, const double* ux, const double* uy, double cap, double cosCutoff, const Neighbours& near,
+                 const Wedge& wedge) const;
   friend struct FanCaster;  // ray_fan.cpp: castFan's body, compiled for each instruction set
 
   std::size_t segmentCount_ = 0;
-  std::vector<Robot> robots_;
-  std::vector<int> outside_;                           // robots not fully inside the grid: tested by every ray
+  // Per cell, the walls a ray must test, stored by value so that a cell's walls are contiguous: a
+  // ray reads one run of segments, then of pillars, without chasing indices.
   std::vector<std::uint32_t> segStart_, pillarStart_;  // cell c: [start[c], start[c + 1])
   std::vector<Seg> cellSegs_;                          // segments per cell, in index order (a wall is copied into each cell it spans)
   std::vector<Circle> cellPillars_;
-  // Robots per cell, rebuilt each step: only the cells robots touch are set and later cleared.
-  std::vector<Span> robotSpan_;                                    // per cell
-  std::vector<Robot> cellRobots_;                                  // per cell, in descending robot index
-  std::vector<int> touched_;                                       // cells whose robotSpan_ is set
   double x0_ = 0, y0_ = 0, x1_ = 1, y1_ = 1, cell_ = 1, inv_ = 1;  // grid box [x0_, x1_] x [y0_, y1_]
   int nx_ = 1, ny_ = 1;
+  // The robots, by the cell of the robots' grid (over the same box) that holds their centre; a
+  // centre outside the box counts in the nearest cell, so a gather that reaches it still finds it.
+  std::vector<std::uint32_t> robotStart_;  // cell c: [robotStart_[c], robotStart_[c + 1])
+  std::vector<Robot> robots_;              // by cell, then index
+  double robotInv_ = 1, robotRadius_ = 0;  // 1 / the robots' cell size; the largest robot radius
+  int robotNx_ = 1, robotNy_ = 1;
 };
 
 [[gnu::always_inline]] inline void RayCaster::hitSegment(const Seg& s, double ox, double oy, double ux, double uy, RayHit& best) {

@@ -1,12 +1,14 @@
 // The rays of a sonar cone cast together: eight at once with AVX-512, else four, and a fifth
-// alongside. Rays from one origin a few degrees apart cross nearly the same cells, so instead of
-// walking each ray's cells alone (most of the cost was the walk, not the tests), the fan is swept in
-// bands of one cell's length: each band tests the cells under the bounding box of the rays' pieces
-// in it, against all rays at once in SIMD lanes (with four lanes, a fifth in scalar). A lane is
-// final once its nearest hit lies within the bands swept so far. Every lane computes the same
-// operations as RayCaster::cast() in the same order, so each ray's distance and incidence are
-// bit-identical to casting it alone; only exact ties between two different surfaces could resolve
-// differently, as the cells are visited in another order.
+// alongside. First the robots near the sensor: eight (or four) at a time, each is kept only if it
+// lies within the fan's wedge, and only those are tested against the rays. Then the walls: rays from
+// one origin a few degrees apart cross nearly the same cells, so instead of walking each ray's
+// cells alone (most of the cost was the walk, not the tests), the fan is swept in bands of one
+// cell's length: each band tests the cells under the bounding box of the rays' pieces in it,
+// against all rays at once in SIMD lanes (with four lanes, a fifth in scalar). A lane is final once
+// its nearest hit lies within the bands swept so far. Every lane computes the same operations as
+// RayCaster::cast() in the same order, so each ray's distance and incidence are bit-identical to
+// casting it alone; only exact ties between two different surfaces could resolve differently, as
+// they are met in another order.
 #include "ray_caster.hpp"
 
 #include <algorithm>
@@ -50,6 +52,22 @@ template <class V>
 template <class M>
 [[gnu::always_inline]] inline bool any(M m) {
   return __builtin_reduce_or(m) != 0;
+}
+// Bit k set when lane k of `m` is.
+template <class M>
+[[gnu::always_inline]] inline unsigned maskBits(const M& m) {
+  using Bits = bool __attribute__((ext_vector_type(8)));
+  if constexpr (sizeof(M) == 64) {
+    return __builtin_bit_cast(std::uint8_t, __builtin_convertvector(m, Bits));
+  } else {
+    return __builtin_bit_cast(std::uint8_t, __builtin_convertvector(__builtin_shufflevector(m, m, 0, 1, 2, 3, 0, 1, 2, 3), Bits)) & 15u;
+  }
+}
+template <class V>
+[[gnu::always_inline]] inline V load(const double* p) {
+  V v;
+  __builtin_memcpy(&v, p, sizeof v);
+  return v;
 }
 // Lane-wise square root, correctly rounded, so each lane equals std::sqrt: one vsqrtpd of the
 // caller's width, as this file is built without errno for math (worlds/CMakeLists.txt).
@@ -102,11 +120,10 @@ template <class V>
 // castFan's body; always inlined, so that each caller below compiles it for its own instruction set.
 struct FanCaster {
   using Seg = RayCaster::Seg;
-  using Span = RayCaster::Span;
-  using Robot = RayCaster::Robot;
+  using Wedge = RayCaster::Wedge;
 
   template <class V, bool WithLone>
-  [[gnu::always_inline]] static void testCell(const RayCaster& g, int cell, Fan<V>& f, Lone& lone, int self) {
+  [[gnu::always_inline]] static void testCell(const RayCaster& g, int cell, Fan<V>& f, Lone& lone) {
     using M = MaskOf<V>;
     const M sign = splat<M>(kSign);
     for (std::uint32_t k = g.segStart_[cell], end = g.segStart_[cell + 1]; k < end; ++k) {
@@ -128,10 +145,27 @@ struct FanCaster {
     }
     for (std::uint32_t k = g.pillarStart_[cell], end = g.pillarStart_[cell + 1]; k < end; ++k)
       testCircle<V, WithLone>(g.cellPillars_[k].cx, g.cellPillars_[k].cy, g.cellPillars_[k].r, f, lone);
-    const Span robots = g.robotSpan_[cell];
-    for (std::uint32_t k = robots.begin; k < robots.end; ++k) {
-      const Robot& c = g.cellRobots_[k];
-      if (c.index != self) testCircle<V, WithLone>(c.cx, c.cy, c.r, f, lone);
+  }
+
+  // Of the robots near.x/y/r[begin, end), those within the wedge that may be met nearer than
+  // `cap`, tested against the fan, eight (or four) culled at once.
+  template <class V, bool WithLone>
+  [[gnu::always_inline]] static void testRobots(const Neighbours& near, std::size_t begin, std::size_t end, const Wedge& w, double cap, Fan<V>& f,
+                                                Lone& lone) {
+    using M = MaskOf<V>;
+    constexpr int lanes = kLanes<V>;
+    for (std::size_t b = begin; b < end; b += lanes) {
+      const V qx = load<V>(&near.x[b]) - f.ox, qy = load<V>(&near.y[b]) - f.oy, r = load<V>(&near.r[b]);
+      const V along = qx * w.ax + qy * w.ay;
+      const V across = fromBits<V>(bitsOf(qx * w.ay - qy * w.ax) & ~splat<M>(kSign));
+      const V ahead = select(along > 0.0, along, splat<V>(0.0));
+      const M maybe = (across * w.cosH - ahead * w.sinH <= r + w.margin) & (along >= -r - w.behind) & (along < cap + r + w.margin);  // false for NaN
+      unsigned bits = maskBits(maybe);
+      if (end - b < lanes) bits &= (1u << (end - b)) - 1;  // lanes past the end belong to the next ring
+      for (; bits != 0; bits &= bits - 1) {
+        const std::size_t k = b + static_cast<std::size_t>(__builtin_ctz(bits));
+        testCircle<V, WithLone>(near.x[k], near.y[k], near.r[k], f, lone);
+      }
     }
   }
 
@@ -141,17 +175,14 @@ struct FanCaster {
     fanCircle(cx, cy, r, f);
   }
 
-  // The fan of ux/uy[0 .. lanes - 1], and the next ray as a lone extra one when WithLone.
+  // The fan of the rays in lanes ux/uy, and (loneX, loneY) as a lone extra ray when WithLone.
   template <class V, bool WithLone>
-  [[gnu::always_inline]] static double cast(const RayCaster& g, double ox, double oy, const double* ux, const double* uy, double cap, int self,
-                                            double cosCutoff) {
+  [[gnu::always_inline]] static double cast(const RayCaster& g, double ox, double oy, const V& ux, const V& uy, double loneX, double loneY,
+                                            double cap, double cosCutoff, const Neighbours& near, const Wedge& wedge) {
     using M = MaskOf<V>;
-    constexpr int lanes = kLanes<V>;
-    Fan<V> f{ox, oy, {}, {}, splat<V>(cap), splat<V>(1.0)};
-    for (int k = 0; k < lanes; ++k) f.ux[k] = ux[k], f.uy[k] = uy[k];
-    Lone lone{WithLone ? ux[lanes] : 0.0, WithLone ? uy[lanes] : 0.0, RayHit{cap, 1.0}, WithLone};
-    for (int k : g.outside_)
-      if (k != self) testCircle<V, WithLone>(g.robots_[k].cx, g.robots_[k].cy, g.robots_[k].r, f, lone);
+    Fan<V> f{ox, oy, ux, uy, splat<V>(cap), splat<V>(1.0)};
+    Lone lone{loneX, loneY, RayHit{cap, 1.0}, WithLone};
+    const std::size_t rings = near.ringStart.size() - 1;
     double nearest = cap;  // the nearest echo of the lanes found final so far
     M live = splat<M>(-1);
     int pi0 = 1, pj0 = 1, pi1 = 0, pj1 = 0;  // the cells of the previous band, already tested
@@ -164,8 +195,9 @@ struct FanCaster {
       uyLo = __builtin_reduce_min(select(live, f.uy, far)), uyHi = __builtin_reduce_max(select(live, f.uy, -far));
       if (lone.live) uxLo = std::min(uxLo, lone.ux), uxHi = std::max(uxHi, lone.ux), uyLo = std::min(uyLo, lone.uy), uyHi = std::max(uyHi, lone.uy);
     };
-    bool stale = true;  // the extremes need finding again
-    for (double d0 = 0.0; (any(live) || lone.live) && d0 < nearest;) {
+    bool stale = true;     // the extremes need finding again
+    std::size_t band = 0;  // band k starts k cell lengths out
+    for (double d0 = 0.0; (any(live) || lone.live) && d0 < nearest; ++band) {
       if (stale) bound(), stale = false;
       const double d1 = std::min(d0 + g.cell_, nearest);
       // The live rays' pieces over [d0, d1] lie in the box of their end points.
@@ -176,8 +208,10 @@ struct FanCaster {
       RayCaster::cellSpan(ly, hy, g.y0_, g.inv_, g.ny_, j0, j1);
       for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i)
-          if (i < pi0 || i > pi1 || j < pj0 || j > pj1) testCell<V, WithLone>(g, j * g.nx_ + i, f, lone, self);
+          if (i < pi0 || i > pi1 || j < pj0 || j > pj1) testCell<V, WithLone>(g, j * g.nx_ + i, f, lone);
       pi0 = i0, pj0 = j0, pi1 = i1, pj1 = j1;
+      // The robots no sensor meets nearer than this band's start: none further can be met within it.
+      if (band < rings) testRobots<V, WithLone>(near, near.ringStart[band], near.ringStart[band + 1], wedge, nearest, f, lone);
       // A hit within [0, d1] is final: every cell the ray crosses up to d1 has been tested.
       const M done = live & (f.best <= d1);
       const M echoes = done & (f.best < nearest) & (f.cos >= cosCutoff);  // false for NaN
@@ -199,21 +233,26 @@ namespace {
 
 // Every build gives bit-identical results: the same IEEE operations, no fused multiply-adds.
 // Four lanes: 4 rays, or 5 with the fifth alone; fewer are padded by the caller.
-[[gnu::target("avx2")]] double castAvx2(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy, double cap, int self,
-                                        double cosCutoff) {
-  return rays == 5 ? FanCaster::cast<V4, true>(g, ox, oy, ux, uy, cap, self, cosCutoff)
-                   : FanCaster::cast<V4, false>(g, ox, oy, ux, uy, cap, self, cosCutoff);
+[[gnu::always_inline]] inline double castFour(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy, double cap,
+                                              double cosCutoff, const Neighbours& near, const FanCaster::Wedge& wedge) {
+  const V4 x = load<V4>(ux), y = load<V4>(uy);
+  return rays == 5 ? FanCaster::cast<V4, true>(g, ox, oy, x, y, ux[4], uy[4], cap, cosCutoff, near, wedge)
+                   : FanCaster::cast<V4, false>(g, ox, oy, x, y, 0.0, 0.0, cap, cosCutoff, near, wedge);
 }
-double castBaseline(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy, double cap, int self, double cosCutoff) {
-  return rays == 5 ? FanCaster::cast<V4, true>(g, ox, oy, ux, uy, cap, self, cosCutoff)
-                   : FanCaster::cast<V4, false>(g, ox, oy, ux, uy, cap, self, cosCutoff);
+[[gnu::target("avx2")]] double castAvx2(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy, double cap,
+                                        double cosCutoff, const Neighbours& near, const FanCaster::Wedge& wedge) {
+  return castFour(g, rays, ox, oy, ux, uy, cap, cosCutoff, near, wedge);
+}
+double castBaseline(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy, double cap, double cosCutoff,
+                    const Neighbours& near, const FanCaster::Wedge& wedge) {
+  return castFour(g, rays, ox, oy, ux, uy, cap, cosCutoff, near, wedge);
 }
 // Eight lanes: up to 8 rays, padded with copies of the first (a repeat leaves the minimum as it is).
 [[gnu::target("avx512f,avx512dq,avx512vl")]] double castAvx512(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy,
-                                                               double cap, int self, double cosCutoff) {
-  double x[8], y[8];
+                                                               double cap, double cosCutoff, const Neighbours& near, const FanCaster::Wedge& wedge) {
+  V8 x, y;
   for (int k = 0; k < 8; ++k) x[k] = ux[k < rays ? k : 0], y[k] = uy[k < rays ? k : 0];
-  return FanCaster::cast<V8, false>(g, ox, oy, x, y, cap, self, cosCutoff);
+  return FanCaster::cast<V8, false>(g, ox, oy, x, y, 0.0, 0.0, cap, cosCutoff, near, wedge);
 }
 
 bool supported(Isa isa) {
@@ -238,9 +277,10 @@ std::atomic<Isa> isa = widestUpTo(Isa::Avx512);
 
 int RayCaster::fanWidth() { return isa.load(std::memory_order_relaxed) == Isa::Avx512 ? 8 : 5; }
 
-double RayCaster::castFan(int rays, double ox, double oy, const double* ux, const double* uy, double cap, int self, double cosCutoff) const {
+double RayCaster::castFan(int rays, double ox, double oy, const double* ux, const double* uy, double cap, double cosCutoff, const Neighbours& near,
+                          const Wedge& wedge) const {
   const Isa now = isa.load(std::memory_order_relaxed);
-  return (now == Isa::Avx512 ? castAvx512 : now == Isa::Avx2 ? castAvx2 : castBaseline)(*this, rays, ox, oy, ux, uy, cap, self, cosCutoff);
+  return (now == Isa::Avx512 ? castAvx512 : now == Isa::Avx2 ? castAvx2 : castBaseline)(*this, rays, ox, oy, ux, uy, cap, cosCutoff, near, wedge);
 }
 
 Isa useIsa(Isa widest) {

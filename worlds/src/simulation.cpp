@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace frob::worlds {
 namespace {
@@ -23,12 +24,20 @@ constexpr std::size_t kOdometryGrain = 256;
 // Continuous collision is on when a robot can cover more than this part of its radius in a step.
 constexpr double kTunnelFraction = 0.25;
 
+// The directions of a robot's sonar rays relative to its heading, per sonar, per ray. Robots
+// alike share one, so that sensing a crowd reads them from the cache rather than memory.
+struct Rays {
+  std::vector<double> x, y;
+  detail::Spread spread;  // the widest any cone's rays stray from its first
+  bool operator==(const Rays& o) const { return x == o.x && y == o.y; }
+};
+
 // One robot's state apart from its Box2D body.
 struct RobotState {
   RobotDef def;
   RobotSpec spec;
   b2Body* body = nullptr;
-  std::vector<double> rayX, rayY;  // per sonar, per ray: direction relative to heading
+  std::shared_ptr<const Rays> rays;
   std::vector<Vec2> sonarOffsets;  // per sonar: sensor position relative to the centre, robot frame
   double cosCutoff = 1.0;
   double forward = 0.0, turn = 0.0;  // commands after acceleration limits
@@ -70,6 +79,8 @@ struct Simulation::Impl : b2ContactListener {
   std::int64_t steps = 0;
   std::vector<Point2> centres;
   std::vector<double> radii;
+  double reach = 0.0;                                    // the farthest any sonar hears from its robot's centre: its range plus the rim
+  std::vector<std::shared_ptr<const Rays>> rayPatterns;  // the distinct ones
 
   Impl(const WorldDef& w, const SimOptions& o)
       : world(w),
@@ -151,6 +162,7 @@ struct Simulation::Impl : b2ContactListener {
 
     // Ray directions spread evenly across each cone; sensors sit on the body's rim.
     const SonarDef& s = d.sonar;
+    Rays rays;
     for (double a : r.spec.sonarAngles) {
       r.sonarOffsets.push_back(d.radius * unitVector(a));
       // Axis first, then alternately left and right moving outwards: 0, +1, -1, +2, -2 steps.
@@ -162,9 +174,15 @@ struct Simulation::Impl : b2ContactListener {
                        [](double x, double y) { return std::abs(x) < std::abs(y) || (std::abs(x) == std::abs(y) && x > y); });
       for (double off : offsets) {
         const Vec2 u = unitVector(a + off);
-        r.rayX.push_back(u.x()), r.rayY.push_back(u.y());
+        rays.x.push_back(u.x()), rays.y.push_back(u.y());
       }
+      const std::size_t first = rays.x.size() - offsets.size();
+      const detail::Spread cone = detail::spreadOf({&rays.x[first], offsets.size()}, {&rays.y[first], offsets.size()});
+      rays.spread = {std::min(rays.spread.cos, cone.cos), std::max(rays.spread.sin, cone.sin)};
     }
+    const auto same = std::find_if(rayPatterns.begin(), rayPatterns.end(), [&](const auto& p) { return *p == rays; });
+    r.rays = same != rayPatterns.end() ? *same : rayPatterns.emplace_back(std::make_shared<const Rays>(std::move(rays)));
+    reach = std::max(reach, s.maxRange + d.radius);
     r.cosCutoff = std::cos(s.specularCutoff);
     r.previous = poseOf(r.body);
     r.odometry = r.previous;
@@ -213,28 +231,30 @@ struct Simulation::Impl : b2ContactListener {
 
   // The sensor frame of robot `i`, with the keys from `keysNow` on that fall in this step. Sonars
   // read per sonar the nearest echoing ray, with noise proportional to range.
-  // `worldX`/`worldY`: scratch for rayX/rayY in the world frame, one pair per chunk of robots
-  // rather than per robot, so that a step touches less memory.
-  void senseRobot(std::size_t i, Keys::const_iterator keysNow, std::vector<double>& worldX, std::vector<double>& worldY) {
+  // `worldX`/`worldY` (the rays in the world frame) and `near` are scratch, one set per chunk of
+  // robots rather than per robot, so that a step touches less memory.
+  void senseRobot(std::size_t i, Keys::const_iterator keysNow, std::vector<double>& worldX, std::vector<double>& worldY, detail::Neighbours& near) {
     RobotState& r = robots[i];
     SensorFrame& f = r.frame;
     const SonarDef& s = r.def.sonar;
     const Pose2 pose = poseOf(r.body);
     const double c = std::cos(pose.heading), sn = std::sin(pose.heading);
     auto rotate = [&](const Vec2& v) { return Vec2(c * v.x() - sn * v.y(), sn * v.x() + c * v.y()); };
-    worldX.resize(r.rayX.size()), worldY.resize(r.rayY.size());
-    for (std::size_t k = 0; k < r.rayX.size(); ++k) {  // every ray at once: the compiler vectorises it
-      worldX[k] = c * r.rayX[k] - sn * r.rayY[k];
-      worldY[k] = sn * r.rayX[k] + c * r.rayY[k];
+    const Rays& rays = *r.rays;
+    worldX.resize(rays.x.size()), worldY.resize(rays.y.size());
+    for (std::size_t k = 0; k < rays.x.size(); ++k) {  // every ray at once: the compiler vectorises it
+      worldX[k] = c * rays.x[k] - sn * rays.y[k];
+      worldY[k] = sn * rays.x[k] + c * rays.y[k];
     }
-    const std::size_t rays = static_cast<std::size_t>(s.rays);
+    const std::size_t perCone = static_cast<std::size_t>(s.rays);
+    if (!r.sonarOffsets.empty()) caster.gather(pose.position, r.def.radius, s.maxRange, static_cast<int>(i), near);
     for (std::size_t j = 0; j < r.sonarOffsets.size(); ++j) {
       const Point2 origin = pose.position + rotate(r.sonarOffsets[j]);
       // Rays run from the cone's axis outwards, each only as far as the nearest echo so far: a
       // surface beyond it cannot change the reading, and the shorter walk saves most of the work.
       // A hit whose cosIncidence is below the cutoff is reflected away and does not echo.
       const double nearest =
-          caster.castCone(origin, {&worldX[j * rays], rays}, {&worldY[j * rays], rays}, s.maxRange, static_cast<int>(i), r.cosCutoff);
+          caster.castCone(origin, {&worldX[j * perCone], perCone}, {&worldY[j * perCone], perCone}, rays.spread, s.maxRange, r.cosCutoff, near);
       const double noise = r.sonarRng.gaussian();  // drawn for every sonar so the stream never depends on hits
       f.sonar[j] = nearest >= s.maxRange ? s.maxRange : std::clamp(nearest * (1.0 + s.noise * noise), s.minRange, s.maxRange);
     }
@@ -301,13 +321,14 @@ void Simulation::sense() {
     s.centres[i] = Point2(p.x, p.y);
     s.radii[i] = s.robots[i].def.radius;
   }
-  s.caster.setRobots(s.centres, s.radii);
+  s.caster.setRobots(s.centres, s.radii, s.reach);
   // Ray casting is read-only on shared state and each robot has its own random stream, so robots
   // may be sensed on any thread in any order with bit-identical results.
   const auto keysNow = std::lower_bound(s.keys.begin(), s.keys.end(), s.steps, [](const auto& k, std::int64_t step) { return k.first < step; });
   s.workers.run(s.robots.size(), kSenseGrain, [&s, keysNow](std::size_t begin, std::size_t end) {
     std::vector<double> worldX, worldY;
-    for (std::size_t i = begin; i < end; ++i) s.senseRobot(i, keysNow, worldX, worldY);
+    detail::Neighbours near;
+    for (std::size_t i = begin; i < end; ++i) s.senseRobot(i, keysNow, worldX, worldY, near);
   });
 }
 
