@@ -222,41 +222,9 @@ RayHit RayCaster::cast(const Point2& origin, const Vec2& dir, double range, cons
 
 double RayCaster::castCone(const Point2& origin, std::span<const double> dirX, std::span<const double> dirY, const Spread& spread, double range,
                            double cosCutoff, const Neighbours& near) const {
-  const double ox = origin.x(), oy = origin.y();
-  const std::size_t n = dirX.size();
-  // A millionth, in the cosine and sine and in metres, outweighs any rounding, of turning the rays too.
-  constexpr double margin = 1e-6;
-  const bool narrow = spread.cos > 2 * margin;  // under 90 degrees: else every robot in range is tested
-  const Wedge wedge = narrow ? Wedge{dirX[0], dirY[0], spread.cos - margin, spread.sin + margin, margin, margin}
-                             : Wedge{dirX[0], dirY[0], 0.0, 1.0, margin, INFINITY};
-  double nearest = range;
-  // From inside the grid, in fans of at least three rays: up to eight with AVX-512, else four (five
-  // when five are left, three as four with the first repeated); the rest one by one. Each is cast
-  // only as far as the nearest echo so far: the reading is the minimum over the rays, so neither the
-  // order nor a repeat changes it.
-  std::size_t fanned = 0;
-  const int width = fanWidth();
-  if (ox >= x0_ && ox <= x1_ && oy >= y0_ && oy <= y1_) [[likely]] {
-    while (n - fanned >= 3) {
-      const std::size_t left = n - fanned;
-      const int rays = width == 8 ? static_cast<int>(std::min<std::size_t>(left, 8)) : left == 5 ? 5 : 4;
-      const double* ux = &dirX[fanned];
-      const double* uy = &dirY[fanned];
-      double padX[4], padY[4];
-      if (left == 3 && width != 8) {
-        padX[0] = padX[3] = ux[0], padX[1] = ux[1], padX[2] = ux[2];
-        padY[0] = padY[3] = uy[0], padY[1] = uy[1], padY[2] = uy[2];
-        ux = padX, uy = padY;
-      }
-      nearest = castFan(rays, ox, oy, ux, uy, nearest, cosCutoff, near, wedge);
-      fanned += std::min<std::size_t>(left, static_cast<std::size_t>(rays));
-    }
-  }
-  for (; fanned < n; ++fanned) {
-    const RayHit hit = cast(origin, Vec2(dirX[fanned], dirY[fanned]), nearest, near);
-    if (hit.cosIncidence >= cosCutoff) nearest = std::min(nearest, hit.distance);
-  }
-  return nearest;
+  double reading;
+  castCones({&origin, 1}, dirX, dirY, spread, range, cosCutoff, near, {&reading, 1});
+  return reading;
 }
 
 }  // namespace frob::worlds::detail

@@ -65,11 +65,15 @@ class RayCaster {
   [[nodiscard]] RayHit cast(const Point2& origin, const Vec2& dir, double range, const Neighbours& near) const;
   // The sonar reading of a cone: rays from `origin` along the unit (dirX[k], dirY[k]), in order,
   // at most `spread` from the first (spreadOf() these rays, or wider; the same rays turned give the
-  // same spread), each cast only as far as the nearest echo so far; a hit echoes when its cosIncidence >=
-  // `cosCutoff`. Returns the nearest echo, or `range` when none. Bit-identical to calling cast()
-  // per ray, but the rays of a cone share the walk through the grid.
+  // same spread), each cast only as far as the nearest echo so far; a hit echoes when its
+  // cosIncidence >= `cosCutoff`. Returns the nearest echo, or `range` when none. Bit-identical to
+  // calling cast() per ray, but the rays of a cone share the walk through the grid.
   [[nodiscard]] double castCone(const Point2& origin, std::span<const double> dirX, std::span<const double> dirY, const Spread& spread, double range,
                                 double cosCutoff, const Neighbours& near) const;
+  // castCone() for each of a robot's cones, alike but for their origins: cone j's rays are
+  // dirX/dirY[j * n, (j + 1) * n) for n = dirX.size() / origins.size(); its reading goes to readings[j].
+  void castCones(std::span<const Point2> origins, std::span<const double> dirX, std::span<const double> dirY, const Spread& spread, double range,
+                 double cosCutoff, const Neighbours& near, std::span<double> readings) const;
   // Number of static segments (rectangles and polylines count their sides).
   [[nodiscard]] std::size_t segmentCount() const { return segmentCount_; }
 
@@ -100,10 +104,6 @@ class RayCaster {
   static void hitSegment(const Seg& s, double ox, double oy, double ux, double uy, RayHit& best);
   static void hitCircle(double cx, double cy, double r, double ox, double oy, double ux, double uy, RayHit& best);
   void testCell(int cell, double ox, double oy, double ux, double uy, RayHit& best) const;
-  // Most rays a fan casts at once: 8 with AVX-512, else 5 (four lanes and a lone fifth ray).
-  static int fanWidth();
-  // `rays` rays of one cone at once (ray_fan.cpp), 3 to fanWidth(), with four lanes 4 or 5 (the
-  // caller pads 3 to 4): the nearest echo below `cap`, else `cap`.
   // How a fan culls robots: its cone's rays lie within angle h of ray (ax, ay); a circle (q from the
   // origin, radius r) can meet one only if it comes within r of that wedge, so only if
   // |cross| cos h - max(along, 0) sin h <= r and along >= -r (for h under 90 degrees), along and
@@ -112,9 +112,7 @@ class RayCaster {
   struct Wedge {
     double ax, ay, cosH, sinH, margin, behind;
   };
-  double castFan(int rays, double ox, double oy, const double* ux, const double* uy, double cap, double cosCutoff, const Neighbours& near,
-                 const Wedge& wedge) const;
-  friend struct FanCaster;  // ray_fan.cpp: castFan's body, compiled for each instruction set
+  friend struct FanCaster;  // ray_fan.cpp: castCones's body, compiled for each instruction set
 
   std::size_t segmentCount_ = 0;
   // Per cell, the walls a ray must test, stored by value so that a cell's walls are contiguous: a

@@ -78,6 +78,16 @@ template <class V>
   return r;
 }
 
+// RayCaster::castCones()'s arguments.
+struct Cones {
+  std::span<const Point2> origins;
+  std::span<const double> dirX, dirY;
+  const Spread& spread;
+  double range, cosCutoff;
+  const Neighbours& near;
+  std::span<double> readings;
+};
+
 // The rays of the fan and each one's nearest hit so far.
 template <class V>
 struct Fan {
@@ -227,33 +237,78 @@ struct FanCaster {
     }
     return nearest;
   }
+
+  // castFan: `rays` rays of one cone at once, 3 to 8 with eight lanes (padded with copies of the
+  // first: a repeat leaves the minimum as it is), else 4 or 5 (the fifth alone; the caller pads 3
+  // to 4): the nearest echo below `cap`, else `cap`.
+  template <class V>
+  [[gnu::always_inline]] static double castFan(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy, double cap,
+                                               double cosCutoff, const Neighbours& near, const Wedge& wedge) {
+    if constexpr (kLanes<V> == 8) {
+      V x, y;
+      for (int k = 0; k < 8; ++k) x[k] = ux[k < rays ? k : 0], y[k] = uy[k < rays ? k : 0];
+      return cast<V, false>(g, ox, oy, x, y, 0.0, 0.0, cap, cosCutoff, near, wedge);
+    } else {
+      const V x = load<V>(ux), y = load<V>(uy);
+      return rays == 5 ? cast<V, true>(g, ox, oy, x, y, ux[4], uy[4], cap, cosCutoff, near, wedge)
+                       : cast<V, false>(g, ox, oy, x, y, 0.0, 0.0, cap, cosCutoff, near, wedge);
+    }
+  }
+
+  // RayCaster::castCone()'s body, in fans of V's lanes.
+  template <class V>
+  [[gnu::always_inline]] static double castCone(const RayCaster& g, const Point2& origin, const double* dirX, const double* dirY, std::size_t n,
+                                                const Spread& spread, double range, double cosCutoff, const Neighbours& near) {
+    const double ox = origin.x(), oy = origin.y();
+    // A millionth, in the cosine and sine and in metres, outweighs any rounding, of turning the rays too.
+    constexpr double margin = 1e-6;
+    const bool narrow = spread.cos > 2 * margin;  // under 90 degrees: else every robot in range is tested
+    const Wedge wedge = narrow ? Wedge{dirX[0], dirY[0], spread.cos - margin, spread.sin + margin, margin, margin}
+                               : Wedge{dirX[0], dirY[0], 0.0, 1.0, margin, INFINITY};
+    double nearest = range;
+    // From inside the grid, in fans of at least three rays: up to eight with eight lanes, else four
+    // (five when five are left, three as four with the first repeated); the rest one by one. Each
+    // is cast only as far as the nearest echo so far: the reading is the minimum over the rays, so
+    // neither the order nor a repeat changes it.
+    constexpr bool eight = kLanes<V> == 8;
+    std::size_t fanned = 0;
+    if (ox >= g.x0_ && ox <= g.x1_ && oy >= g.y0_ && oy <= g.y1_) [[likely]] {
+      while (n - fanned >= 3) {
+        const std::size_t left = n - fanned;
+        const int rays = eight ? static_cast<int>(std::min<std::size_t>(left, 8)) : left == 5 ? 5 : 4;
+        const double* ux = &dirX[fanned];
+        const double* uy = &dirY[fanned];
+        double padX[4], padY[4];
+        if (left == 3 && !eight) {
+          padX[0] = padX[3] = ux[0], padX[1] = ux[1], padX[2] = ux[2];
+          padY[0] = padY[3] = uy[0], padY[1] = uy[1], padY[2] = uy[2];
+          ux = padX, uy = padY;
+        }
+        nearest = castFan<V>(g, rays, ox, oy, ux, uy, nearest, cosCutoff, near, wedge);
+        fanned += std::min<std::size_t>(left, static_cast<std::size_t>(rays));
+      }
+    }
+    for (; fanned < n; ++fanned) {
+      const RayHit hit = g.cast(origin, Vec2(dirX[fanned], dirY[fanned]), nearest, near);
+      if (hit.cosIncidence >= cosCutoff) nearest = std::min(nearest, hit.distance);
+    }
+    return nearest;
+  }
+
+  template <class V>
+  [[gnu::always_inline]] static void castCones(const RayCaster& g, const Cones& c) {
+    const std::size_t n = c.dirX.size() / c.origins.size();
+    for (std::size_t j = 0; j < c.origins.size(); ++j)
+      c.readings[j] = castCone<V>(g, c.origins[j], &c.dirX[j * n], &c.dirY[j * n], n, c.spread, c.range, c.cosCutoff, c.near);
+  }
 };
 
 namespace {
 
 // Every build gives bit-identical results: the same IEEE operations, no fused multiply-adds.
-// Four lanes: 4 rays, or 5 with the fifth alone; fewer are padded by the caller.
-[[gnu::always_inline]] inline double castFour(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy, double cap,
-                                              double cosCutoff, const Neighbours& near, const FanCaster::Wedge& wedge) {
-  const V4 x = load<V4>(ux), y = load<V4>(uy);
-  return rays == 5 ? FanCaster::cast<V4, true>(g, ox, oy, x, y, ux[4], uy[4], cap, cosCutoff, near, wedge)
-                   : FanCaster::cast<V4, false>(g, ox, oy, x, y, 0.0, 0.0, cap, cosCutoff, near, wedge);
-}
-[[gnu::target("avx2")]] double castAvx2(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy, double cap,
-                                        double cosCutoff, const Neighbours& near, const FanCaster::Wedge& wedge) {
-  return castFour(g, rays, ox, oy, ux, uy, cap, cosCutoff, near, wedge);
-}
-double castBaseline(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy, double cap, double cosCutoff,
-                    const Neighbours& near, const FanCaster::Wedge& wedge) {
-  return castFour(g, rays, ox, oy, ux, uy, cap, cosCutoff, near, wedge);
-}
-// Eight lanes: up to 8 rays, padded with copies of the first (a repeat leaves the minimum as it is).
-[[gnu::target("avx512f,avx512dq,avx512vl")]] double castAvx512(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy,
-                                                               double cap, double cosCutoff, const Neighbours& near, const FanCaster::Wedge& wedge) {
-  V8 x, y;
-  for (int k = 0; k < 8; ++k) x[k] = ux[k < rays ? k : 0], y[k] = uy[k < rays ? k : 0];
-  return FanCaster::cast<V8, false>(g, ox, oy, x, y, 0.0, 0.0, cap, cosCutoff, near, wedge);
-}
+[[gnu::target("avx512f,avx512dq,avx512vl")]] void castAvx512(const RayCaster& g, const Cones& c) { FanCaster::castCones<V8>(g, c); }
+[[gnu::target("avx2")]] void castAvx2(const RayCaster& g, const Cones& c) { FanCaster::castCones<V4>(g, c); }
+void castBaseline(const RayCaster& g, const Cones& c) { FanCaster::castCones<V4>(g, c); }
 
 bool supported(Isa isa) {
   __builtin_cpu_init();  // may run before the runtime's own initialisation
@@ -275,12 +330,12 @@ std::atomic<Isa> isa = widestUpTo(Isa::Avx512);
 
 }  // namespace
 
-int RayCaster::fanWidth() { return isa.load(std::memory_order_relaxed) == Isa::Avx512 ? 8 : 5; }
-
-double RayCaster::castFan(int rays, double ox, double oy, const double* ux, const double* uy, double cap, double cosCutoff, const Neighbours& near,
-                          const Wedge& wedge) const {
+void RayCaster::castCones(std::span<const Point2> origins, std::span<const double> dirX, std::span<const double> dirY, const Spread& spread,
+                          double range, double cosCutoff, const Neighbours& near, std::span<double> readings) const {
   const Isa now = isa.load(std::memory_order_relaxed);
-  return (now == Isa::Avx512 ? castAvx512 : now == Isa::Avx2 ? castAvx2 : castBaseline)(*this, rays, ox, oy, ux, uy, cap, cosCutoff, near, wedge);
+  (now == Isa::Avx512 ? castAvx512
+   : now == Isa::Avx2 ? castAvx2
+                      : castBaseline)(*this, {origins, dirX, dirY, spread, range, cosCutoff, near, readings});
 }
 
 Isa useIsa(Isa widest) {

@@ -229,34 +229,40 @@ struct Simulation::Impl : b2ContactListener {
     }
   }
 
+  // Scratch for sensing, one per chunk of robots rather than per robot, so that a step touches less memory.
+  struct SenseScratch {
+    std::vector<double> worldX, worldY;  // the rays in the world frame
+    std::vector<Point2> origins;         // the sonars in the world frame
+    detail::Neighbours near;
+  };
+
   // The sensor frame of robot `i`, with the keys from `keysNow` on that fall in this step. Sonars
   // read per sonar the nearest echoing ray, with noise proportional to range.
-  // `worldX`/`worldY` (the rays in the world frame) and `near` are scratch, one set per chunk of
-  // robots rather than per robot, so that a step touches less memory.
-  void senseRobot(std::size_t i, Keys::const_iterator keysNow, std::vector<double>& worldX, std::vector<double>& worldY, detail::Neighbours& near) {
+  void senseRobot(std::size_t i, Keys::const_iterator keysNow, SenseScratch& scratch) {
     RobotState& r = robots[i];
     SensorFrame& f = r.frame;
     const SonarDef& s = r.def.sonar;
     const Pose2 pose = poseOf(r.body);
     const double c = std::cos(pose.heading), sn = std::sin(pose.heading);
-    auto rotate = [&](const Vec2& v) { return Vec2(c * v.x() - sn * v.y(), sn * v.x() + c * v.y()); };
     const Rays& rays = *r.rays;
+    std::vector<double>&worldX = scratch.worldX, &worldY = scratch.worldY;
     worldX.resize(rays.x.size()), worldY.resize(rays.y.size());
     for (std::size_t k = 0; k < rays.x.size(); ++k) {  // every ray at once: the compiler vectorises it
       worldX[k] = c * rays.x[k] - sn * rays.y[k];
       worldY[k] = sn * rays.x[k] + c * rays.y[k];
     }
-    const std::size_t perCone = static_cast<std::size_t>(s.rays);
-    if (!r.sonarOffsets.empty()) caster.gather(pose.position, r.def.radius, s.maxRange, static_cast<int>(i), near);
-    for (std::size_t j = 0; j < r.sonarOffsets.size(); ++j) {
-      const Point2 origin = pose.position + rotate(r.sonarOffsets[j]);
+    scratch.origins.clear();
+    for (const Vec2& o : r.sonarOffsets) scratch.origins.emplace_back(pose.position + Vec2(c * o.x() - sn * o.y(), sn * o.x() + c * o.y()));
+    if (!scratch.origins.empty()) {
       // Rays run from the cone's axis outwards, each only as far as the nearest echo so far: a
       // surface beyond it cannot change the reading, and the shorter walk saves most of the work.
       // A hit whose cosIncidence is below the cutoff is reflected away and does not echo.
-      const double nearest =
-          caster.castCone(origin, {&worldX[j * perCone], perCone}, {&worldY[j * perCone], perCone}, rays.spread, s.maxRange, r.cosCutoff, near);
+      caster.gather(pose.position, r.def.radius, s.maxRange, static_cast<int>(i), scratch.near);
+      caster.castCones(scratch.origins, worldX, worldY, rays.spread, s.maxRange, r.cosCutoff, scratch.near, f.sonar);
+    }
+    for (double& reading : f.sonar) {
       const double noise = r.sonarRng.gaussian();  // drawn for every sonar so the stream never depends on hits
-      f.sonar[j] = nearest >= s.maxRange ? s.maxRange : std::clamp(nearest * (1.0 + s.noise * noise), s.minRange, s.maxRange);
+      reading = reading >= s.maxRange ? s.maxRange : std::clamp(reading * (1.0 + s.noise * noise), s.minRange, s.maxRange);
     }
     const b2Vec2 v = r.body->GetLinearVelocity();
     f.odometry = r.odometry;
@@ -326,9 +332,8 @@ void Simulation::sense() {
   // may be sensed on any thread in any order with bit-identical results.
   const auto keysNow = std::lower_bound(s.keys.begin(), s.keys.end(), s.steps, [](const auto& k, std::int64_t step) { return k.first < step; });
   s.workers.run(s.robots.size(), kSenseGrain, [&s, keysNow](std::size_t begin, std::size_t end) {
-    std::vector<double> worldX, worldY;
-    detail::Neighbours near;
-    for (std::size_t i = begin; i < end; ++i) s.senseRobot(i, keysNow, worldX, worldY, near);
+    Impl::SenseScratch scratch;
+    for (std::size_t i = begin; i < end; ++i) s.senseRobot(i, keysNow, scratch);
   });
 }
 
