@@ -132,19 +132,26 @@ void RayCaster::gather(const Point2& centre, double rim, double range, int self,
   int i0, i1, j0, j1;
   cellSpan(cx - far, cx + far, x0_, robotInv_, robotNx_, i0, i1);
   cellSpan(cy - far, cy + far, y0_, robotInv_, robotNy_, j0, j1);
+  std::size_t candidates = 0;
+  for (int j = j0; j <= j1; ++j) candidates += robotStart_[j * robotNx_ + i1 + 1] - robotStart_[j * robotNx_ + i0];
+  out.found.resize(candidates);
+  // Every candidate is written, and kept by counting it: no branch to mispredict.
+  std::size_t kept = 0;
   for (int j = j0; j <= j1; ++j) {
     for (std::uint32_t k = robotStart_[j * robotNx_ + i0], end = robotStart_[j * robotNx_ + i1 + 1]; k < end; ++k) {
       const Robot& c = robots_[k];
-      const double dx = c.cx - cx, dy = c.cy - cy, within = reach + c.r + 1e-3;
-      if (c.index == self || !(dx * dx + dy * dy <= within * within)) continue;
+      const double dx = c.cx - cx, dy = c.cy - cy, squared = dx * dx + dy * dy, within = reach + c.r + 1e-3;
+      const bool keep = c.index != self && squared <= within * within;  // false for NaN
       // No sensor meets this robot nearer than `lower` (a micrometre less, against rounding).
-      const double lower = std::sqrt(dx * dx + dy * dy) - c.r - rim - 1e-6;
-      const auto ring = std::min(rings - 1, static_cast<std::size_t>(std::max(0.0, lower * inv_)));
-      Neighbours::Found& found = out.found.emplace_back();  // field by field: a braced temporary copied whole stalls
+      const double lower = std::sqrt(squared) - c.r - rim - 1e-6;
+      const auto ring = static_cast<std::size_t>(std::min(static_cast<double>(rings - 1), std::max(0.0, lower * inv_)));
+      Neighbours::Found& found = out.found[kept];  // field by field: a braced temporary copied whole stalls
       found.ring = static_cast<std::uint32_t>(ring), found.x = c.cx, found.y = c.cy, found.r = c.r;
-      ++out.ringStart[ring + 1];
+      kept += keep;
+      out.ringStart[ring + 1] += keep;
     }
   }
+  out.found.resize(kept);
   // Placed by ring (counted above), keeping the order found within each.
   for (std::size_t k = 1; k <= rings; ++k) out.ringStart[k] += out.ringStart[k - 1];
   out.next.assign(out.ringStart.begin(), out.ringStart.end() - 1);
