@@ -132,7 +132,7 @@ struct FanCaster {
   using Seg = RayCaster::Seg;
   using Wedge = RayCaster::Wedge;
 
-  template <class V, bool WithLone>
+  template <class V, bool WithLone, bool Crowd>
   [[gnu::always_inline]] static void testCell(const RayCaster& g, int cell, Fan<V>& f, Lone& lone) {
     using M = MaskOf<V>;
     const M sign = splat<M>(kSign);
@@ -148,7 +148,9 @@ struct FanCaster {
       const V denom = fromBits<V>(bitsOf(denomRaw) ^ flip), vn = fromBits<V>(bitsOf(vnRaw) ^ flip);
       const V tns = fromBits<V>(bitsOf(splat<V>(tn)) ^ flip);
       const M hit = (tns >= 0.0) & (vn >= 0.0) & (vn <= denom) & (tns < f.best * denom);
-      if (!any(hit)) continue;
+      // Among robots, which segments are met nearer than the best so far is too irregular to
+      // predict, and a missed prediction costs more than the division; alone, it is mostly none.
+      if (!Crowd && !any(hit)) continue;
       const V cosI = f.ux * s.nx + f.uy * s.ny;
       f.best = select(hit, tns / denom, f.best);
       f.cos = select(hit, fromBits<V>(bitsOf(cosI) & ~sign), f.cos);
@@ -185,8 +187,9 @@ struct FanCaster {
     fanCircle(cx, cy, r, f);
   }
 
-  // The fan of the rays in lanes ux/uy, and (loneX, loneY) as a lone extra ray when WithLone.
-  template <class V, bool WithLone>
+  // The fan of the rays in lanes ux/uy, and (loneX, loneY) as a lone extra ray when WithLone;
+  // Crowd when there are robots near.
+  template <class V, bool WithLone, bool Crowd>
   [[gnu::always_inline]] static double cast(const RayCaster& g, double ox, double oy, const V& ux, const V& uy, double loneX, double loneY,
                                             double cap, double cosCutoff, const Neighbours& near, const Wedge& wedge) {
     using M = MaskOf<V>;
@@ -218,7 +221,7 @@ struct FanCaster {
       RayCaster::cellSpan(ly, hy, g.y0_, g.inv_, g.ny_, j0, j1);
       for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i)
-          if (i < pi0 || i > pi1 || j < pj0 || j > pj1) testCell<V, WithLone>(g, j * g.nx_ + i, f, lone);
+          if (i < pi0 || i > pi1 || j < pj0 || j > pj1) testCell<V, WithLone, Crowd>(g, j * g.nx_ + i, f, lone);
       pi0 = i0, pj0 = j0, pi1 = i1, pj1 = j1;
       // The robots no sensor meets nearer than this band's start: none further can be met within it.
       if (band < rings) testRobots<V, WithLone>(near, near.ringStart[band], near.ringStart[band + 1], wedge, nearest, f, lone);
@@ -241,22 +244,22 @@ struct FanCaster {
   // castFan: `rays` rays of one cone at once, 3 to 8 with eight lanes (padded with copies of the
   // first: a repeat leaves the minimum as it is), else 4 or 5 (the fifth alone; the caller pads 3
   // to 4): the nearest echo below `cap`, else `cap`.
-  template <class V>
+  template <class V, bool Crowd>
   [[gnu::always_inline]] static double castFan(const RayCaster& g, int rays, double ox, double oy, const double* ux, const double* uy, double cap,
                                                double cosCutoff, const Neighbours& near, const Wedge& wedge) {
     if constexpr (kLanes<V> == 8) {
       V x, y;
       for (int k = 0; k < 8; ++k) x[k] = ux[k < rays ? k : 0], y[k] = uy[k < rays ? k : 0];
-      return cast<V, false>(g, ox, oy, x, y, 0.0, 0.0, cap, cosCutoff, near, wedge);
+      return cast<V, false, Crowd>(g, ox, oy, x, y, 0.0, 0.0, cap, cosCutoff, near, wedge);
     } else {
       const V x = load<V>(ux), y = load<V>(uy);
-      return rays == 5 ? cast<V, true>(g, ox, oy, x, y, ux[4], uy[4], cap, cosCutoff, near, wedge)
-                       : cast<V, false>(g, ox, oy, x, y, 0.0, 0.0, cap, cosCutoff, near, wedge);
+      return rays == 5 ? cast<V, true, Crowd>(g, ox, oy, x, y, ux[4], uy[4], cap, cosCutoff, near, wedge)
+                       : cast<V, false, Crowd>(g, ox, oy, x, y, 0.0, 0.0, cap, cosCutoff, near, wedge);
     }
   }
 
   // RayCaster::castCone()'s body, in fans of V's lanes.
-  template <class V>
+  template <class V, bool Crowd>
   [[gnu::always_inline]] static double castCone(const RayCaster& g, const Point2& origin, const double* dirX, const double* dirY, std::size_t n,
                                                 const Spread& spread, double range, double cosCutoff, const Neighbours& near) {
     const double ox = origin.x(), oy = origin.y();
@@ -284,7 +287,7 @@ struct FanCaster {
           padY[0] = padY[3] = uy[0], padY[1] = uy[1], padY[2] = uy[2];
           ux = padX, uy = padY;
         }
-        nearest = castFan<V>(g, rays, ox, oy, ux, uy, nearest, cosCutoff, near, wedge);
+        nearest = castFan<V, Crowd>(g, rays, ox, oy, ux, uy, nearest, cosCutoff, near, wedge);
         fanned += std::min<std::size_t>(left, static_cast<std::size_t>(rays));
       }
     }
@@ -298,8 +301,12 @@ struct FanCaster {
   template <class V>
   [[gnu::always_inline]] static void castCones(const RayCaster& g, const Cones& c) {
     const std::size_t n = c.dirX.size() / c.origins.size();
-    for (std::size_t j = 0; j < c.origins.size(); ++j)
-      c.readings[j] = castCone<V>(g, c.origins[j], &c.dirX[j * n], &c.dirY[j * n], n, c.spread, c.range, c.cosCutoff, c.near);
+    for (std::size_t j = 0; j < c.origins.size(); ++j) {
+      const Point2& o = c.origins[j];
+      const double *x = &c.dirX[j * n], *y = &c.dirY[j * n];
+      c.readings[j] = c.near.count > 0 ? castCone<V, true>(g, o, x, y, n, c.spread, c.range, c.cosCutoff, c.near)
+                                       : castCone<V, false>(g, o, x, y, n, c.spread, c.range, c.cosCutoff, c.near);
+    }
   }
 };
 
