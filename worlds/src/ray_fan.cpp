@@ -116,7 +116,6 @@ template <class V>
   const V b = px * f.ux + py * f.uy;
   const V disc = b * b - c;
   const MaskOf<V> misses = (disc < 0) | (b > 0);
-  if (!any(~misses)) return;
   const V t = -b - sqrtLanes(disc < 0 ? splat<V>(0.0) : disc);  // a missing lane's t is never taken
   const MaskOf<V> nearer = ~misses & ~(t >= f.best);
   const V nx = (px + t * f.ux) / r, ny = (py + t * f.uy) / r;
