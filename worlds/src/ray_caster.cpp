@@ -118,7 +118,6 @@ void RayCaster::setRobots(const std::vector<Point2>& centres, const std::vector<
 }
 
 void RayCaster::gather(const Point2& centre, double rim, double range, int self, Neighbours& out) const {
-  out.found.clear();
   out.count = 0;
   if (robots_.empty()) {  // no rings
     out.ringStart.assign(1, 0);
@@ -134,7 +133,7 @@ void RayCaster::gather(const Point2& centre, double rim, double range, int self,
   cellSpan(cy - far, cy + far, y0_, robotInv_, robotNy_, j0, j1);
   std::size_t candidates = 0;
   for (int j = j0; j <= j1; ++j) candidates += robotStart_[j * robotNx_ + i1 + 1] - robotStart_[j * robotNx_ + i0];
-  out.found.resize(candidates);
+  if (out.found.size() < candidates) out.found.resize(candidates);  // grown, never shrunk: no filling anew each time
   // Every candidate is written, and kept by counting it: no branch to mispredict.
   std::size_t kept = 0;
   for (int j = j0; j <= j1; ++j) {
@@ -151,13 +150,15 @@ void RayCaster::gather(const Point2& centre, double rim, double range, int self,
       out.ringStart[ring + 1] += keep;
     }
   }
-  out.found.resize(kept);
   // Placed by ring (counted above), keeping the order found within each.
   for (std::size_t k = 1; k <= rings; ++k) out.ringStart[k] += out.ringStart[k - 1];
   out.next.assign(out.ringStart.begin(), out.ringStart.end() - 1);
-  out.count = out.found.size();
-  for (std::vector<double>* v : {&out.x, &out.y, &out.r}) v->assign(out.count + 8, NAN);
-  for (const Neighbours::Found& f : out.found) {
+  out.count = kept;
+  for (std::vector<double>* v : {&out.x, &out.y, &out.r}) {
+    v->resize(kept + 8);
+    std::fill(v->begin() + static_cast<std::ptrdiff_t>(kept), v->end(), NAN);
+  }
+  for (const Neighbours::Found& f : std::span(out.found).first(kept)) {
     const std::uint32_t slot = out.next[f.ring]++;
     out.x[slot] = f.x, out.y[slot] = f.y, out.r[slot] = f.r;
   }

@@ -34,7 +34,8 @@ struct Neighbours {
   std::vector<double> x, y, r;
   std::vector<std::uint32_t> ringStart = {0};  // ring k: [ringStart[k], ringStart[k + 1]); no rings at first
   std::size_t count = 0;                       // robots; the rest is padding
-  // Scratch for gather(): the robots as found, with their rings, and the next free slot per ring.
+  // Scratch for gather(): the robots as found (the first `count`), with their rings, and the next
+  // free slot per ring.
   struct Found {
     std::uint32_t ring;
     double x, y, r;
