@@ -78,6 +78,10 @@ template <class V>
   return r;
 }
 
+// More robots near than this, and they set the best of most fans, so that which segments a fan
+// meets nearer is too irregular to branch on (10 robots in the hall: 4% faster at 8 than at 0).
+constexpr std::size_t kCrowd = 8;
+
 // RayCaster::castCones()'s arguments.
 struct Cones {
   std::span<const Point2> origins;
@@ -187,7 +191,7 @@ struct FanCaster {
   }
 
   // The fan of the rays in lanes ux/uy, and (loneX, loneY) as a lone extra ray when WithLone;
-  // Crowd when there are robots near.
+  // Crowd when more than kCrowd robots are near.
   template <class V, bool WithLone, bool Crowd>
   [[gnu::always_inline]] static double cast(const RayCaster& g, double ox, double oy, const V& ux, const V& uy, double loneX, double loneY,
                                             double cap, double cosCutoff, const Neighbours& near, const Wedge& wedge) {
@@ -303,8 +307,8 @@ struct FanCaster {
     for (std::size_t j = 0; j < c.origins.size(); ++j) {
       const Point2& o = c.origins[j];
       const double *x = &c.dirX[j * n], *y = &c.dirY[j * n];
-      c.readings[j] = c.near.count > 0 ? castCone<V, true>(g, o, x, y, n, c.spread, c.range, c.cosCutoff, c.near)
-                                       : castCone<V, false>(g, o, x, y, n, c.spread, c.range, c.cosCutoff, c.near);
+      c.readings[j] = c.near.count > kCrowd ? castCone<V, true>(g, o, x, y, n, c.spread, c.range, c.cosCutoff, c.near)
+                                            : castCone<V, false>(g, o, x, y, n, c.spread, c.range, c.cosCutoff, c.near);
     }
   }
 };
