@@ -114,7 +114,7 @@ TEST(RayCaster, AConeReadsWhatABruteForceCastReadsOnEveryInstructionSet) {
   Neighbours near;
   Rng rng(9, 1, Stream::Sonar);
   const double cosCutoff = std::cos(22.5 * pi / 180);
-  int echoes = 0, inside = 0, skipped = 0, wide = 0;
+  int echoes = 0, inside = 0, skipped = 0, wide = 0, crowded = 0;
   for (int k = 0; k < 20000; ++k) {
     // Origins mostly on robots' rims (as sonars are), some anywhere, a few outside the grid.
     const int self = k % 3 == 0 ? -1 : static_cast<int>(rng.next() % s.centres.size());
@@ -135,6 +135,7 @@ TEST(RayCaster, AConeReadsWhatABruteForceCastReadsOnEveryInstructionSet) {
       caster.gather(o, 0.0, range, self, near);
     else
       caster.gather(s.centres[static_cast<std::size_t>(self)], s.radii[static_cast<std::size_t>(self)], range, self, near);
+    crowded += near.count > 8;  // ray_fan.cpp's kCrowd: tested without a branch on each segment's hit
     useIsa(Isa::Baseline);
     const double baseline = caster.castCone(o, xs, ys, spreadOf(xs, ys), range, cosCutoff, near);
     for (const Isa isa : {Isa::Avx2, Isa::Avx512}) {
@@ -151,10 +152,12 @@ TEST(RayCaster, AConeReadsWhatABruteForceCastReadsOnEveryInstructionSet) {
     echoes += expected < range;
     inside += expected == 0.0;
   }
-  EXPECT_LT(skipped, 10);   // almost every cone is checked,
-  EXPECT_GT(echoes, 5000);  // the test sees plenty of echoes,
-  EXPECT_GT(inside, 10);    // and origins inside other robots
-  std::printf("cones compared with a wider instruction set: %d\n", wide);
+  EXPECT_LT(skipped, 10);            // almost every cone is checked,
+  EXPECT_GT(echoes, 5000);           // the test sees plenty of echoes,
+  EXPECT_GT(inside, 10);             // and origins inside other robots,
+  EXPECT_GT(crowded, 5000);          // among many robots
+  EXPECT_GT(20000 - crowded, 1000);  // and among few
+  std::printf("cones compared with a wider instruction set: %d; cast among more than eight robots: %d\n", wide, crowded);
 }
 
 }  // namespace
