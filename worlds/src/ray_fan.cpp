@@ -1,11 +1,11 @@
 // The rays of a sonar cone cast together: eight at once with AVX-512, else four, and a fifth
-// alongside. First the robots near the sensor: eight (or four) at a time, each is kept only if it
-// lies within the fan's wedge, and only those are tested against the rays. Then the walls: rays from
-// one origin a few degrees apart cross nearly the same cells, so instead of walking each ray's
-// cells alone (most of the cost was the walk, not the tests), the fan is swept in bands of one
-// cell's length: each band tests the cells under the bounding box of the rays' pieces in it,
-// against all rays at once in SIMD lanes (with four lanes, a fifth in scalar). A lane is final once
-// its nearest hit lies within the bands swept so far. Every lane computes the same operations as
+// alongside. Rays from one origin a few degrees apart cross nearly the same cells, so instead of
+// walking each ray's cells alone (most of the cost was the walk, not the tests), the fan is swept in
+// bands of one cell's length: each band tests the cells under the bounding box of the rays' pieces
+// in it, against all rays at once in SIMD lanes (with four lanes, a fifth in scalar), and then the
+// ring of nearby robots that no ray can meet before the band, eight (or four) at a time culled
+// against the fan's wedge, only those left tested against the rays. A lane is final once its
+// nearest hit lies within the bands swept so far. Every lane computes the same operations as
 // RayCaster::cast() in the same order, so each ray's distance and incidence are bit-identical to
 // casting it alone; only exact ties between two different surfaces could resolve differently, as
 // they are met in another order.
