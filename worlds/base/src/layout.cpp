@@ -72,4 +72,6 @@ const Layout& layout() {
 
 const char* version() { return FROB_VERSION; }
 
+const char* const kSdkIncludeDir = FROB_SDK_INCLUDE_DIR;
+
 }  // namespace frob

@@ -10,7 +10,7 @@ namespace frob {
 /// The folder controllers are compiled as seeing frob's headers in: a clang VFS overlay
 /// (Layout::headerOverlay) maps it to the real folder, so that one precompiled header serves any
 /// place the headers are installed in.
-inline constexpr const char* kSdkIncludeDir = "/frob-sdk/include";
+extern const char* const kSdkIncludeDir;
 
 /// The folders and files frob reads at run time.
 struct Layout {
