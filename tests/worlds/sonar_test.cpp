@@ -136,6 +136,36 @@ TEST(Sonar, RobotsSeeEachOtherAndPillars) {
   EXPECT_NEAR(sim.frame(0).sonar[1], (3.2 - 0.5) - 1.2, 1e-5);  // the pillar's near side
 }
 
+// Robots alike share one set of ray directions; robots unlike must each keep their own.
+TEST(Sonar, RobotsWithDifferentSonarsEachReadWithTheirOwn) {
+  const std::string a = R"(
+    [[robot]]
+    start = [2, 2]
+    heading_deg = 10
+    sonar = { count = 16, rays = 5, noise = 0 }
+  )";
+  const std::string b = R"(
+    [[robot]]
+    start = [8, 8]
+    heading_deg = 10
+    sonar = { count = 6, rays = 3, cone_deg = 60, noise = 0 }
+  )";
+  const std::string room = "size = [10, 10]\n";  // the robots 8.5 m apart: out of each other's range
+  auto readings = [](const std::string& world, std::size_t robot) {
+    Simulation sim(scene(world));
+    sim.sense();
+    return sim.frame(robot).sonar;
+  };
+  const std::vector<double> together0 = readings(room + a + b, 0), together1 = readings(room + a + b, 1);
+  ASSERT_EQ(together0.size(), 16u);
+  ASSERT_EQ(together1.size(), 6u);
+  EXPECT_EQ(together0, readings(room + a, 0));
+  EXPECT_EQ(together1, readings(room + b, 0));
+  std::string narrow = b;  // the same sonars with the default 25 degree cones read otherwise, so a mix-up shows
+  narrow.replace(narrow.find(", cone_deg = 60"), 15, "");
+  EXPECT_NE(together1, readings(room + narrow, 0));
+}
+
 TEST(Sonar, TheSameSeedGivesTheSameNoiseAndAnotherSeedOther) {
   auto readings = [](std::uint64_t seed) {
     Simulation sim(scene(facingWall(0.05)), {.seed = seed});
