@@ -135,11 +135,13 @@ struct FanCaster {
   using Seg = RayCaster::Seg;
   using Wedge = RayCaster::Wedge;
 
+  // The walls of cells [begin, end) of one row: their segments, then their pillars, each one run
+  // of the cell arrays, so that a row costs one loop rather than one per cell.
   template <class V, bool WithLone, bool Crowd>
-  [[gnu::always_inline]] static void testCell(const RayCaster& g, int cell, Fan<V>& f, Lone& lone) {
+  [[gnu::always_inline]] static void testCells(const RayCaster& g, int begin, int end, Fan<V>& f, Lone& lone) {
     using M = MaskOf<V>;
     const M sign = splat<M>(kSign);
-    for (std::uint32_t k = g.segStart_[cell], end = g.segStart_[cell + 1]; k < end; ++k) {
+    for (std::uint32_t k = g.segStart_[begin], last = g.segStart_[end]; k < last; ++k) {
       // As testCell(): the sign of denom folded in (an exact sign flip), then compared without dividing.
       const Seg& s = g.cellSegs_[k];
       if constexpr (WithLone) RayCaster::hitSegment(s, f.ox, f.oy, lone.ux, lone.uy, lone.best);
@@ -158,7 +160,7 @@ struct FanCaster {
       f.best = select(hit, tns / denom, f.best);
       f.cos = select(hit, fromBits<V>(bitsOf(cosI) & ~sign), f.cos);
     }
-    for (std::uint32_t k = g.pillarStart_[cell], end = g.pillarStart_[cell + 1]; k < end; ++k)
+    for (std::uint32_t k = g.pillarStart_[begin], last = g.pillarStart_[end]; k < last; ++k)
       testCircle<V, WithLone>(g.cellPillars_[k].cx, g.cellPillars_[k].cy, g.cellPillars_[k].r, f, lone);
   }
 
@@ -222,9 +224,17 @@ struct FanCaster {
       int i0, j0, i1, j1;
       RayCaster::cellSpan(lx, hx, g.x0_, g.inv_, g.nx_, i0, i1);
       RayCaster::cellSpan(ly, hy, g.y0_, g.inv_, g.ny_, j0, j1);
-      for (int j = j0; j <= j1; ++j)
-        for (int i = i0; i <= i1; ++i)
-          if (i < pi0 || i > pi1 || j < pj0 || j > pj1) testCell<V, WithLone, Crowd>(g, j * g.nx_ + i, f, lone);
+      // Row by row, the cells the previous band has not tested: the whole row, or the part left
+      // and the part right of the previous band's.
+      for (int j = j0; j <= j1; ++j) {
+        const int row = j * g.nx_;
+        if (j < pj0 || j > pj1) {
+          testCells<V, WithLone, Crowd>(g, row + i0, row + i1 + 1, f, lone);
+        } else {
+          if (i0 < pi0) testCells<V, WithLone, Crowd>(g, row + i0, row + std::min(i1 + 1, pi0), f, lone);
+          if (i1 > pi1) testCells<V, WithLone, Crowd>(g, row + std::max(i0, pi1 + 1), row + i1 + 1, f, lone);
+        }
+      }
       pi0 = i0, pj0 = j0, pi1 = i1, pj1 = j1;
       // The robots no sensor meets nearer than this band's start: none further can be met within it.
       if (band < rings) testRobots<V, WithLone>(near, near.ringStart[band], near.ringStart[band + 1], wedge, nearest, f, lone);
