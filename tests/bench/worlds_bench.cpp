@@ -139,13 +139,18 @@ BENCHMARK(Scale)->ArgNames({"robots", "threads"})->ArgsProduct({{1, 10, 100, 100
 
 // A large map: 10,000 short walls, one every metre of a 100 x 100 m floor (a cluttered building
 // floor plan has as many), and one robot among them.
-void LargeMap(benchmark::State& state) {
+WorldDef largeMap() {
   WorldDef w = hallWith(1);
   w.walls.clear();
   for (int i = 0; i < 100; ++i) {
     for (int j = 0; j < 100; ++j) w.walls.push_back(segmentWall(Point2(i + 0.3, j + 0.1), Point2(i + 0.7, j + 0.1)));
   }
   w.robots[0].start.position = Point2(50.5, 50.55);
+  return w;
+}
+
+void LargeMap(benchmark::State& state) {
+  const WorldDef w = largeMap();
   Simulation sim(w, {.dt = kDt});
   std::vector<Wheels> wheels(1);
   for (int k = 0; k < kWarmUpSteps; ++k) {
@@ -161,6 +166,14 @@ void LargeMap(benchmark::State& state) {
   state.counters["rtf"] = benchmark::Counter(kDt, benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(LargeMap);  // target: >= 2000x with ~10,000 walls
+
+// Building a simulation, which fits the ray caster's grid to the walls and the sonars: the maze,
+// the hall with 1000 robots, the large map.
+void Construct(benchmark::State& state) {
+  const WorldDef w = state.range(0) == 0 ? maze() : state.range(0) == 1 ? hallWith(1000) : largeMap();
+  for (auto _ : state) benchmark::DoNotOptimize(Simulation(w, {.dt = kDt}));
+}
+BENCHMARK(Construct)->ArgName("world")->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 
 // Enki, the same maze in centimetres, configured as its users would for speed.
 //

@@ -107,9 +107,15 @@ double coneByBruteForce(const Scene& s, const Point2& o, const std::vector<Vec2>
   return nearest;
 }
 
-TEST(RayCaster, AConeReadsWhatABruteForceCastReadsOnEveryInstructionSet) {
+// Whatever the grid's cells: the maze's own (about a metre), half a sonar's range, or as long, so that
+// a cone is swept in one band.
+class RayCasterOnGrid : public ::testing::TestWithParam<double> {};
+INSTANTIATE_TEST_SUITE_P(Cells, RayCasterOnGrid, ::testing::Values(0.0, 3.3, 6.6));
+
+TEST_P(RayCasterOnGrid, AConeReadsWhatABruteForceCastReadsOnEveryInstructionSet) {
   const Scene s = crowdedMaze();
-  RayCaster caster(s.walls, Point2(-1, -1), Point2(21, 21));
+  RayCaster caster(s.walls, Point2(-1, -1), Point2(21, 21), {.cell = GetParam()});
+  if (GetParam() > 0) ASSERT_EQ(caster.cellSize(), GetParam());
   caster.setRobots(s.centres, s.radii, 6.5);
   Neighbours near;
   Rng rng(9, 1, Stream::Sonar);
@@ -158,6 +164,33 @@ TEST(RayCaster, AConeReadsWhatABruteForceCastReadsOnEveryInstructionSet) {
   EXPECT_GT(crowded, 5000);          // among many robots
   EXPECT_GT(20000 - crowded, 1000);  // and among few
   std::printf("cones compared with a wider instruction set: %d; cast among more than eight robots: %d\n", wide, crowded);
+}
+
+// A hall of 2 m blocks 10 m apart, walled round, as the scale benchmark's.
+std::vector<WallDef> hallOfBlocks() {
+  std::vector<WallDef> walls;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) walls.push_back(rectangleWall(Point2(9 + 10 * i, 9 + 10 * j), Point2(11 + 10 * i, 11 + 10 * j)));
+  for (auto [a, b] : {std::pair{Point2(0, 0), Point2(100, 0)},
+                      {Point2(100, 0), Point2(100, 100)},
+                      {Point2(100, 100), Point2(0, 100)},
+                      {Point2(0, 100), Point2(0, 0)}})
+    walls.push_back(segmentWall(a, b));
+  return walls;
+}
+
+TEST(RayCaster, SizesItsCellsForTheWallsAndTheSonars) {
+  const Sensing sonar{.range = 6.5, .cone = 25.0 * pi / 180};
+  // Among walls a metre or so apart, cells follow their spacing, with or without sonars to fit.
+  const std::vector<WallDef> maze = crowdedMaze().walls;
+  const double bySpacing = RayCaster(maze, Point2(-1, -1), Point2(21, 21)).cellSize();
+  EXPECT_GT(bySpacing, 1.0);
+  EXPECT_LT(bySpacing, 1.5);
+  EXPECT_EQ(RayCaster(maze, Point2(-1, -1), Point2(21, 21), sonar).cellSize(), bySpacing);
+  // Among blocks 10 m apart, a cone costs least swept in one band: cells longer than its range.
+  const std::vector<WallDef> hall = hallOfBlocks();
+  EXPECT_LT(RayCaster(hall, Point2(-1, -1), Point2(101, 101)).cellSize(), 6.5);
+  EXPECT_GE(RayCaster(hall, Point2(-1, -1), Point2(101, 101), sonar).cellSize(), 6.5);
 }
 
 }  // namespace

@@ -51,10 +51,18 @@ struct Spread {
 // The spread of the rays along unit (dirX[k], dirY[k]).
 [[nodiscard]] Spread spreadOf(std::span<const double> dirX, std::span<const double> dirY);
 
+// How sensors will sweep the walls, which sizes the grid's cells: the farthest any reads and its
+// widest cone (radians). Without it (range 0), cells follow the walls' spacing alone. `cell`, when
+// set, is the cell size to use instead (for tests).
+struct Sensing {
+  double range = 0.0, cone = 0.0, cell = 0.0;
+};
+
 class RayCaster {
  public:
-  // Builds the grid over [lo, hi] from the walls (rectangles become four segments).
-  RayCaster(const std::vector<WallDef>& walls, const Point2& lo, const Point2& hi);
+  // Builds the grid over [lo, hi] from the walls (rectangles become four segments), its cells
+  // sized for the cheapest sweeps of `sensing`'s cones.
+  RayCaster(const std::vector<WallDef>& walls, const Point2& lo, const Point2& hi, const Sensing& sensing = {});
   // Replaces the moving circles (robots). `reach`: the farthest any sensor hears from its robot's
   // centre, which sizes the robots' grid.
   void setRobots(const std::vector<Point2>& centres, const std::vector<double>& radii, double reach);
@@ -77,6 +85,8 @@ class RayCaster {
                  double cosCutoff, const Neighbours& near, std::span<double> readings) const;
   // Number of static segments (rectangles and polylines count their sides).
   [[nodiscard]] std::size_t segmentCount() const { return segmentCount_; }
+  // The side of the grid's cells, metres.
+  [[nodiscard]] double cellSize() const { return cell_; }
 
  private:
   struct Seg {
@@ -89,6 +99,40 @@ class RayCaster {
     double cx, cy, r;
     int index;  // as given to setRobots(), to skip the sensing robot
   };
+  // Cells [i0, i1] x [j0, j1]; empty at first.
+  struct CellBox {
+    int i0 = 1, j0 = 1, i1 = 0, j1 = 0;
+  };
+  // Bins the walls into a grid of cells of side `cell` over [lo, hi].
+  void build(const std::vector<Seg>& segs, const std::vector<Circle>& circles, const Point2& lo, const Point2& hi, double cell);
+  // What sweeping sample cones of `sensing` from a lattice of origins over [lo, hi] costs with this
+  // grid, in segment tests: each band counts as kBandCost of them.
+  [[nodiscard]] double sweepCost(const Sensing& sensing, const Point2& lo, const Point2& hi) const;
+  [[nodiscard]] bool inside(double x, double y) const { return x >= x0_ && x <= x1_ && y >= y0_ && y <= y1_; }
+  // The cells under the pieces over [d0, d1] of rays from (ox, oy) whose directions lie in
+  // [uxLo, uxHi] x [uyLo, uyHi]: a piece's end ox + d ux is monotone in ux for d >= 0 (rounding
+  // too), so the ends of the extremes bound all.
+  [[gnu::always_inline]] CellBox bandBox(double ox, double oy, double uxLo, double uxHi, double uyLo, double uyHi, double d0, double d1) const {
+    CellBox b;
+    cellSpan(std::min(ox + d0 * uxLo, ox + d1 * uxLo), std::max(ox + d0 * uxHi, ox + d1 * uxHi), x0_, inv_, nx_, b.i0, b.i1);
+    cellSpan(std::min(oy + d0 * uyLo, oy + d1 * uyLo), std::max(oy + d0 * uyHi, oy + d1 * uyHi), y0_, inv_, ny_, b.j0, b.j1);
+    return b;
+  }
+  // Calls visit(begin, end) for each run of cells [begin, end) of one row that lie in `now` but not
+  // in `before`: row by row, the whole row, or the parts left and right of `before`'s. A row's
+  // cells are one run of the cell arrays, so a band costs a loop per row rather than per cell.
+  template <class Visit>
+  [[gnu::always_inline]] void forEachNewRun(const CellBox& now, const CellBox& before, Visit&& visit) const {
+    for (int j = now.j0; j <= now.j1; ++j) {
+      const int row = j * nx_;
+      if (j < before.j0 || j > before.j1) {
+        visit(row + now.i0, row + now.i1 + 1);
+      } else {
+        if (now.i0 < before.i0) visit(row + now.i0, row + std::min(now.i1 + 1, before.i0));
+        if (now.i1 > before.i1) visit(row + std::max(now.i0, before.i1 + 1), row + now.i1 + 1);
+      }
+    }
+  }
   void cellRange(double x0, double y0, double x1, double y1, int& i0, int& j0, int& i1, int& j1) const;
   // Along one axis, the cells [c0, c1] of n, from `origin`, 1 / size `inv`, that [lo, hi] touches,
   // padded by a little and clamped to the grid.

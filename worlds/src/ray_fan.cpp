@@ -135,8 +135,7 @@ struct FanCaster {
   using Seg = RayCaster::Seg;
   using Wedge = RayCaster::Wedge;
 
-  // The walls of cells [begin, end) of one row: their segments, then their pillars, each one run
-  // of the cell arrays, so that a row costs one loop rather than one per cell.
+  // The walls of cells [begin, end) of one row: their segments, then their pillars.
   template <class V, bool WithLone, bool Crowd>
   [[gnu::always_inline]] static void testCells(const RayCaster& g, int begin, int end, Fan<V>& f, Lone& lone) {
     using M = MaskOf<V>;
@@ -203,10 +202,9 @@ struct FanCaster {
     const std::size_t rings = near.ringStart.size() - 1;
     double nearest = cap;  // the nearest echo of the lanes found final so far
     M live = splat<M>(-1);
-    int pi0 = 1, pj0 = 1, pi1 = 0, pj1 = 0;  // the cells of the previous band, already tested
+    RayCaster::CellBox before;  // the cells of the previous band, already tested
     const V far = splat<V>(INFINITY);
-    // The extreme directions of the live rays, found again only when a ray finishes: a piece's end
-    // ox + d ux is monotone in ux for d >= 0 (rounding too), so the ends of the extremes bound all.
+    // The extreme directions of the live rays, found again only when a ray finishes.
     double uxLo, uxHi, uyLo, uyHi;
     auto bound = [&] {
       uxLo = __builtin_reduce_min(select(live, f.ux, far)), uxHi = __builtin_reduce_max(select(live, f.ux, -far));
@@ -218,24 +216,9 @@ struct FanCaster {
     for (double d0 = 0.0; (any(live) || lone.live) && d0 < nearest; ++band) {
       if (stale) bound(), stale = false;
       const double d1 = std::min(d0 + g.cell_, nearest);
-      // The live rays' pieces over [d0, d1] lie in the box of their end points.
-      const double lx = std::min(ox + d0 * uxLo, ox + d1 * uxLo), hx = std::max(ox + d0 * uxHi, ox + d1 * uxHi);
-      const double ly = std::min(oy + d0 * uyLo, oy + d1 * uyLo), hy = std::max(oy + d0 * uyHi, oy + d1 * uyHi);
-      int i0, j0, i1, j1;
-      RayCaster::cellSpan(lx, hx, g.x0_, g.inv_, g.nx_, i0, i1);
-      RayCaster::cellSpan(ly, hy, g.y0_, g.inv_, g.ny_, j0, j1);
-      // Row by row, the cells the previous band has not tested: the whole row, or the part left
-      // and the part right of the previous band's.
-      for (int j = j0; j <= j1; ++j) {
-        const int row = j * g.nx_;
-        if (j < pj0 || j > pj1) {
-          testCells<V, WithLone, Crowd>(g, row + i0, row + i1 + 1, f, lone);
-        } else {
-          if (i0 < pi0) testCells<V, WithLone, Crowd>(g, row + i0, row + std::min(i1 + 1, pi0), f, lone);
-          if (i1 > pi1) testCells<V, WithLone, Crowd>(g, row + std::max(i0, pi1 + 1), row + i1 + 1, f, lone);
-        }
-      }
-      pi0 = i0, pj0 = j0, pi1 = i1, pj1 = j1;
+      const RayCaster::CellBox now = g.bandBox(ox, oy, uxLo, uxHi, uyLo, uyHi, d0, d1);
+      g.forEachNewRun(now, before, [&](int begin, int end) { testCells<V, WithLone, Crowd>(g, begin, end, f, lone); });
+      before = now;
       // The robots no sensor meets nearer than this band's start: none further can be met within it.
       if (band < rings) testRobots<V, WithLone>(near, near.ringStart[band], near.ringStart[band + 1], wedge, nearest, f, lone);
       // A hit within [0, d1] is final: every cell the ray crosses up to d1 has been tested.
@@ -288,7 +271,7 @@ struct FanCaster {
     // neither the order nor a repeat changes it.
     constexpr bool eight = kLanes<V> == 8;
     std::size_t fanned = 0;
-    if (ox >= g.x0_ && ox <= g.x1_ && oy >= g.y0_ && oy <= g.y1_) [[likely]] {
+    if (g.inside(ox, oy)) [[likely]] {
       while (n - fanned >= 3) {
         const std::size_t left = n - fanned;
         const int rays = eight ? static_cast<int>(std::min<std::size_t>(left, 8)) : left == 5 ? 5 : 4;

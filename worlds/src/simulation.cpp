@@ -87,7 +87,7 @@ struct Simulation::Impl : b2ContactListener {
         walls(withEnclosure(w)),
         options(o),
         seed(o.seed.value_or(w.seed)),
-        caster(walls, Point2(-1.0, -1.0), w.size + Point2(1.0, 1.0)),
+        caster(walls, Point2(-1.0, -1.0), w.size + Point2(1.0, 1.0), sensingOf(w)),
         workers(o.threads) {
     FROB_ASSERT(o.dt > 0 && std::isfinite(o.dt), "SimOptions::dt must be positive");
     physics.SetContactListener(this);
@@ -97,6 +97,14 @@ struct Simulation::Impl : b2ContactListener {
     for (const auto& list : {w.keys, o.keys})
       for (const KeyEventDef& k : list) keys.emplace_back(static_cast<std::int64_t>(std::ceil(k.time / o.dt - 1e-9)), k);
     std::stable_sort(keys.begin(), keys.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  }
+
+  // How the robots' sonars sweep the walls: the longest range and the widest cone, for which the
+  // ray caster sizes its grid.
+  static detail::Sensing sensingOf(const WorldDef& w) {
+    detail::Sensing s;
+    for (const RobotDef& r : w.robots) s.range = std::max(s.range, r.sonar.maxRange), s.cone = std::max(s.cone, r.sonar.cone);
+    return s;
   }
 
   // Box2D's continuous collision (time of impact for every contact, a tenth of a 100-robot step)
