@@ -62,7 +62,8 @@ class Simulation {
   [[nodiscard]] std::string robotName(std::size_t i) const;
   /// Robot `i`'s true pose, for rendering and grading (controllers see only odometry).
   [[nodiscard]] Pose2 truePose(std::size_t i) const;
-  /// Robot `i`'s believed pose (the odometry of the next frame).
+  /// Robot `i`'s believed pose (the odometry of the next frame). Like every call, not to be made
+  /// while another is running: the last step's dead reckoning may be done here.
   [[nodiscard]] Pose2 odometry(std::size_t i) const;
   /// Commands to robot `i` that were not finite so far.
   [[nodiscard]] std::size_t invalidCommands(std::size_t i) const;
