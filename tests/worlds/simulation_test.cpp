@@ -183,6 +183,32 @@ TEST(Simulation, OdometryDriftsAtTheConfiguredRate) {
   EXPECT_EQ(turn.alongVariance > 0, true);  // a heading error bends the believed path
 }
 
+// Each step's dead reckoning waits for the next sense() (or step(), or odometry()): the belief is
+// the same bits whether the robots are sensed every step, now and then, or never.
+TEST(Simulation, OdometryIsTheSameWhetherOrNotTheRobotsAreSensed) {
+  WorldDef w = scene("size = [10, 10]\nseed = 3\n");
+  for (int i = 0; i < 3; ++i)
+    w.robots.push_back({.start = {.position = Point2(2.0, 2.0 + 2.0 * i)}, .odometry = {.translation = 0.05, .heading = 0.05, .turn = 0.05}});
+  auto beliefs = [&](int senseEvery, bool askEachStep) {
+    Simulation sim(w, {.threads = 2});
+    std::vector<double> all;
+    for (int k = 0; k < 200; ++k) {
+      if (senseEvery > 0 && k % senseEvery == 0) sim.sense();
+      if (askEachStep || k == 199)
+        for (std::size_t i = 0; i < sim.robotCount(); ++i) all.push_back(sim.odometry(i).position.x()), all.push_back(sim.odometry(i).heading);
+      sim.step(std::vector<Wheels>(sim.robotCount(), {.forward = 0.4, .turn = k < 100 ? 0.5 : -0.3}));
+    }
+    for (std::size_t i = 0; i < sim.robotCount(); ++i) all.push_back(sim.odometry(i).position.x());
+    return all;
+  };
+  const std::vector<double> sensed = beliefs(1, true);
+  EXPECT_EQ(beliefs(1, false).back(), sensed.back());
+  EXPECT_EQ(beliefs(0, true), sensed);
+  EXPECT_EQ(beliefs(7, true), sensed);
+  EXPECT_EQ(beliefs(0, false).back(), sensed.back());
+  EXPECT_GT(sensed.back(), 2.5);  // the belief followed the robot, which drove on from x = 2
+}
+
 TEST(Simulation, ScriptedKeysArriveAtTheirStep) {
   WorldDef w = scene(R"(
     size = [4, 4]
