@@ -43,7 +43,8 @@ struct RobotState {
   double cosCutoff = 1.0;
   double forward = 0.0, turn = 0.0;  // commands after acceleration limits
   Pose2 odometry;
-  Pose2 previous;  // true pose at the end of the last step
+  Pose2 previous;                   // true pose at the end of the last step: the body's own until the next
+  double previousCos, previousSin;  // of its heading, for dead reckoning and sensing alike
   bool noiselessOdometry = true;
   std::vector<int> pressed;      // per bumper: contacts touching it
   std::vector<BumperHit> bumps;  // bumper contacts that began during the last step
@@ -198,6 +199,7 @@ struct Simulation::Impl : b2ContactListener {
     reach = std::max(reach, s.maxRange + d.radius);
     r.cosCutoff = std::cos(s.specularCutoff);
     r.previous = poseOf(r.body);
+    r.previousCos = std::cos(r.previous.heading), r.previousSin = std::sin(r.previous.heading);
     r.odometry = r.previous;
     r.noiselessOdometry = d.odometry.translation == 0 && d.odometry.heading == 0 && d.odometry.turn == 0;
     r.pressed.assign(static_cast<std::size_t>(d.bumpers), 0);
@@ -255,8 +257,9 @@ struct Simulation::Impl : b2ContactListener {
     RobotState& r = robots[i];
     SensorFrame& f = r.frame;
     const SonarDef& s = r.def.sonar;
-    const Pose2 pose = poseOf(r.body);
-    const double c = std::cos(pose.heading), sn = std::sin(pose.heading);
+    // The body has not moved since its odometry was last brought up to date.
+    const Pose2& pose = r.previous;
+    const double c = r.previousCos, sn = r.previousSin;
     const Rays& rays = *r.rays;
     std::vector<double>&worldX = scratch.worldX, &worldY = scratch.worldY;
     worldX.resize(rays.x.size()), worldY.resize(rays.y.size());
@@ -300,12 +303,13 @@ struct Simulation::Impl : b2ContactListener {
   void updateOdometry(RobotState& r) {
     const Pose2 now = poseOf(r.body);
     const Pose2 before = r.previous;
+    const double c = r.previousCos, s = r.previousSin;
     r.previous = now;
+    r.previousCos = std::cos(now.heading), r.previousSin = std::sin(now.heading);
     if (r.noiselessOdometry) {
       r.odometry = now;
       return;
     }
-    const double c = std::cos(before.heading), s = std::sin(before.heading);
     const Vec2 d = now.position - before.position;
     double dx = c * d.x() + s * d.y();
     const double dy = -s * d.x() + c * d.y();
@@ -384,8 +388,8 @@ void Simulation::step(std::span<const Wheels> wheels) {
     const double turn = std::clamp(w.turn, -d.maxTurnRate, d.maxTurnRate);
     r.forward += std::clamp(forward - r.forward, -d.acceleration * dt, d.acceleration * dt);
     r.turn += std::clamp(turn - r.turn, -d.turnAcceleration * dt, d.turnAcceleration * dt);
-    const float heading = r.body->GetAngle();
-    r.body->SetLinearVelocity(static_cast<float>(r.forward) * b2Vec2(std::cos(heading), std::sin(heading)));
+    const b2Rot& heading = r.body->GetTransform().q;  // Box2D's cosf and sinf of GetAngle(), kept with the body
+    r.body->SetLinearVelocity(static_cast<float>(r.forward) * b2Vec2(heading.c, heading.s));
     r.body->SetAngularVelocity(static_cast<float>(r.turn));
   }
   s.physics.Step(static_cast<float>(dt), kVelocityIterations, kPositionIterations);
