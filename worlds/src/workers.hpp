@@ -21,7 +21,7 @@ class Workers {
   Workers(const Workers&) = delete;
   Workers& operator=(const Workers&) = delete;
   [[nodiscard]] int count() const { return count_; }
-  // Calls job(begin, end) over chunks of at least `grain` items, and at most four per thread,
+  // Calls job(begin, end) over chunks of at least `grain` items, and at most 16 per thread,
   // covering [0, n) (all of it in one call when there is one thread or one chunk); returns when
   // all are done.
   void run(std::size_t n, std::size_t grain, const std::function<void(std::size_t, std::size_t)>& job);
