@@ -1,0 +1,285 @@
+// The HTML report: as written (self-contained, escaped, its media inline), and as Debian's headless
+// Chromium renders it (a screenshot, its DOM, and the video's state once the page has loaded).
+#include "frob/course/grade_report.hpp"
+#include "frob/render/image.hpp"
+#include "frob/render/video.hpp"
+#include "grade_samples.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+extern char** environ;
+
+namespace frob::course {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace frob::course::testing;
+using nlohmann::json;
+
+// ---- The HTML report, as written ----------------------------------------------------------------
+
+// A grade whose failed run has a hostile reason, with a short MP4 and a PNG plot of distinct colours.
+struct Report {
+  fs::path dir, html, video, plot;
+  Grade grade;
+};
+
+constexpr std::uint8_t kVideoColour[3] = {220, 40, 200};  // magenta
+constexpr std::uint8_t kPlotColour[3] = {40, 200, 220};   // cyan
+constexpr int kVideoW = 160, kVideoH = 96, kVideoFrames = 15, kFps = 30;
+constexpr int kPlotW = 120, kPlotH = 80;
+
+render::Image solid(int w, int h, const std::uint8_t (&rgb)[3]) {
+  render::Image img{.width = w, .height = h, .rgba = {}};
+  for (int i = 0; i < w * h; ++i) img.rgba.insert(img.rgba.end(), {rgb[0], rgb[1], rgb[2], 255});
+  return img;
+}
+
+Report writeReport(const std::string& name) {
+  Report r{.dir = scratch(name), .html = {}, .video = {}, .plot = {}, .grade = sample()};
+  r.html = r.dir / "report.html";
+  r.video = r.dir / "run.mp4";
+  r.plot = r.dir / "plot.png";
+  r.grade.checks[1].runs[0].reason = kHostile;
+  Result<render::VideoWriter> v = render::VideoWriter::open({.path = r.video.string(), .width = kVideoW, .height = kVideoH, .fps = kFps});
+  EXPECT_TRUE(v.ok()) << v.error();
+  for (int i = 0; i < kVideoFrames && v.ok(); ++i) EXPECT_TRUE(v.value().write(solid(kVideoW, kVideoH, kVideoColour)).ok());
+  if (v.ok()) EXPECT_TRUE(v.value().close().ok());
+  EXPECT_TRUE(render::writePng(r.plot.string(), solid(kPlotW, kPlotH, kPlotColour)).ok());
+  const Status s = writeHtmlReport(r.grade, {.video = r.video, .plot = r.plot, .caption = "the first failing run: maze, seed 3 <&>"}, r.html);
+  EXPECT_TRUE(s.ok()) << s.error();
+  return r;
+}
+
+TEST(HtmlReport, SelfContainedAndEscaped) {
+  const Report r = writeReport("html_text");
+  const std::string page = readFile(r.html);
+  EXPECT_NE(page.find("bumped &lt;script&gt;alert(1)&lt;/script&gt; &amp; &quot;double&quot; &#39;single&#39; \xEF\xBF\xBD here"), std::string::npos);
+  EXPECT_EQ(page.find("<script"), std::string::npos);
+  EXPECT_EQ(page.find("http:"), std::string::npos);
+  EXPECT_EQ(page.find("https:"), std::string::npos);
+  // Every src is a data: URI (no file, no protocol-relative URL); CSS loads nothing either.
+  std::size_t srcs = 0;
+  for (std::size_t at = page.find("src=\""); at != std::string::npos; at = page.find("src=\"", at + 1)) {
+    ++srcs;
+    EXPECT_EQ(page.compare(at, 10, "src=\"data:"), 0) << page.substr(at, 40);
+  }
+  EXPECT_EQ(srcs, 2u);
+  EXPECT_EQ(page.find("url("), std::string::npos);
+  EXPECT_EQ(page.find("@import"), std::string::npos);
+  EXPECT_EQ(page.find("<link"), std::string::npos);
+  EXPECT_EQ(page.find('\x01'), std::string::npos);
+  EXPECT_NE(page.find("<video controls src=\"data:video/mp4;base64,"), std::string::npos);
+  EXPECT_NE(page.find("<img src=\"data:image/png;base64,"), std::string::npos);
+  EXPECT_NE(page.find("<figcaption>the first failing run: maze, seed 3 &lt;&amp;&gt;</figcaption>"), std::string::npos);
+  EXPECT_EQ(filesIn(r.dir), (std::vector<std::string>{"plot.png", "report.html", "run.mp4"}));
+}
+
+TEST(HtmlReport, CompileErrorInPreAndNoMedia) {
+  const fs::path dir = scratch("html_compile");
+  ASSERT_TRUE(writeHtmlReport(uncompiled("bob.cpp:3:1: error: expected '>' in <vector<int>\n"), {}, dir / "r.html").ok());
+  const std::string page = readFile(dir / "r.html");
+  EXPECT_NE(page.find("<pre class=\"compile-error\">bob.cpp:3:1: error: expected &#39;&gt;&#39; in &lt;vector&lt;int&gt;\n</pre>"),
+            std::string::npos);
+  EXPECT_EQ(page.find("<figure>"), std::string::npos);
+}
+
+TEST(HtmlReport, Base64OfEveryLength) {
+  const fs::path dir = scratch("html_base64");
+  const std::string signature = "\x89PNG\r\n\x1a\n";
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"", "iVBORw0KGgo="}, {"a", "iVBORw0KGgph"}, {"ab", "iVBORw0KGgphYg=="}, {"abc", "iVBORw0KGgphYmM="}};
+  for (const auto& [tail, encoded] : cases) {
+    writeFile(dir / "p.png", signature + tail);
+    ASSERT_TRUE(writeHtmlReport(sample(), {.plot = dir / "p.png"}, dir / "r.html").ok());
+    EXPECT_NE(readFile(dir / "r.html").find("src=\"data:image/png;base64," + encoded + "\""), std::string::npos) << tail;
+  }
+}
+
+TEST(HtmlReport, BadMediaAreNamedAndNothingIsWritten) {
+  const fs::path dir = scratch("html_bad_media");
+  writeFile(dir / "text.mp4", "not a video at all");
+  writeFile(dir / "text.png", "not a png");
+  const fs::path out = dir / "r.html";
+  EXPECT_EQ(writeHtmlReport(sample(), {.video = dir / "none.mp4"}, out).error(),
+            "html report: cannot read '" + (dir / "none.mp4").string() + "': No such file or directory");
+  EXPECT_EQ(writeHtmlReport(sample(), {.video = dir / "text.mp4"}, out).error(),
+            "html report: '" + (dir / "text.mp4").string() + "' is not an MP4 video (it has no ftyp box)");
+  EXPECT_EQ(writeHtmlReport(sample(), {.plot = dir / "text.png"}, out).error(),
+            "html report: '" + (dir / "text.png").string() + "' is not a PNG image");
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(writeHtmlReport(sample(), {}, "/nonexistent/r.html").error(),
+            "html report: cannot write '/nonexistent/r.html': directory '/nonexistent' does not exist");
+}
+
+// ---- The HTML report in Chromium ----------------------------------------------------------------
+
+constexpr const char* kChromium = "/usr/bin/chromium";
+
+struct Ran {
+  int status = -1;
+  std::string err;
+};
+
+// Runs headless Chromium on `page` with `flags`, stdout to `out`, at most 60 s (then it and its
+// children are killed by timeout(1), which gives them a process group of their own).
+Ran chromium(const fs::path& dir, const std::vector<std::string>& flags, const fs::path& page, const fs::path& out) {
+  std::vector<std::string> all{"/usr/bin/timeout",
+                               "-k",
+                               "10",
+                               "60",
+                               kChromium,
+                               "--headless",
+                               "--no-sandbox",
+                               "--disable-gpu",
+                               "--no-first-run",
+                               "--user-data-dir=" + (dir / "profile").string()};
+  all.insert(all.end(), flags.begin(), flags.end());
+  all.push_back("file://" + fs::absolute(page).string());
+  std::vector<char*> argv;
+  for (std::string& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const std::string err = (dir / "chromium_stderr.txt").string();
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = 0;
+  Ran r;
+  if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) == 0) {
+    int status = 0;
+    waitpid(pid, &status, 0);
+    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  }
+  posix_spawn_file_actions_destroy(&actions);
+  r.err = readFile(err);
+  return r;
+}
+
+// Fails (never skips) when Chromium is missing: the report's rendering would go untested.
+void requireChromium() {
+  ASSERT_TRUE(fs::exists(kChromium)) << kChromium << " is missing: the HTML report is tested in headless Chromium; "
+                                     << "install it with `apt-get install chromium` (cmake/install-deps.sh lists it)";
+}
+
+// Pixels of `img` within 40 of `rgb` in every channel.
+int pixelsNear(const render::Image& img, const std::uint8_t (&rgb)[3]) {
+  int n = 0;
+  for (int y = 0; y < img.height; ++y) {
+    for (int x = 0; x < img.width; ++x) {
+      const std::uint8_t* p = img.pixel(x, y);
+      if (std::abs(p[0] - rgb[0]) <= 40 && std::abs(p[1] - rgb[1]) <= 40 && std::abs(p[2] - rgb[2]) <= 40) ++n;
+    }
+  }
+  return n;
+}
+
+TEST(HtmlReportInChromium, ScreenshotShowsTheTableTheVideoAndThePlot) {
+  requireChromium();
+  const Report r = writeReport("chromium_screenshot");
+  const fs::path shot = r.dir / "shot.png";
+  const Ran ran = chromium(r.dir, {"--screenshot=" + shot.string(), "--window-size=1000,800", "--hide-scrollbars"}, r.html, r.dir / "stdout.txt");
+  ASSERT_EQ(ran.status, 0) << ran.err;
+  const Result<render::Image> img = render::readPng(shot.string());
+  ASSERT_TRUE(img.ok()) << img.error() << "\n" << ran.err;
+  ASSERT_EQ(img.value().width, 1000);
+  ASSERT_EQ(img.value().height, 800);
+  // Not blank: much of the page differs from its background, the top left pixel.
+  const std::uint8_t* bg = img.value().pixel(0, 0);
+  const std::uint8_t background[3] = {bg[0], bg[1], bg[2]};
+  EXPECT_LT(pixelsNear(img.value(), background), 1000 * 800 * 98 / 100);
+  EXPECT_GT(1000 * 800 - pixelsNear(img.value(), background), 5000);
+  // The plot is drawn whole, and the video's first frame is drawn: its controls shade most of it
+  // (about a fifth keeps its colour), but an undecoded video would show none of it.
+  EXPECT_GE(pixelsNear(img.value(), kVideoColour), kVideoW * kVideoH / 10);
+  EXPECT_GE(pixelsNear(img.value(), kPlotColour), kPlotW * kPlotH * 9 / 10);
+}
+
+TEST(HtmlReportInChromium, DomHasTheRowsTheTextAndTheDataUris) {
+  requireChromium();
+  const Report r = writeReport("chromium_dom");
+  const Ran ran = chromium(r.dir, {"--dump-dom"}, r.html, r.dir / "dom.html");
+  ASSERT_EQ(ran.status, 0) << ran.err;
+  const Doc dom = parseHtml(readFile(r.dir / "dom.html"));
+  ASSERT_TRUE(dom);
+  EXPECT_EQ(one(dom.get(), "//title"), "go_to_goal: students/alice.cpp");
+  EXPECT_EQ(one(dom.get(), "//p[@class='total']"), "Total: 2.5 / 5 points");
+  EXPECT_EQ(select(dom.get(), "//table/thead/tr/th"), (std::vector<std::string>{"Check", "Score", "Points", "Status", "Reasons"}));
+  EXPECT_EQ(select(dom.get(), "//table/tbody/tr/td[1]"), (std::vector<std::string>{"reaches the goal", "avoids walls", "secret worlds (hidden)"}));
+  EXPECT_EQ(select(dom.get(), "//table/tbody/tr/td[2]"), (std::vector<std::string>{"2", "0.5", "0"}));
+  EXPECT_EQ(select(dom.get(), "//table/tbody/tr/td[3]"), (std::vector<std::string>{"2", "1", "2"}));
+  EXPECT_EQ(select(dom.get(), "//table/tbody/tr/td[4]"), (std::vector<std::string>{"PASS", "PARTIAL", "FAIL"}));
+  // The hostile reason is text in its cell, not markup: the browser made no <script> of it.
+  EXPECT_EQ(select(dom.get(), "//table/tbody/tr/td[5]"),
+            (std::vector<std::string>{"", "in maze, seed 3: " + kHostileRead, "in rooms, seed 7: not within 0.3 m of goal by 60 s"}));
+  EXPECT_TRUE(select(dom.get(), "//script").empty());
+  EXPECT_EQ(select(dom.get(), "//ul[@class='notes']/li"), std::vector<std::string>{"the controller printed more than 1 MB; the rest was cut"});
+  // The media are data: URIs holding exactly the files' bytes.
+  const std::string video = one(dom.get(), "//video/@src"), plot = one(dom.get(), "//img/@src");
+  const std::string videoPrefix = "data:video/mp4;base64,", plotPrefix = "data:image/png;base64,";
+  ASSERT_EQ(video.substr(0, videoPrefix.size()), videoPrefix);
+  ASSERT_EQ(plot.substr(0, plotPrefix.size()), plotPrefix);
+  EXPECT_TRUE(unbase64(std::string_view(video).substr(videoPrefix.size())) == readFile(r.video)) << "the video's data URI is not the MP4";
+  EXPECT_TRUE(unbase64(std::string_view(plot).substr(plotPrefix.size())) == readFile(r.plot)) << "the plot's data URI is not the PNG";
+  EXPECT_EQ(select(dom.get(), "//video/@controls").size(), 1u);
+  EXPECT_EQ(one(dom.get(), "//figcaption"), "the first failing run: maze, seed 3 <&>");
+}
+
+// The page has no scripts (its Content-Security-Policy forbids them). A test copy adds one that, at
+// the load event, writes the video's and the plot's state into the DOM. A media element delays the
+// load event until its first frame is decoded (HTML: "delaying the load event"), and --dump-dom
+// serializes after that event, so what the script reads does not depend on timing.
+TEST(HtmlReportInChromium, VideoDecodesInTheBrowser) {
+  requireChromium();
+  const Report r = writeReport("chromium_video");
+  std::string page = readFile(r.html);
+  const std::string policy = "style-src 'unsafe-inline'";
+  const std::size_t at = page.find(policy);
+  ASSERT_NE(at, std::string::npos);
+  page.insert(at + policy.size(), "; script-src 'unsafe-inline'");
+  const std::string probe = R"(<script>
+window.addEventListener('load', () => {
+  const v = document.querySelector('video'), img = document.querySelector('img');
+  const out = document.createElement('pre');
+  out.id = 'probe';
+  out.textContent = JSON.stringify({readyState: v.readyState, duration: v.duration, width: v.videoWidth, height: v.videoHeight,
+                                    error: v.error ? v.error.code : 0, plotWidth: img.naturalWidth, plotHeight: img.naturalHeight});
+  document.body.appendChild(out);
+});
+</script>
+)";
+  const std::size_t end = page.rfind("</body>");
+  ASSERT_NE(end, std::string::npos);
+  page.insert(end, probe);
+  const fs::path copy = r.dir / "probe.html";
+  writeFile(copy, page);
+  const Ran ran = chromium(r.dir, {"--dump-dom"}, copy, r.dir / "dom.html");
+  ASSERT_EQ(ran.status, 0) << ran.err;
+  const Doc dom = parseHtml(readFile(r.dir / "dom.html"));
+  ASSERT_TRUE(dom);
+  const json state = json::parse(one(dom.get(), "//pre[@id='probe']"), nullptr, false);
+  ASSERT_TRUE(state.is_object()) << readFile(r.dir / "dom.html").substr(0, 2000);
+  EXPECT_EQ(state["error"], 0) << state.dump();
+  EXPECT_GE(state["readyState"], 2) << "HAVE_CURRENT_DATA: the first frame is decoded; " << state.dump();
+  ASSERT_TRUE(state["duration"].is_number()) << state.dump();
+  EXPECT_NEAR(state["duration"].get<double>(), static_cast<double>(kVideoFrames) / kFps, 0.05) << state.dump();
+  EXPECT_EQ(state["width"], kVideoW);
+  EXPECT_EQ(state["height"], kVideoH);
+  EXPECT_EQ(state["plotWidth"], kPlotW);
+  EXPECT_EQ(state["plotHeight"], kPlotH);
+}
+
+}  // namespace
+}  // namespace frob::course
