@@ -2,9 +2,9 @@
 // Gradescope, PrairieLearn, CI systems and people read; and replays of a run's wheel log.
 #include "grade.hpp"
 
-#include "frob/course/grade.hpp"
-#include "frob/course/grade_report.hpp"
-#include "frob/course/gradescope.hpp"
+#include "frob/grade/grade.hpp"
+#include "frob/grade/grade_report.hpp"
+#include "frob/grade/gradescope.hpp"
 #include "progress.hpp"
 
 #include <unistd.h>

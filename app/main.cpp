@@ -1,14 +1,14 @@
 // The frob command line: thin, it parses arguments and calls the libraries.
 #include "frob/base/layout.hpp"
-#include "frob/course/controller_file.hpp"
-#include "frob/course/examples.hpp"
-#include "frob/course/generate.hpp"
-#include "frob/course/grade.hpp"
-#include "frob/course/isolation.hpp"
-#include "frob/course/session.hpp"
-#include "frob/course/summary.hpp"
+#include "frob/grade/grade.hpp"
 #include "frob/render/output_file.hpp"
 #include "frob/render/run_view.hpp"
+#include "frob/run/controller_file.hpp"
+#include "frob/run/examples.hpp"
+#include "frob/run/host.hpp"
+#include "frob/run/session.hpp"
+#include "frob/run/summary.hpp"
+#include "frob/worlds/generate.hpp"
 #include "frob/worlds/registry.hpp"
 #include "grade.hpp"
 #include "progress.hpp"
@@ -80,12 +80,12 @@ Result<course::CompiledController> compileController(const std::string& name, bo
   return Status::failure("unknown controller '" + name + "': not a file and not an example (see frob list)");
 }
 
-// The controller `name`, described by a sandboxed host (isolated) or loaded into this process.
-Result<course::LoadedController> loadController(const std::string& name, const std::optional<course::IsolationDef>& isolation, bool quiet) {
-  Result<course::CompiledController> c = compileController(name, quiet, course::compilerSetup(isolation && isolation->checked));
+// The controller `name`, described by a sandboxed host or loaded into this process.
+Result<course::LoadedController> loadController(const std::string& name, const std::optional<course::HostDef>& host, bool quiet) {
+  Result<course::CompiledController> c = compileController(name, quiet, course::compilerSetup(host && host->checked));
   if (!c) return c.status();
-  if (!isolation) return course::loadInProcess(c.value());
-  return course::describeInHost(c.value(), *isolation);
+  if (!host) return course::loadInProcess(c.value());
+  return course::describeInHost(c.value(), *host);
 }
 
 // "960x540" into a RenderDef's size.
@@ -107,7 +107,7 @@ struct RunArgs {
   int fps = 30;
   std::optional<double> speed;
   course::RunOutputs outputs;
-  bool json = false, quiet = false, isolate = true, check = false;
+  bool json = false, quiet = false, sandbox = true, check = false;
 };
 
 int runCommand(RunArgs a) {
@@ -119,10 +119,10 @@ int runCommand(RunArgs a) {
   }
   // The demo's video plays 4 times faster than the robot drives: two minutes of BUG in half a minute.
   course::RunDef def{.options = {.dt = a.dt, .seed = a.seed}, .outputs = a.outputs, .fps = a.fps, .speed = a.speed.value_or(demo ? 4.0 : 1.0)};
-  if (a.check && !a.isolate) return fail("--check runs the controllers in their sandboxed process: leave out --no-isolate");
-  if (a.isolate) def.isolation.emplace(course::IsolationDef{.checked = a.check});
+  if (a.check && !a.sandbox) return fail("--check runs the controllers in their sandboxed process: leave out --no-sandbox");
+  if (a.sandbox) def.host.emplace(course::HostDef{.checked = a.check});
   for (const std::string& name : a.controllers) {
-    Result<course::LoadedController> c = loadController(name, def.isolation, a.quiet);
+    Result<course::LoadedController> c = loadController(name, def.host, a.quiet);
     if (!c) return fail(c.error());
     def.controllers.push_back(std::move(c.value()));
   }
@@ -185,13 +185,13 @@ int renderCommand(const std::string& worldName, const std::string& out, const st
 
 // A generated world, written where asked.
 int generateCommand(const std::string& kindName, std::uint64_t seed, const std::string& out) {
-  const std::optional<course::WorldKind> kind = course::worldKind(kindName);
-  if (!kind) return fail("unknown kind of world '" + kindName + "': one of " + course::worldKindNames());
-  Result<worlds::WorldDef> world = course::generateWorld(*kind, seed);
+  const std::optional<worlds::WorldKind> kind = worlds::worldKind(kindName);
+  if (!kind) return fail("unknown kind of world '" + kindName + "': one of " + worlds::worldKindNames());
+  Result<worlds::WorldDef> world = worlds::generateWorld(*kind, seed);
   if (!world) return fail(world.error());
   if (Status s = render::checkWritable(out, "world"); !s) return fail(s.error());
   std::ofstream file(render::partialPath(out));
-  file << course::toToml(world.value());
+  file << worlds::toToml(world.value());
   file.close();
   if (!file) return fail(out + ": cannot write the world");
   if (Status s = render::commitPartial(out, "world"); !s) return fail(s.error());
@@ -262,8 +262,8 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::IsMember({"top", "chase"}));
   runCmd->add_flag("--json", run.json, "Print the summary as JSON");
-  runCmd->add_flag("--isolate,!--no-isolate", run.isolate,
-                   "Run the controllers in a sandboxed process of their own (the default); --no-isolate runs them "
+  runCmd->add_flag("--sandbox,!--no-sandbox", run.sandbox,
+                   "Run the controllers in a sandboxed process of their own (the default); --no-sandbox runs them "
                    "inside frob itself, where a crash takes frob down");
   runCmd->add_flag("--check", run.check,
                    "Compile the controllers with AddressSanitizer, UndefinedBehaviorSanitizer and the C++ library's checks: an index "

@@ -3,8 +3,8 @@
 # prefix can be moved: P/bin/frob run my.cpp works from any folder, with no source tree present.
 #
 #   P/bin/frob                                  the command
-#   P/libexec/frob/frob-controller-host         the sandboxed controller host, and the jail it runs in
-#   P/libexec/frob/frob-jail
+#   P/libexec/frob/frob-controller-host         the controller host, and the sandbox launcher it runs under
+#   P/libexec/frob/frob-sandbox
 #   P/include/frob/...                          the headers controllers and student projects use
 #   P/lib/libfrob_frob.a, P/lib/cmake/frob/     frob::frob for find_package(frob CONFIG)
 #   P/lib/frob/frob.pch, frob-headers.yaml      what `frob run` compiles a controller against
@@ -19,7 +19,7 @@ set(frob_libexecdir "${CMAKE_INSTALL_LIBEXECDIR}/frob")
 set(frob_cmakedir "${CMAKE_INSTALL_LIBDIR}/cmake/frob")
 
 install(TARGETS frob_app RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
-install(TARGETS frob_controller_host frob_jail RUNTIME DESTINATION "${frob_libexecdir}")
+install(TARGETS frob_controller_host frob_sandbox_program RUNTIME DESTINATION "${frob_libexecdir}")
 
 # frob::frob: the library controllers are written against, its headers, and the settings it carries.
 # A student project needs C++20 (coroutines) to include them.
@@ -36,8 +36,8 @@ install(FILES "${PROJECT_BINARY_DIR}/frobConfig.cmake" "${PROJECT_BINARY_DIR}/fr
   DESTINATION "${frob_cmakedir}")
 
 # What `frob run` compiles a controller against: the precompiled header and the overlay that shows
-# it the installed headers (see course/CMakeLists.txt), and the examples prebuilt.
-install(FILES "${PROJECT_BINARY_DIR}/course/frob.pch" "${PROJECT_BINARY_DIR}/course/install/frob-headers.yaml"
+# it the installed headers (see course/run/CMakeLists.txt), and the examples prebuilt.
+install(FILES "${PROJECT_BINARY_DIR}/course/run/frob.pch" "${PROJECT_BINARY_DIR}/course/run/install/frob-headers.yaml"
   DESTINATION "${frob_libdir}")
 install(DIRECTORY "${PROJECT_BINARY_DIR}/course/examples/" DESTINATION "${frob_libdir}/examples" FILES_MATCHING PATTERN "*.so")
 

@@ -181,22 +181,22 @@ TEST(FrobRun, CheckStopsAtAnIndexOutOfRangeNamingTheLine) {
 TEST(FrobRun, CheckNeedsTheSandboxAndASourceFile) {
   const fs::path dir = freshFolder("check_refused");
   write(dir, "go.cpp", controller("0.1"));
-  FrobResult r = runFrob(dir, {"run", "go.cpp", "--check", "--no-isolate"});
+  FrobResult r = runFrob(dir, {"run", "go.cpp", "--check", "--no-sandbox"});
   EXPECT_EQ(r.status, 1);
-  EXPECT_EQ(r.err, "frob: --check runs the controllers in their sandboxed process: leave out --no-isolate\n");
+  EXPECT_EQ(r.err, "frob: --check runs the controllers in their sandboxed process: leave out --no-sandbox\n");
   r = runFrob(dir, {"run", "go.so", "--check"});
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "frob: --check compiles the controller with its checks: give its .cpp, not go.so\n");
 }
 
-TEST(FrobRun, IsolatedAndInProcessRunsDriveTheSameTrajectory) {
-  const fs::path dir = freshFolder("isolated_same");
+TEST(FrobRun, SandboxedAndInProcessRunsDriveTheSameTrajectory) {
+  const fs::path dir = freshFolder("sandboxed_same");
   write(dir, "slow.cpp", controller("0.2"));
-  const FrobResult isolated = runFrob(dir, {"run", "slow.cpp", "--seconds", "3", "--json", "--quiet"});
-  const FrobResult here = runFrob(dir, {"run", "slow.cpp", "--seconds", "3", "--json", "--quiet", "--no-isolate"});
-  ASSERT_EQ(isolated.status, 0) << isolated.err;
+  const FrobResult sandboxed = runFrob(dir, {"run", "slow.cpp", "--seconds", "3", "--json", "--quiet"});
+  const FrobResult here = runFrob(dir, {"run", "slow.cpp", "--seconds", "3", "--json", "--quiet", "--no-sandbox"});
+  ASSERT_EQ(sandboxed.status, 0) << sandboxed.err;
   ASSERT_EQ(here.status, 0) << here.err;
-  const nlohmann::json a = nlohmann::json::parse(isolated.out), b = nlohmann::json::parse(here.out);
+  const nlohmann::json a = nlohmann::json::parse(sandboxed.out), b = nlohmann::json::parse(here.out);
   EXPECT_EQ(a["trajectory_hash"], b["trajectory_hash"]);
   EXPECT_EQ(a["steps"], 300);
   // The sandbox's layers are in the summary; none is there when the controller ran in frob itself.

@@ -1,4 +1,4 @@
-// The hostile submissions of tests/course/hostile/, graded through frob grade: each fails the check
+// The hostile submissions of tests/course/sandbox/hostile/, graded through frob grade: each fails the check
 // that runs past its misbehaviour with the reason, the check that ends before it is still graded,
 // and results.json and the JUnit file are whole and valid.
 #include "run_frob.hpp"

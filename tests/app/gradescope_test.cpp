@@ -103,8 +103,8 @@ TEST(GradescopeZip, HoldsTheSourcesTheAssignmentAndTheScripts) {
   ASSERT_EQ(r.status, 0) << r.err;
   const fs::path unpacked = freshFolder("gradescope_zip_unpacked");
   const std::vector<std::string> names = unzip(dir / "autograder.zip", unpacked);
-  for (const char* needed : {"setup.sh", "run_autograder", "secret.txt", "CMakeLists.txt", "frob/include/frob/frob.hpp", "course/host/main.cpp",
-                             "assignments/drive/rubric.toml", "assignments/drive/field.toml"}) {
+  for (const char* needed : {"setup.sh", "run_autograder", "secret.txt", "CMakeLists.txt", "frob/include/frob/frob.hpp",
+                             "course/sandbox/programs/host_main.cpp", "assignments/drive/rubric.toml", "assignments/drive/field.toml"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), needed), names.end()) << needed;
   }
   for (const std::string& n : names) EXPECT_NE(n.rfind("tests/", 0), 0u) << n;  // the autograder builds no tests

@@ -4,7 +4,7 @@
 // a reason a student can act on. Course example 6 (the paper's BUG), copied as it is or with its
 // goal corrected, does not pass: it goes all the way round every obstacle and nothing limits how
 // long it goes round.
-#include "frob/course/generate.hpp"
+#include "frob/worlds/generate.hpp"
 #include "grade_assignment.hpp"
 
 #include <gmock/gmock.h>
@@ -24,21 +24,6 @@ const std::string kReaches = "reaches the goal";
 const std::string kBound = "within the BUG1 bound";
 const std::string kHidden = "hidden fields";
 
-// What the grader told the student about `check` (one line per failed run), "" when it passed.
-std::string reasons(const course::Grade& g, const std::string& check) {
-  for (const course::CheckGrade& c : g.checks) {
-    if (c.name == check) return c.output();
-  }
-  ADD_FAILURE() << "no check named '" << check << "'";
-  return "";
-}
-
-course::Grade gradeFile(const std::filesystem::path& file) {
-  course::Grade g = gradeAssignment(kAssignment, file);
-  EXPECT_EQ(g.compileError, "") << file;
-  return g;
-}
-
 std::string readFile(const std::filesystem::path& file) {
   std::ifstream in(file);
   std::stringstream text;
@@ -56,7 +41,7 @@ TEST(BugAssignment, RubricHasTheChecksTheHandoutDescribes) {
   EXPECT_EQ(hidden.name, kHidden);
   EXPECT_EQ(hidden.visibility, course::Visibility::Hidden);
   ASSERT_TRUE(hidden.generated.has_value());
-  EXPECT_EQ(hidden.generated->kind, course::WorldKind::Obstacles);
+  EXPECT_EQ(hidden.generated->kind, worlds::WorldKind::Obstacles);
   EXPECT_EQ(hidden.generated->secret, 4);
 }
 
@@ -65,19 +50,19 @@ TEST(BugAssignment, RubricHasTheChecksTheHandoutDescribes) {
 // start (1.5, 1.5), goal (13.5, 13.5), a way between.
 TEST(BugAssignment, VisibleWorldsAreGeneratedFields) {
   for (const auto& [file, seed] : {std::pair{"worlds/trap.toml", 70}, std::pair{"worlds/field.toml", 19}}) {
-    Result<worlds::WorldDef> made = course::generateWorld(course::WorldKind::Obstacles, seed);
+    Result<worlds::WorldDef> made = worlds::generateWorld(worlds::WorldKind::Obstacles, seed);
     ASSERT_TRUE(made.ok()) << made.error();
     std::string text = readFile(assignmentFile(kAssignment, file));
     const std::string note = "# frob world generate obstacles --seed " + std::to_string(seed) + " --out assignments/bug/" + file + "\n";
     const std::size_t at = text.find(note);
     ASSERT_NE(at, std::string::npos) << file;
     text.erase(at, note.size());
-    EXPECT_EQ(text, course::toToml(made.value())) << file;
+    EXPECT_EQ(text, worlds::toToml(made.value())) << file;
   }
 }
 
 TEST(BugAssignment, SolutionGetsFullMarksOnEveryCheck) {
-  course::Grade g = gradeFile(assignmentFile(kAssignment, "solution.cpp"));
+  course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "solution.cpp"));
   ASSERT_EQ(g.checks.size(), 3u);
   for (const course::CheckGrade& c : g.checks) EXPECT_EQ(c.score, c.points) << c.name << ":\n" << c.output();
   EXPECT_EQ(g.score(), 12.0);
@@ -86,7 +71,7 @@ TEST(BugAssignment, SolutionGetsFullMarksOnEveryCheck) {
 // The starter drives at the goal and stops at the first obstacle: it compiles and runs, and earns
 // nothing yet.
 TEST(BugAssignment, StarterScoresNothing) {
-  course::Grade g = gradeFile(assignmentFile(kAssignment, "starter.cpp"));
+  course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "starter.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}}));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 70: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 19: never came within 0.30 m of goal"));
@@ -98,7 +83,7 @@ TEST(BugAssignment, StarterScoresNothing) {
 // field) going round takes longer than its 30 s limit, and nothing restarts BUG; in the other
 // fields no leg fails and it does as well as the solution.
 TEST(BugAssignment, ForgettingTaskCatchStopsAtTheFirstError) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "no_task_catch.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "no_task_catch.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 3}, {kHidden, 3}}));
   const std::string why = reasons(g, kReaches);
   EXPECT_THAT(why, HasSubstr("in worlds/trap.toml, seed 70: the controller failed"));
@@ -112,7 +97,7 @@ TEST(BugAssignment, ForgettingTaskCatchStopsAtTheFirstError) {
 // obstacle and on to the closest point. In the trap field that takes longer than the run; in the
 // open field and three hidden ones it arrives, late and far past the BUG1 bound.
 TEST(BugAssignment, ThePapersBugCirclesForeverAndDrivesPastTheBound) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "circles_forever.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "circles_forever.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1}}));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 70: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kBound), HasSubstr("in worlds/field.toml, seed 19: drove 42.44 m to goal; the BUG1 bound is 33.59 m"));
@@ -125,7 +110,7 @@ TEST(BugAssignment, ThePapersBugCirclesForeverAndDrivesPastTheBound) {
 // Course example 6 copied as it is drives to the reference world's goal (13, 13), not the
 // generated fields' (13.5, 13.5): it gets nothing.
 TEST(BugAssignment, CopiedExampleSixGetsNothing) {
-  course::Grade g = gradeFile(example("06_bug.cpp"));
+  course::Grade g = gradeFile(kAssignment, example("06_bug.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}}));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 19: never came within 0.30 m of goal (closest 0.84 m"));
   EXPECT_THAT(reasons(g, kBound), HasSubstr("so its path cannot be measured"));
@@ -143,7 +128,7 @@ TEST(BugAssignment, ExampleSixWithTheGoalCorrectedDoesNotPass) {
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "example06_goal_corrected.cpp") << source;
 
-  course::Grade g = gradeFile(dir / "example06_goal_corrected.cpp");
+  course::Grade g = gradeFile(kAssignment, dir / "example06_goal_corrected.cpp");
   EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 0}}));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 70: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kBound), HasSubstr("drove 43.49 m to goal; the BUG1 bound is 33.59 m"));

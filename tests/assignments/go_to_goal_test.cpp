@@ -20,21 +20,6 @@ const std::string kInTime = "within the time limit";
 const std::string kSofa = "goes round the sofa without touching anything";
 const std::string kOtherRooms = "other rooms, other furniture";
 
-// What the grader told the student about `check` (one line per failed run), "" when it passed.
-std::string reasons(const course::Grade& g, const std::string& check) {
-  for (const course::CheckGrade& c : g.checks) {
-    if (c.name == check) return c.output();
-  }
-  ADD_FAILURE() << "no check named '" << check << "'";
-  return "";
-}
-
-course::Grade gradeFile(const std::filesystem::path& file) {
-  course::Grade g = gradeAssignment(kAssignment, file);
-  EXPECT_EQ(g.compileError, "") << file;
-  return g;
-}
-
 TEST(GoToGoalAssignment, RubricHasTheChecksTheHandoutDescribes) {
   Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
   ASSERT_TRUE(rubric.ok()) << rubric.error();
@@ -65,7 +50,7 @@ TEST(GoToGoalAssignment, EveryWorldHasTheHandoutsWaypointsAndStart) {
 }
 
 TEST(GoToGoalAssignment, SolutionGetsFullMarksOnEveryCheck) {
-  course::Grade g = gradeFile(assignmentFile(kAssignment, "solution.cpp"));
+  course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "solution.cpp"));
   ASSERT_EQ(g.checks.size(), 4u);
   for (const course::CheckGrade& c : g.checks) EXPECT_EQ(c.score, c.points) << c.name << ":\n" << c.output();
   EXPECT_EQ(g.score(), 10.0);
@@ -73,7 +58,7 @@ TEST(GoToGoalAssignment, SolutionGetsFullMarksOnEveryCheck) {
 
 // The starter drives to wp1 and stops there: it compiles and runs, and earns nothing yet.
 TEST(GoToGoalAssignment, StarterScoresNothing) {
-  course::Grade g = gradeFile(assignmentFile(kAssignment, "starter.cpp"));
+  course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "starter.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kInOrder, 0}, {kInTime, 0}, {kSofa, 0}, {kOtherRooms, 0}}));
   EXPECT_THAT(reasons(g, kInOrder), HasSubstr("reached wp1 at"));
   EXPECT_THAT(reasons(g, kInOrder), HasSubstr("never came within 0.20 m of wp2"));
@@ -81,7 +66,7 @@ TEST(GoToGoalAssignment, StarterScoresNothing) {
 
 // Example 4 copied with the handout's waypoints: it gives up at the first obstacle (the sofa).
 TEST(GoToGoalAssignment, CopiedExample4GivesUpAtTheSofa) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "copied_example.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "copied_example.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kInOrder, 0}, {kInTime, 0}, {kSofa, 0}, {kOtherRooms, 0}}));
   for (const std::string& check : {kInOrder, kInTime, kSofa, kOtherRooms}) {
     EXPECT_THAT(reasons(g, check), HasSubstr("reached wp1 at 4.5 s, never came within 0.20 m of wp2")) << check;
@@ -90,7 +75,7 @@ TEST(GoToGoalAssignment, CopiedExample4GivesUpAtTheSofa) {
 
 // Example 4 itself (two points of the empty room) does not come near the waypoints at all.
 TEST(GoToGoalAssignment, Example4AsItIsScoresNothing) {
-  course::Grade g = gradeFile(example("04_drive_to.cpp"));
+  course::Grade g = gradeFile(kAssignment, example("04_drive_to.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kInOrder, 0}, {kInTime, 0}, {kSofa, 0}, {kOtherRooms, 0}}));
   EXPECT_THAT(reasons(g, kInOrder), HasSubstr("never came within 0.20 m of wp1"));
 }
@@ -98,7 +83,7 @@ TEST(GoToGoalAssignment, Example4AsItIsScoresNothing) {
 // Example 6's BUG, once per waypoint: in order and untouched, but BUG circles each obstacle once
 // before it leaves it, which takes some 95 s for a round the time limit allows 75 s for.
 TEST(GoToGoalAssignment, CopiedExample6IsTooSlow) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "bug_per_waypoint.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "bug_per_waypoint.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kInOrder, 3}, {kInTime, 0}, {kSofa, 2}, {kOtherRooms, 0}}));
   EXPECT_THAT(reasons(g, kInTime), HasSubstr("reached wp3 at 64.2 s, never came within 0.20 m of wp4"));
   EXPECT_THAT(reasons(g, kOtherRooms), HasSubstr("never came within 0.20 m of wp4"));
@@ -106,7 +91,7 @@ TEST(GoToGoalAssignment, CopiedExample6IsTooSlow) {
 
 // After wp1 it goes round the room the wrong way: wp4, wp3, then wp2.
 TEST(GoToGoalAssignment, WrongOrderFailsEveryCheck) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "wrong_order.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "wrong_order.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kInOrder, 0}, {kInTime, 0}, {kSofa, 0}, {kOtherRooms, 0}}));
   EXPECT_THAT(reasons(g, kInOrder), HasSubstr("reached wp1 at 4.5 s, reached wp2 at 53.0 s, never came within 0.20 m of wp3 after that"));
   EXPECT_THAT(reasons(g, kSofa), HasSubstr("never came within 0.20 m of wp2 after that"));
@@ -114,7 +99,7 @@ TEST(GoToGoalAssignment, WrongOrderFailsEveryCheck) {
 
 // The solution at half speed: everything right but the time limit (the round takes about 93 s).
 TEST(GoToGoalAssignment, TooSlowMissesTheTimeLimit) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "too_slow.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "too_slow.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kInOrder, 3}, {kInTime, 0}, {kSofa, 2}, {kOtherRooms, 0}}));
   EXPECT_THAT(reasons(g, kInTime), HasSubstr("reached wp3 at 64.0 s, never came within 0.20 m of wp4"));
 }
@@ -122,7 +107,7 @@ TEST(GoToGoalAssignment, TooSlowMissesTheTimeLimit) {
 // A route worked out by hand round the lounge's furniture: full marks in the lounge, and it runs
 // into the furniture of both hidden rooms. This is what the hidden check is for.
 TEST(GoToGoalAssignment, HardCodedRouteFailsOnlyTheHiddenRooms) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "hard_coded_route.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "hard_coded_route.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kInOrder, 3}, {kInTime, 2}, {kSofa, 2}, {kOtherRooms, 0}}));
   EXPECT_THAT(reasons(g, kOtherRooms), HasSubstr("in hidden_worlds/study.toml, seed "));
   EXPECT_THAT(reasons(g, kOtherRooms), HasSubstr("touched a wall at 22.4 s"));

@@ -1,7 +1,7 @@
 #pragma once
 // Grading a submission against one of assignments/<name>/ as an instructor would, hidden checks
 // included: the hidden seeds come from a test secret (never an instructor's).
-#include "frob/course/grade.hpp"
+#include "frob/grade/grade.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,12 +13,24 @@ namespace frob::testing {
 
 inline constexpr const char* kTestSecret = "ci-test-secret";
 
-inline course::Grade gradeAssignment(const std::string& assignment, const std::filesystem::path& submission) {
+// `submission` graded against `assignment`, which it must compile for.
+inline course::Grade gradeFile(const std::string& assignment, const std::filesystem::path& submission) {
   Result<course::Rubric> rubric = course::loadRubric(std::filesystem::path(FROB_ASSIGNMENTS_DIR) / assignment / "rubric.toml");
   EXPECT_TRUE(rubric.ok()) << rubric.error();
   course::GradeDef def{.rubric = rubric.value(), .assignment = assignment, .secret = kTestSecret};
   def.compiler.cacheDir = FROB_TEST_CACHE_DIR;
-  return course::grade(def, submission);
+  course::Grade g = course::grade(def, submission);
+  EXPECT_EQ(g.compileError, "") << submission;
+  return g;
+}
+
+// What the grader told the student about `check` (one line per failed run), "" when it passed.
+inline std::string reasons(const course::Grade& g, const std::string& check) {
+  for (const course::CheckGrade& c : g.checks) {
+    if (c.name == check) return c.output();
+  }
+  ADD_FAILURE() << "no check named '" << check << "'";
+  return "";
 }
 
 inline std::filesystem::path assignmentFile(const std::string& assignment, const std::string& file) {

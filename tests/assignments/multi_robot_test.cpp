@@ -20,21 +20,6 @@ const std::string kGoals = "every robot reaches its goal";
 const std::string kApart = "crosses the middle without touching anyone";
 const std::string kOthers = "other arrangements";
 
-// What the grader told the student about `check` (one line per failed run), "" when it passed.
-std::string reasons(const course::Grade& g, const std::string& check) {
-  for (const course::CheckGrade& c : g.checks) {
-    if (c.name == check) return c.output();
-  }
-  ADD_FAILURE() << "no check named '" << check << "'";
-  return "";
-}
-
-course::Grade gradeFile(const std::filesystem::path& file) {
-  course::Grade g = gradeAssignment(kAssignment, file);
-  EXPECT_EQ(g.compileError, "") << file;
-  return g;
-}
-
 TEST(MultiRobotAssignment, RubricHasTheChecksTheHandoutDescribes) {
   Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
   ASSERT_TRUE(rubric.ok()) << rubric.error();
@@ -76,7 +61,7 @@ TEST(MultiRobotAssignment, EveryGoalIsOppositeItsRobotsStart) {
 }
 
 TEST(MultiRobotAssignment, SolutionGetsFullMarksOnEveryCheck) {
-  course::Grade g = gradeFile(assignmentFile(kAssignment, "solution.cpp"));
+  course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "solution.cpp"));
   ASSERT_EQ(g.checks.size(), 3u);
   for (const course::CheckGrade& c : g.checks) EXPECT_EQ(c.score, c.points) << c.name << ":\n" << c.output();
   EXPECT_EQ(g.score(), 14.0);
@@ -84,7 +69,7 @@ TEST(MultiRobotAssignment, SolutionGetsFullMarksOnEveryCheck) {
 
 // The starter sends every robot to the centre: they meet there and touch, and nobody reaches a goal.
 TEST(MultiRobotAssignment, StarterScoresNothing) {
-  course::Grade g = gradeFile(assignmentFile(kAssignment, "starter.cpp"));
+  course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "starter.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kGoals, 0}, {kApart, 0}, {kOthers, 0}}));
   EXPECT_THAT(reasons(g, kGoals), HasSubstr("in worlds/swap.toml, seed 11: ada never came within 0.30 m of goal_ada"));
   EXPECT_THAT(reasons(g, kApart), HasSubstr("in worlds/swap.toml, seed 11: ada and bob touched at"));
@@ -94,7 +79,7 @@ TEST(MultiRobotAssignment, StarterScoresNothing) {
 // Robots that never look out for each other meet in the middle. Two head-on push against each
 // other for ever; four from the corners shove past each other and arrive, but they touched.
 TEST(MultiRobotAssignment, RobotsThatDriveStraightCollide) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "straight.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "straight.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kGoals, 2}, {kApart, 0}, {kOthers, 0}}));
   EXPECT_THAT(reasons(g, kGoals), HasSubstr("in worlds/swap.toml, seed 11: ada never came within 0.30 m of goal_ada"));
   EXPECT_THAT(reasons(g, kGoals), Not(HasSubstr("corners.toml")));
@@ -108,7 +93,7 @@ TEST(MultiRobotAssignment, RobotsThatDriveStraightCollide) {
 // (the swap world), wrong in the corners, where the robots go to the wrong corner and never cross
 // the middle, and wrong for every arrangement of the hidden check.
 TEST(MultiRobotAssignment, TheOtherSideIsTheWrongGoal) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "wrong_goal.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "wrong_goal.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kGoals, 2}, {kApart, 2}, {kOthers, 0}}));
   EXPECT_THAT(reasons(g, kGoals), HasSubstr("in worlds/corners.toml, seed 12: ada never came within 0.30 m of goal_ada"));
   EXPECT_THAT(reasons(g, kGoals), Not(HasSubstr("swap.toml")));
@@ -120,7 +105,7 @@ TEST(MultiRobotAssignment, TheOtherSideIsTheWrongGoal) {
 
 // Course example 4 drives every robot to (5, 3) and then (1, 1): nobody's goal.
 TEST(MultiRobotAssignment, CopiedExampleFourGetsNothing) {
-  course::Grade g = gradeFile(example("04_drive_to.cpp"));
+  course::Grade g = gradeFile(kAssignment, example("04_drive_to.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kGoals, 0}, {kApart, 0}, {kOthers, 0}}));
   EXPECT_THAT(reasons(g, kGoals), HasSubstr("never came within 0.30 m of goal_"));
 }

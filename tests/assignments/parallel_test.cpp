@@ -22,21 +22,6 @@ const std::string kBudget = "stops when the 20 m budget is used";
 const std::string kOtherKeys = "other keys do not stop it";
 const std::string kOtherBox = "a box elsewhere in the aisles";
 
-// What the grader told the student about `check` (one line per failed run), "" when it passed.
-std::string reasons(const course::Grade& g, const std::string& check) {
-  for (const course::CheckGrade& c : g.checks) {
-    if (c.name == check) return c.output();
-  }
-  ADD_FAILURE() << "no check named '" << check << "'";
-  return "";
-}
-
-course::Grade gradeFile(const std::filesystem::path& file) {
-  course::Grade g = gradeAssignment(kAssignment, file);
-  EXPECT_EQ(g.compileError, "") << file;
-  return g;
-}
-
 const char* const kStillMoving = "was still moving at 0.60 m/s at the end; it should stop";
 
 TEST(ParallelAssignment, RubricHasTheChecksTheHandoutDescribes) {
@@ -73,7 +58,7 @@ TEST(ParallelAssignment, EveryWorldHasTheHandoutsRouteAndStart) {
 }
 
 TEST(ParallelAssignment, SolutionGetsFullMarksOnEveryCheck) {
-  course::Grade g = gradeFile(assignmentFile(kAssignment, "solution.cpp"));
+  course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "solution.cpp"));
   ASSERT_EQ(g.checks.size(), 6u);
   for (const course::CheckGrade& c : g.checks) EXPECT_EQ(c.score, c.points) << c.name << ":\n" << c.output();
   EXPECT_EQ(g.score(), 10.0);
@@ -81,7 +66,7 @@ TEST(ParallelAssignment, SolutionGetsFullMarksOnEveryCheck) {
 
 // The starter patrols for ever: the patrol's points, nothing else.
 TEST(ParallelAssignment, StarterOnlyPatrols) {
-  course::Grade g = gradeFile(assignmentFile(kAssignment, "starter.cpp"));
+  course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "starter.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kPatrol, 2}, {kKey, 0}, {kBump, 0}, {kBudget, 0}, {kOtherKeys, 0}, {kOtherBox, 0}}));
   for (const std::string& check : {kKey, kBump, kBudget, kOtherKeys, kOtherBox}) {
     EXPECT_THAT(reasons(g, check), HasSubstr(kStillMoving)) << check;
@@ -91,7 +76,7 @@ TEST(ParallelAssignment, StarterOnlyPatrols) {
 // Example 7 copied, with the patrol as its driver and the budget as its trip: it patrols and stops
 // after 20 m, but a key press and a bump change nothing, and it reports no reason.
 TEST(ParallelAssignment, CopiedExample7IgnoresKeyAndBumpersAndGivesNoReason) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "copied_example.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "copied_example.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kPatrol, 2}, {kKey, 0}, {kBump, 0}, {kBudget, 0}, {kOtherKeys, 0}, {kOtherBox, 0}}));
   EXPECT_THAT(reasons(g, kKey), HasSubstr(kStillMoving));
   EXPECT_THAT(reasons(g, kBump), HasSubstr("(2 contacts; 1 allowed)"));
@@ -100,14 +85,14 @@ TEST(ParallelAssignment, CopiedExample7IgnoresKeyAndBumpersAndGivesNoReason) {
 
 // Example 7 as it is wanders the room: it never comes near the route.
 TEST(ParallelAssignment, Example7AsItIsScoresNothing) {
-  course::Grade g = gradeFile(example("07_with_task.cpp"));
+  course::Grade g = gradeFile(kAssignment, example("07_with_task.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kPatrol, 0}, {kKey, 0}, {kBump, 0}, {kBudget, 0}, {kOtherKeys, 0}, {kOtherBox, 0}}));
   EXPECT_THAT(reasons(g, kPatrol), HasSubstr("never came within 0.20 m of p1"));
 }
 
 // The watcher does not watch the keyboard: the operator cannot stop it.
 TEST(ParallelAssignment, IgnoringTheKeyFailsTheKeyChecks) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "ignores_key.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "ignores_key.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kPatrol, 2}, {kKey, 0}, {kBump, 2}, {kBudget, 2}, {kOtherKeys, 0}, {kOtherBox, 1}}));
   EXPECT_THAT(reasons(g, kKey), HasSubstr(kStillMoving));
   EXPECT_THAT(reasons(g, kOtherKeys), HasSubstr(kStillMoving));
@@ -115,14 +100,14 @@ TEST(ParallelAssignment, IgnoringTheKeyFailsTheKeyChecks) {
 
 // Any key stops it: right in the visible key world, wrong when x is pressed before s.
 TEST(ParallelAssignment, StoppingOnAnyKeyFailsTheOtherKeysCheck) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "stops_on_any_key.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "stops_on_any_key.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kPatrol, 2}, {kKey, 2}, {kBump, 2}, {kBudget, 2}, {kOtherKeys, 0}, {kOtherBox, 1}}));
   EXPECT_THAT(reasons(g, kOtherKeys), HasSubstr("reached p1 at 3.1 s, never came within 0.20 m of p2 after that"));
 }
 
 // The watcher does not watch the bumpers: the robot pushes past the box and patrols on.
 TEST(ParallelAssignment, IgnoringTheBumpersFailsTheBoxChecks) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "ignores_bumper.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "ignores_bumper.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kPatrol, 2}, {kKey, 2}, {kBump, 0}, {kBudget, 2}, {kOtherKeys, 1}, {kOtherBox, 0}}));
   EXPECT_THAT(reasons(g, kBump), HasSubstr(kStillMoving));
   EXPECT_THAT(reasons(g, kOtherBox), HasSubstr(kStillMoving));
@@ -130,7 +115,7 @@ TEST(ParallelAssignment, IgnoringTheBumpersFailsTheBoxChecks) {
 
 // withTask without withExit: the watcher ends as it should, but nothing ends the patrol.
 TEST(ParallelAssignment, AWatcherWhoseEndIsIgnoredStopsNothing) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "patrol_never_ends.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "patrol_never_ends.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kPatrol, 2}, {kKey, 0}, {kBump, 0}, {kBudget, 0}, {kOtherKeys, 0}, {kOtherBox, 0}}));
   for (const std::string& check : {kKey, kBump, kBudget, kOtherKeys, kOtherBox}) {
     EXPECT_THAT(reasons(g, check), HasSubstr(kStillMoving)) << check;

@@ -23,21 +23,6 @@ const std::string kKeeps = "keeps 40 cm from the wall as it goes";
 const std::string kUnseenRound = "goes round unseen rooms with the wall on its right";
 const std::string kUnseenKeeps = "keeps 40 cm from the wall in unseen rooms";
 
-// What the grader told the student about `check` (one line per failed run), "" when it passed.
-std::string reasons(const course::Grade& g, const std::string& check) {
-  for (const course::CheckGrade& c : g.checks) {
-    if (c.name == check) return c.output();
-  }
-  ADD_FAILURE() << "no check named '" << check << "'";
-  return "";
-}
-
-course::Grade gradeFile(const std::filesystem::path& file) {
-  course::Grade g = gradeAssignment(kAssignment, file);
-  EXPECT_EQ(g.compileError, "") << file;
-  return g;
-}
-
 TEST(WallFollowAssignment, RubricHasTheChecksTheHandoutDescribes) {
   Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
   ASSERT_TRUE(rubric.ok()) << rubric.error();
@@ -77,7 +62,7 @@ TEST(WallFollowAssignment, WaypointsLieOnTheFollowersPath) {
 }
 
 TEST(WallFollowAssignment, SolutionGetsFullMarksOnEveryCheck) {
-  course::Grade g = gradeFile(assignmentFile(kAssignment, "solution.cpp"));
+  course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "solution.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kRound, 4}, {kKeeps, 4}, {kUnseenRound, 2}, {kUnseenKeeps, 2}}));
   EXPECT_EQ(g.score(), g.maxScore());
   for (const course::CheckGrade& c : g.checks) EXPECT_EQ(c.output(), "") << c.name;
@@ -86,7 +71,7 @@ TEST(WallFollowAssignment, SolutionGetsFullMarksOnEveryCheck) {
 // The paper's rerror used the simplest way, turning in proportion to it: once it turns towards the
 // wall its right sonar hears nothing, so it turns on, and circles by the wall for the whole run.
 TEST(WallFollowAssignment, StarterScoresNothing) {
-  course::Grade g = gradeFile(assignmentFile(kAssignment, "starter.cpp"));
+  course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "starter.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 0}, {kUnseenRound, 0}, {kUnseenKeeps, 0}}));
   EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/l_room.toml, seed 1: never came within 0.30 m of a (closest 3.54 m"));
   EXPECT_THAT(reasons(g, kKeeps), HasSubstr("kept 0.40 ± 0.06 m from the wall for 8% of the time after 10.0 s; 80% required"));
@@ -96,7 +81,7 @@ TEST(WallFollowAssignment, StarterScoresNothing) {
 // way, but goes round the L-shaped room the other way (past a, then never b) and round the outer
 // wall instead of the block.
 TEST(WallFollowAssignment, FollowingTheLeftWallKeepsItsDistanceTheWrongWayRound) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "left_wall.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "left_wall.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 4}, {kUnseenRound, 0}, {kUnseenKeeps, 2}}));
   EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/l_room.toml, seed 1: reached a at 48.1 s, never came within 0.30 m of b after that"));
   EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/notched_block.toml, seed 1: never came within 0.30 m of a (closest 1.86 m"));
@@ -108,7 +93,7 @@ TEST(WallFollowAssignment, FollowingTheLeftWallKeepsItsDistanceTheWrongWayRound)
 // L-shaped room and the alcove room, but so close to the wall it loses its way in the notch and in
 // the Z-shaped corridor.
 TEST(WallFollowAssignment, TooCloseGoesRoundButNeverAtTheSetpoint) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "too_close.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "too_close.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kRound, 2}, {kKeeps, 0}, {kUnseenRound, 1}, {kUnseenKeeps, 0}}));
   EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/l_room.toml, seed 1: kept 0.40 ± 0.06 m from the wall for 0% of the time after 10.0 s"));
   EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/notched_block.toml, seed 1: reached a at 13.1 s, never came within 0.30 m of b after that"));
@@ -120,7 +105,7 @@ TEST(WallFollowAssignment, TooCloseGoesRoundButNeverAtTheSetpoint) {
 // when over. It weaves (within 6 cm of 40 cm a fifth of the time) and, never slowing down, runs
 // into the wall ahead at a concave corner.
 TEST(WallFollowAssignment, BangBangOscillatesAndBumpsAtCorners) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "oscillates.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "oscillates.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 0}, {kUnseenRound, 0}, {kUnseenKeeps, 0}}));
   EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/l_room.toml, seed 1: touched a wall at 15.5 s at (6.8, 0.9)"));
   EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/l_room.toml, seed 1: kept 0.40 ± 0.06 m from the wall for 21% of the time"));
@@ -132,7 +117,7 @@ TEST(WallFollowAssignment, BangBangOscillatesAndBumpsAtCorners) {
 // wall and at the right distance. Standing there keeps 40 cm from the wall, but not "as it goes":
 // it has seen too little of the floor.
 TEST(WallFollowAssignment, StoppingAtTheEndOfTheWallDoesNotGoRound) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "stops_at_end.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "stops_at_end.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 0}, {kUnseenRound, 0}, {kUnseenKeeps, 0}}));
   EXPECT_THAT(
       reasons(g, kRound),
@@ -148,7 +133,7 @@ TEST(WallFollowAssignment, StoppingAtTheEndOfTheWallDoesNotGoRound) {
 // ends. In the L-shaped room the left wall is far: it stops at once. By the block it follows the
 // outer wall: not the block's waypoints, and 50 cm is not 40 ± 6 cm.
 TEST(WallFollowAssignment, Example2AsItIsFollowsTheWrongWall) {
-  course::Grade g = gradeFile(example("02_wall_follower.cpp"));
+  course::Grade g = gradeFile(kAssignment, example("02_wall_follower.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 0}, {kUnseenRound, 0}, {kUnseenKeeps, 0}}));
   EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/l_room.toml, seed 1: never came within 0.30 m of a (closest 4.03 m, at 0.0 s)"));
   EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/notched_block.toml, seed 1: never came within 0.30 m of a (closest 1.75 m"));

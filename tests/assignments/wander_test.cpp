@@ -22,21 +22,6 @@ const std::string kTouch = "never touches anything";
 const std::string kExplore = "explores the room";
 const std::string kUnseen = "explores unseen rooms without touching anything";
 
-// What the grader told the student about `check` (one line per failed run), "" when it passed.
-std::string reasons(const course::Grade& g, const std::string& check) {
-  for (const course::CheckGrade& c : g.checks) {
-    if (c.name == check) return c.output();
-  }
-  ADD_FAILURE() << "no check named '" << check << "'";
-  return "";
-}
-
-course::Grade gradeFile(const std::filesystem::path& file) {
-  course::Grade g = gradeAssignment(kAssignment, file);
-  EXPECT_EQ(g.compileError, "") << file;
-  return g;
-}
-
 TEST(WanderAssignment, RubricHasTheChecksTheHandoutDescribes) {
   Result<course::Rubric> rubric = course::loadRubric(assignmentFile(kAssignment, "rubric.toml"));
   ASSERT_TRUE(rubric.ok()) << rubric.error();
@@ -67,7 +52,7 @@ TEST(WanderAssignment, EveryWorldHasOneRobotAndTheRoomPoint) {
 }
 
 TEST(WanderAssignment, SolutionGetsFullMarksOnEveryCheck) {
-  course::Grade g = gradeFile(assignmentFile(kAssignment, "solution.cpp"));
+  course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "solution.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kHall, 2}, {kTouch, 3}, {kExplore, 3}, {kUnseen, 2}}));
   EXPECT_EQ(g.score(), g.maxScore());
   for (const course::CheckGrade& c : g.checks) EXPECT_EQ(c.output(), "") << c.name;
@@ -76,7 +61,7 @@ TEST(WanderAssignment, SolutionGetsFullMarksOnEveryCheck) {
 // The paper's runAround word for word, at the paper's 10 cm/s: it creeps out of the hall, then runs
 // into what it meets at an angle (only its front sonar looks) and gets little further.
 TEST(WanderAssignment, StarterCreepsOutAndTouches) {
-  course::Grade g = gradeFile(assignmentFile(kAssignment, "starter.cpp"));
+  course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "starter.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kHall, 2}, {kTouch, 0}, {kExplore, 0}, {kUnseen, 0}}));
   EXPECT_THAT(reasons(g, kTouch), HasSubstr("in worlds/living_room.toml, seed 1: touched a wall at 53.5 s"));
   EXPECT_THAT(reasons(g, kTouch), HasSubstr("in worlds/bedroom.toml, seed 1: touched a wall at 77.5 s"));
@@ -88,7 +73,7 @@ TEST(WanderAssignment, StarterCreepsOutAndTouches) {
 // the right: the door posts stop it in the doorway, and quarter turns to the right only ever send
 // it back down the hall. It touches nothing, but that counts only for a robot that gets about.
 TEST(WanderAssignment, QuarterTurnsToTheRightNeverLeaveTheHall) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "quarter_turns.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "quarter_turns.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kHall, 0}, {kTouch, 0}, {kExplore, 0}, {kUnseen, 0}}));
   EXPECT_THAT(reasons(g, kHall), HasSubstr("in worlds/living_room.toml, seed 1: never came within 0.50 m of room (closest 1.57 m"));
   EXPECT_THAT(reasons(g, kTouch), HasSubstr("covered 3% of the floor it could reach (1 of 32 cells of 1.00 m); 25% required"));
@@ -100,7 +85,7 @@ TEST(WanderAssignment, QuarterTurnsToTheRightNeverLeaveTheHall) {
 // A good explorer that finds the walls with its bumpers: out of the hall and all over the rooms,
 // touching every wall it turns away from.
 TEST(WanderAssignment, StoppingOnTheBumperExploresButTouches) {
-  course::Grade g = gradeFile(wrongSubmission(kAssignment, "stops_on_bumper.cpp"));
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "stops_on_bumper.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kHall, 2}, {kTouch, 0}, {kExplore, 3}, {kUnseen, 0}}));
   EXPECT_THAT(reasons(g, kTouch), HasSubstr("in worlds/living_room.toml, seed 1: touched a wall at 10.7 s at (4.0, 5.8) (12 contacts; 0 allowed)"));
   EXPECT_THAT(reasons(g, kUnseen), HasSubstr("in hidden_worlds/study.toml, seed "));
@@ -111,7 +96,7 @@ TEST(WanderAssignment, StoppingOnTheBumperExploresButTouches) {
 // its turnRight waits for 30 cm on both sides: it stops for the door posts, turns back down the
 // hall, and spins for ever at the end of the hall, where no heading gives 30 cm on both sides.
 TEST(WanderAssignment, Example1AsItIsNeverLeavesTheHall) {
-  course::Grade g = gradeFile(example("01_run_around.cpp"));
+  course::Grade g = gradeFile(kAssignment, example("01_run_around.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kHall, 0}, {kTouch, 0}, {kExplore, 0}, {kUnseen, 0}}));
   EXPECT_THAT(reasons(g, kHall), HasSubstr("in worlds/bedroom.toml, seed 1: never came within 0.50 m of room (closest 1.61 m"));
   EXPECT_THAT(reasons(g, kTouch), HasSubstr("covered 3% of the floor it could reach (1 of 32 cells of 1.00 m); 25% required"));

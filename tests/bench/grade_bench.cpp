@@ -3,7 +3,7 @@
 // compiled and graded two at a time. Run by hand for figures:
 //   build/tests/bench/grade_bench --benchmark_min_time=5
 //   FROB_BENCH_CLASS=200 build/tests/bench/grade_bench --benchmark_filter=Class   # the 200-submission figure
-#include "frob/course/grade.hpp"
+#include "frob/grade/grade.hpp"
 
 #include <benchmark/benchmark.h>
 

@@ -1,9 +1,9 @@
-// Issue 12, the controller host: what isolation costs a step (frames out, wheels back) against the
+// Issue 12, the controller host: what host costs a step (frames out, wheels back) against the
 // same controllers sampled in this process, for 1 and 4 robots, spinning before sleeping or
 // sleeping at once; and what starting a host costs (spawn, sandbox, exec, dlopen, first answer).
-// Run by hand for figures:   build/tests/bench/isolation_bench --benchmark_min_time=2
-// Each iteration is one step of the run; the overhead per step is Isolated/N minus InProcess/N.
-#include "frob/course/isolation.hpp"
+// Run by hand for figures:   build/tests/bench/host_bench --benchmark_min_time=2
+// Each iteration is one step of the run; the overhead per step is Sandboxed/N minus InProcess/N.
+#include "frob/run/host.hpp"
 #include "frob/worlds/registry.hpp"
 
 #include <benchmark/benchmark.h>
@@ -38,8 +38,8 @@ void InProcess(benchmark::State& state) {
   perStep(state, run);
 }
 
-void Isolated(benchmark::State& state) {
-  course::IsolationDef def{.spinNanoseconds = static_cast<std::uint64_t>(state.range(1)) * 1000};
+void Sandboxed(benchmark::State& state) {
+  course::HostDef def{.spinNanoseconds = static_cast<std::uint64_t>(state.range(1)) * 1000};
   Result<std::shared_ptr<course::ControllerHost>> host = course::ControllerHost::start({kModule}, {"run_around"}, def);
   if (!host) return state.SkipWithError(host.error().c_str());
   worlds::Run run(world(static_cast<int>(state.range(0))), {}, host.value()->driver({0}, false), {.keepSteps = false});
@@ -55,7 +55,7 @@ void HostStart(benchmark::State& state) {
 
 BENCHMARK(InProcess)->ArgName("robots")->Arg(1)->Arg(4);
 // Args: robots, microseconds each side spins before it sleeps (0: sleeps at once, for shared cores).
-BENCHMARK(Isolated)->ArgNames({"robots", "spin_us"})->Args({1, 50})->Args({4, 50})->Args({1, 0})->Args({4, 0});
+BENCHMARK(Sandboxed)->ArgNames({"robots", "spin_us"})->Args({1, 50})->Args({4, 50})->Args({1, 0})->Args({4, 0});
 BENCHMARK(HostStart)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -362,12 +362,12 @@ void RayCastBox2D(benchmark::State& state) {
 }
 BENCHMARK(RayCastBox2D);
 
-const detail::Neighbours noRobots;  // the ray micro benchmarks cast among walls only
+const worlds::detail::Neighbours noRobots;  // the ray micro benchmarks cast among walls only
 
 // Our uniform grid with DDA traversal over the same walls.
 void RayCastGrid(benchmark::State& state) {
   Simulation sim(maze());
-  const detail::RayCaster caster(sim.walls(), Point2(-1, -1), Point2(21, 21));
+  const worlds::detail::RayCaster caster(sim.walls(), Point2(-1, -1), Point2(21, 21));
   const std::vector<Ray> rays = mazeRays();
   std::size_t k = 0;
   for (auto _ : state) {
@@ -382,21 +382,21 @@ BENCHMARK(RayCastGrid);
 // cutoff), cast as the simulation casts them; rays/s counts all five.
 void RayCastCone(benchmark::State& state) {
   Simulation sim(maze());
-  const detail::RayCaster caster(sim.walls(), Point2(-1, -1), Point2(21, 21));
+  const worlds::detail::RayCaster caster(sim.walls(), Point2(-1, -1), Point2(21, 21));
   const std::vector<Ray> rays = mazeRays();
   const double step = 25.0 * pi / 180.0 / 4.0, cosCutoff = std::cos(22.5 * pi / 180.0);
   struct Cone {
     std::array<double, 5> x, y;  // axis first, then outwards, as the simulation orders them
   };
   std::vector<Cone> cones;
-  std::vector<detail::Spread> spreads;
+  std::vector<worlds::detail::Spread> spreads;
   for (const Ray& r : rays) {
     const double a = std::atan2(r.dir.y(), r.dir.x());
     Cone c{};
     const double offsets[5] = {0.0, step, -step, 2 * step, -2 * step};
     for (int k = 0; k < 5; ++k) c.x[k] = std::cos(a + offsets[k]), c.y[k] = std::sin(a + offsets[k]);
     cones.push_back(c);
-    spreads.push_back(detail::spreadOf(c.x, c.y));
+    spreads.push_back(worlds::detail::spreadOf(c.x, c.y));
   }
   std::size_t k = 0;
   for (auto _ : state) {

@@ -28,7 +28,7 @@ owner_of() {  # the package owning a library, under /lib or /usr/lib (Debian 12 
   done
   true
 }
-for program in usr/bin/frob usr/libexec/frob/frob-controller-host usr/libexec/frob/frob-jail; do
+for program in usr/bin/frob usr/libexec/frob/frob-controller-host usr/libexec/frob/frob-sandbox; do
   for name in $(readelf -d "$work/root/$program" | sed -n 's/.*Shared library: \[\(.*\)\]/\1/p'); do
     # ldd names a library, then its path; the dynamic loader only by its path.
     path=$(ldd "$work/root/$program" | awk -v n="$name" '$1 == n {print $3} $1 ~ ("/" n "$") {print $1}' | head -n 1)
@@ -39,7 +39,7 @@ for program in usr/bin/frob usr/libexec/frob/frob-controller-host usr/libexec/fr
 done
 
 dpkg-deb -c "$deb" | awk '{print $6}' > "$work/contents.txt"
-for path in ./usr/bin/frob ./usr/libexec/frob/frob-controller-host ./usr/libexec/frob/frob-jail ./usr/include/frob/frob.hpp \
+for path in ./usr/bin/frob ./usr/libexec/frob/frob-controller-host ./usr/libexec/frob/frob-sandbox ./usr/include/frob/frob.hpp \
             ./usr/lib/libfrob_frob.a ./usr/lib/cmake/frob/frobConfig.cmake ./usr/lib/cmake/frob/frobTargets.cmake \
             ./usr/lib/frob/frob.pch ./usr/lib/frob/frob-headers.yaml ./usr/lib/frob/examples/06_bug.so \
             ./usr/share/frob/version ./usr/share/frob/worlds/arena.toml ./usr/share/frob/models/robot.obj \

@@ -64,12 +64,12 @@ FROB_CONTROLLER(forward, .world = "empty", .seconds = 2)
 CPP
 "$frob" run student.cpp --video student.mp4 --json > student.json 2> student.err || { cat student.err; fail "frob run student.cpp"; }
 contains student.json '"trajectory_hash"'
-# It ran in the installed controller host, confined by the installed frob-jail.
+# It ran in the installed controller host, sandboxed by the installed frob-sandbox.
 contains student.json '"landlock"'
 contains student.json '"seccomp"'
 [ -s student.mp4 ] || fail "no video"
 
-# Isolation from the installed host: a controller writing outside its scratch folder is stopped and
+# The sandbox of the installed host: a controller writing outside its scratch folder is stopped and
 # writes nothing.
 cat > escapes.cpp <<CPP
 #include <frob/frob.hpp>
@@ -86,4 +86,4 @@ CPP
 if "$frob" run escapes.cpp --seconds 2 --quiet > escapes.out 2> escapes.err; then fail "a controller writing outside its sandbox ran to the end"; fi
 contains escapes.err "tried to write $work/elsewhere/escaped (not allowed)"
 [ ! -e escaped ] || fail "the controller wrote outside its sandbox"
-echo "the moved prefix $prefix runs examples and student files, isolated"
+echo "the moved prefix $prefix runs examples and student files, sandboxed"

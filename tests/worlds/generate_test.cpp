@@ -1,7 +1,7 @@
 // World generators: each kind keeps its promises for many seeds (checked here with brute-force
 // distances and a flood fill of our own, not the generator's), writes a file that loads back to
 // the same world, and the same kind and seed give the same world (golden hashes).
-#include "frob/course/generate.hpp"
+#include "frob/worlds/generate.hpp"
 
 #include "frob/worlds/fnv.hpp"
 #include "frob/worlds/world_file.hpp"
@@ -13,29 +13,27 @@
 #include <cmath>
 #include <cstdio>
 
-namespace frob::course {
+namespace frob::worlds {
 namespace {
-
-using worlds::WallDef;
 
 constexpr double kRadius = 0.23;
 
-std::vector<WallDef> withEnclosure(const worlds::WorldDef& w) {
+std::vector<WallDef> withEnclosure(const WorldDef& w) {
   std::vector<WallDef> all = w.walls;
   const Point2 a(0, 0), b(w.size.x(), 0), c = w.size, d(0, w.size.y());
-  for (auto [p, q] : {std::pair{a, b}, {b, c}, {c, d}, {d, a}}) all.push_back(worlds::segmentWall(p, q));
+  for (auto [p, q] : {std::pair{a, b}, {b, c}, {c, d}, {d, a}}) all.push_back(segmentWall(p, q));
   return all;
 }
 
 double nearestWall(const std::vector<WallDef>& walls, const Point2& p) {
   double d = INFINITY;
-  for (const WallDef& w : walls) d = std::min(d, worlds::distanceToWall(p, w));
+  for (const WallDef& w : walls) d = std::min(d, distanceToWall(p, w));
   return d;
 }
 
 // Whether the body can get from `a` to `b`: a flood fill over 10 cm cells whose centres keep the
 // body clear of every wall (a coarser, independent check of the generator's 5 cm one).
-bool reachable(const worlds::WorldDef& w, const Point2& a, const Point2& b) {
+bool reachable(const WorldDef& w, const Point2& a, const Point2& b) {
   const std::vector<WallDef> walls = withEnclosure(w);
   constexpr double cell = 0.1;
   const int nx = static_cast<int>(w.size.x() / cell), ny = static_cast<int>(w.size.y() / cell);
@@ -76,7 +74,7 @@ double gap(const WallDef& a, const WallDef& b, double enough) {
   const Point2 lo = loA.cwiseMin(loB), hi = hiA.cwiseMax(hiB);
   double best = INFINITY;
   for (double x = lo.x(); x <= hi.x(); x += 0.02) {
-    for (double y = lo.y(); y <= hi.y(); y += 0.02) best = std::min(best, worlds::distanceToWall({x, y}, a) + worlds::distanceToWall({x, y}, b));
+    for (double y = lo.y(); y <= hi.y(); y += 0.02) best = std::min(best, distanceToWall({x, y}, a) + distanceToWall({x, y}, b));
   }
   return best;
 }
@@ -85,21 +83,21 @@ class EveryKind : public ::testing::TestWithParam<WorldKind> {};
 
 TEST_P(EveryKind, KeepsItsPromisesForManySeeds) {
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
-    Result<worlds::WorldDef> w = generateWorld(GetParam(), seed);
+    Result<WorldDef> w = generateWorld(GetParam(), seed);
     ASSERT_TRUE(w.ok()) << w.error();
-    const worlds::WorldDef& world = w.value();
+    const WorldDef& world = w.value();
     EXPECT_EQ(world.seed, seed);
-    const Point2 start = world.robots.at(0).start.position, goal = *worlds::findPoint(world, "goal");
+    const Point2 start = world.robots.at(0).start.position, goal = *findPoint(world, "goal");
     EXPECT_GE(nearestWall(withEnclosure(world), start), kRadius + 0.1) << "seed " << seed;
     EXPECT_GE(nearestWall(withEnclosure(world), goal), kRadius + 0.1) << "seed " << seed;
     EXPECT_TRUE(reachable(world, start, goal)) << toString(GetParam()) << " seed " << seed;
-    EXPECT_EQ(worlds::checkWorld(world), "");
+    EXPECT_TRUE(checkWorld(world).ok()) << checkWorld(world).error();
   }
 }
 
 TEST_P(EveryKind, WritesAFileThatLoadsBackToTheSameWorld) {
-  const worlds::WorldDef made = generateWorld(GetParam(), 7).value();
-  Result<worlds::WorldDef> back = worlds::parseWorld(toToml(made), "made.toml");
+  const WorldDef made = generateWorld(GetParam(), 7).value();
+  Result<WorldDef> back = parseWorld(toToml(made), "made.toml");
   ASSERT_TRUE(back.ok()) << back.error();
   ASSERT_EQ(back->walls.size(), made.walls.size());
   for (std::size_t i = 0; i < made.walls.size(); ++i) {
@@ -120,7 +118,7 @@ INSTANTIATE_TEST_SUITE_P(Generate, EveryKind, ::testing::Values(WorldKind::Obsta
 // Room for a wall follower (20 cm each side) between any two obstacles.
 TEST(Generate, ObstaclesAreMoreThanTheRobotsDiameterApart) {
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-    const worlds::WorldDef w = generateWorld(WorldKind::Obstacles, seed).value();
+    const WorldDef w = generateWorld(WorldKind::Obstacles, seed).value();
     ASSERT_GE(w.walls.size(), 8u);
     for (std::size_t i = 0; i < w.walls.size(); ++i) {
       for (std::size_t j = i + 1; j < w.walls.size(); ++j) {
@@ -135,12 +133,12 @@ TEST(Generate, ObstaclesAreMoreThanTheRobotsDiameterApart) {
 TEST(Generate, TheTrapStandsAlone) {
   int traps = 0;
   for (std::uint64_t seed = 1; seed <= 8; ++seed) {
-    const worlds::WorldDef w = generateWorld(WorldKind::Obstacles, seed).value();
-    const auto trap = std::find_if(w.walls.begin(), w.walls.end(), [](const WallDef& wall) { return wall.shape == worlds::WallShape::Polyline; });
+    const WorldDef w = generateWorld(WorldKind::Obstacles, seed).value();
+    const auto trap = std::find_if(w.walls.begin(), w.walls.end(), [](const WallDef& wall) { return wall.shape == WallShape::Polyline; });
     if (trap == w.walls.end()) continue;
     ++traps;
     const std::vector<Point2>& l = trap->points;  // top-left, the corner, bottom-right
-    const WallDef square = worlds::rectangleWall(Point2(l[0].x(), l[2].y()), l[1]);
+    const WallDef square = rectangleWall(Point2(l[0].x(), l[2].y()), l[1]);
     for (const WallDef& other : w.walls) {
       if (&other != &*trap) EXPECT_GT(gap(square, other, 2.0), 1.5 - 0.03) << "seed " << seed;  // 2 cm grid
     }
@@ -151,7 +149,7 @@ TEST(Generate, TheTrapStandsAlone) {
 TEST(Generate, AMazeIsPerfect) {
   // A perfect maze of C x R cells keeps all but C R - 1 of its inner walls: one way between any two cells.
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-    const worlds::WorldDef w = generateWorld(WorldKind::Maze, seed).value();
+    const WorldDef w = generateWorld(WorldKind::Maze, seed).value();
     const int cols = static_cast<int>(std::lround(w.size.x() / 1.6)), rows = static_cast<int>(std::lround(w.size.y() / 1.6));
     EXPECT_EQ(static_cast<int>(w.walls.size()), (cols - 1) * rows + cols * (rows - 1) - (cols * rows - 1)) << "seed " << seed;
   }
@@ -167,7 +165,7 @@ TEST(Generate, TheSameKindAndSeedGiveTheSameWorld) {
   for (const auto& [kind, hash] : golden) {
     const std::string text = toToml(generateWorld(kind, 1).value());
     EXPECT_EQ(text, toToml(generateWorld(kind, 1).value()));
-    const std::uint64_t actual = worlds::Fnv1a().add(std::string_view(text)).value();
+    const std::uint64_t actual = Fnv1a().add(std::string_view(text)).value();
     EXPECT_EQ(actual, hash) << toString(kind) << ": actual 0x" << std::hex << actual;
   }
   EXPECT_NE(toToml(generateWorld(WorldKind::Obstacles, 1).value()), toToml(generateWorld(WorldKind::Obstacles, 2).value()));
@@ -180,4 +178,4 @@ TEST(Generate, KindsByName) {
 }
 
 }  // namespace
-}  // namespace frob::course
+}  // namespace frob::worlds

@@ -23,8 +23,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     return 0;
   }
-  if (const std::string e = checkWorld(*w); !e.empty()) {
-    std::fprintf(stderr, "loaded a world that fails its own check: %s\n", e.c_str());
+  if (const Status s = checkWorld(*w); !s) {
+    std::fprintf(stderr, "loaded a world that fails its own check: %s\n", s.error().c_str());
     std::abort();
   }
   // Small enough worlds are also simulated for a few steps.

@@ -286,7 +286,7 @@ TEST(Simulation, SensingInParallelGivesBitIdenticalResults) {
     w.robots.push_back({.start = {.position = Point2(1.0 + (i % 6) * 2.0, 1.0 + (i / 6) * 2.0 + (i / 6 >= 2 ? 2.0 : 0.0)), .heading = 0.3 * i},
                         .sonar = {.noise = 0.05},
                         .odometry = {.translation = 0.05, .heading = 0.05, .turn = 0.05}});
-  ASSERT_EQ(checkWorld(w), "");
+  ASSERT_TRUE(checkWorld(w).ok()) << checkWorld(w).error();
   auto run = [&](int threads) {
     Simulation sim(w, {.threads = threads});
     std::vector<double> all;

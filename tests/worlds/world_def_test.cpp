@@ -16,7 +16,7 @@ TEST(WorldDef, BuildsInCodeWithDesignatedInitializers) {
       .points = {{.name = "goal", .position = {4.5, 4.5}}},
       .robots = {{.start = {.position = {0.5, 0.5}, .heading = 90_deg}, .sonar = {.count = 8}}},
   };
-  EXPECT_EQ(checkWorld(w), "");
+  EXPECT_TRUE(checkWorld(w).ok()) << checkWorld(w).error();
   EXPECT_EQ(robotSpec(w.robots[0]).sonarAngles.size(), 8u);
   EXPECT_EQ(findPoint(w, "goal"), Point2(4.5, 4.5));
   EXPECT_EQ(findPoint(w, "start"), std::nullopt);
@@ -24,17 +24,17 @@ TEST(WorldDef, BuildsInCodeWithDesignatedInitializers) {
 
 TEST(WorldDef, ChecksNameTheFieldWithoutAFile) {
   WorldDef w{.size = {5.0, 5.0}, .walls = {circleWall({2, 2}, 1.0)}, .robots = {{.start = {.position = {2.5, 2.5}}}}};
-  EXPECT_EQ(checkWorld(w), "world: robot[0].start: the robot (radius 0.23 m) is inside or touching wall[0]");
+  EXPECT_EQ(checkWorld(w).error(), "world: robot[0].start: the robot (radius 0.23 m) is inside or touching wall[0]");
   w.robots[0].start.position = {4.5, 4.5};
-  EXPECT_EQ(checkWorld(w), "");
+  EXPECT_TRUE(checkWorld(w).ok()) << checkWorld(w).error();
   w.robots[0].sonar.rays = 0;
-  EXPECT_EQ(checkWorld(w), "world: robot[0].sonar.rays: must lie in [1, 64]");
+  EXPECT_EQ(checkWorld(w).error(), "world: robot[0].sonar.rays: must lie in [1, 64]");
   w.robots[0].sonar.rays = 5;
   w.walls.push_back(polylineWall({{1, 1}}));
-  EXPECT_EQ(checkWorld(w), "world: wall[1].points: expected 2 or more points, got 1");
+  EXPECT_EQ(checkWorld(w).error(), "world: wall[1].points: expected 2 or more points, got 1");
   w.walls.pop_back();
   w.size = {0, 5};
-  EXPECT_EQ(checkWorld(w), "world: size: width and height must lie in (0, 1000] m, got [0, 5]");
+  EXPECT_EQ(checkWorld(w).error(), "world: size: width and height must lie in (0, 1000] m, got [0, 5]");
 }
 
 }  // namespace

@@ -20,8 +20,8 @@ struct SourceLines {
 
 // "file:line: " (or "file: " when the line is unknown).
 [[nodiscard]] std::string where(const SourceLines& at, int line);
-// Empty when `w` is valid, else "file:line: field: what is wrong".
-[[nodiscard]] std::string checkWorld(const WorldDef& w, const SourceLines& at);
+// Success when `w` is valid, else "file:line: field: what is wrong".
+[[nodiscard]] Status checkWorld(const WorldDef& w, const SourceLines& at);
 // Shortest distance from `p` to the segment a-b.
 [[nodiscard]] double distanceToSegment(const Point2& p, const Point2& a, const Point2& b);
 

@@ -1,6 +1,6 @@
-#include "frob/course/generate.hpp"
+#include "frob/worlds/generate.hpp"
 
-#include "free_space.hpp"
+#include "frob/worlds/free_space.hpp"
 
 #include <cinttypes>
 #include <cmath>
@@ -8,10 +8,7 @@
 #include <functional>
 #include <optional>
 
-namespace frob::course {
-
-using worlds::WallDef;
-using worlds::WorldDef;
+namespace frob::worlds {
 
 namespace {
 
@@ -41,8 +38,8 @@ double mm(double v) { return std::round(v * 1000.0) / 1000.0; }
 void snap(Point2& p) { p = {mm(p.x()), mm(p.y())}; }
 void snap(WorldDef& w) {
   snap(w.size);
-  for (worlds::Landmark& p : w.points) snap(p.position);
-  for (worlds::RobotDef& r : w.robots) snap(r.start.position);
+  for (Landmark& p : w.points) snap(p.position);
+  for (RobotDef& r : w.robots) snap(r.start.position);
   for (WallDef& wall : w.walls) {
     for (Point2& p : wall.points) snap(p);
     wall.radius = mm(wall.radius);
@@ -61,7 +58,7 @@ std::vector<WallDef> allWalls(const WorldDef& w) {
   std::vector<WallDef> all = w.walls;
   if (w.enclosed) {
     const Point2 a(0, 0), b(w.size.x(), 0), c = w.size, d(0, w.size.y());
-    for (auto [p, q] : {std::pair{a, b}, {b, c}, {c, d}, {d, a}}) all.push_back(worlds::segmentWall(p, q));
+    for (auto [p, q] : {std::pair{a, b}, {b, c}, {c, d}, {d, a}}) all.push_back(segmentWall(p, q));
   }
   return all;
 }
@@ -78,16 +75,16 @@ bool keepsPromises(const WorldDef& w) {
 
 // Nearest distance between two walls (0 when they touch or overlap), sampled along the edges of `a`.
 double gapBetween(const WallDef& a, const WallDef& b) {
-  if (a.shape == worlds::WallShape::Circle) return std::max(0.0, worlds::distanceToWall(a.points[0], b) - a.radius);
+  if (a.shape == WallShape::Circle) return std::max(0.0, distanceToWall(a.points[0], b) - a.radius);
   double d = INFINITY;
   const auto edge = [&](const Point2& p, const Point2& q) {
-    for (int i = 0; i <= 40; ++i) d = std::min(d, worlds::distanceToWall(p + (q - p) * (i / 40.0), b));
+    for (int i = 0; i <= 40; ++i) d = std::min(d, distanceToWall(p + (q - p) * (i / 40.0), b));
   };
   const auto& v = a.points;
-  if (a.shape == worlds::WallShape::Rectangle) {
+  if (a.shape == WallShape::Rectangle) {
     const Point2 c1(v[1].x(), v[0].y()), c3(v[0].x(), v[1].y());
     edge(v[0], c1), edge(c1, v[1]), edge(v[1], c3), edge(c3, v[0]);
-    if (worlds::distanceToWall(b.points[0], a) == 0) d = 0;  // b inside a
+    if (distanceToWall(b.points[0], a) == 0) d = 0;  // b inside a
   } else {
     for (std::size_t i = 0; i + 1 < v.size(); ++i) edge(v[i], v[i + 1]);
   }
@@ -103,20 +100,20 @@ WorldDef obstacles(Random& r, std::uint64_t seed) {
   if (r.next() % 2 == 0) {          // an L whose inside corner faces the start: the trap BUG must leave
     const Point2 c = Point2(r.uniform(5.5, 9.5), r.uniform(5.5, 9.5));
     const double s = r.uniform(1.2, 1.8);
-    placed.push_back(worlds::polylineWall({c + Point2(-s, s), c + Point2(s, s), c + Point2(s, -s)}));
-    trapArea = worlds::rectangleWall(Point2(c - Vec2(s, s)), Point2(c + Vec2(s, s)));
+    placed.push_back(polylineWall({c + Point2(-s, s), c + Point2(s, s), c + Point2(s, -s)}));
+    trapArea = rectangleWall(Point2(c - Vec2(s, s)), Point2(c + Vec2(s, s)));
   }
   const int count = r.integer(8, 14);
   for (int attempt = 0; static_cast<int>(placed.size()) < count && attempt < 500; ++attempt) {
     const Point2 c(r.uniform(2.0, 13.0), r.uniform(2.0, 13.0));
     WallDef o;
     if (r.next() % 3 == 0) {
-      o = worlds::circleWall(c, r.uniform(0.2, 0.6));
+      o = circleWall(c, r.uniform(0.2, 0.6));
     } else {
       const Vec2 half(r.uniform(0.25, 1.0), r.uniform(0.25, 1.0));
-      o = worlds::rectangleWall(Point2(c - half), Point2(c + half));
+      o = rectangleWall(Point2(c - half), Point2(c + half));
     }
-    const bool clearOfEnds = worlds::distanceToWall(w.robots[0].start.position, o) > 1.0 && worlds::distanceToWall(w.points[0].position, o) > 1.0;
+    const bool clearOfEnds = distanceToWall(w.robots[0].start.position, o) > 1.0 && distanceToWall(w.points[0].position, o) > 1.0;
     const auto clearOf = [&](const WallDef& p, double gap) { return gapBetween(o, p) > gap && gapBetween(p, o) > gap; };
     const bool clearOfOthers = std::all_of(placed.begin(), placed.end(), [&](const WallDef& p) { return clearOf(p, apart); }) &&
                                (!trapArea || clearOf(*trapArea, kTrapClearance));
@@ -157,10 +154,8 @@ WorldDef maze(Random& r, std::uint64_t seed) {
   for (int y = 0; y < rows; ++y) {
     for (int x = 0; x < cols; ++x) {
       const int c = y * cols + x;
-      if (x + 1 < cols && !eastOpen[c])
-        w.walls.push_back(worlds::segmentWall(Point2((x + 1) * cell, y * cell), Point2((x + 1) * cell, (y + 1) * cell)));
-      if (y + 1 < rows && !northOpen[c])
-        w.walls.push_back(worlds::segmentWall(Point2(x * cell, (y + 1) * cell), Point2((x + 1) * cell, (y + 1) * cell)));
+      if (x + 1 < cols && !eastOpen[c]) w.walls.push_back(segmentWall(Point2((x + 1) * cell, y * cell), Point2((x + 1) * cell, (y + 1) * cell)));
+      if (y + 1 < rows && !northOpen[c]) w.walls.push_back(segmentWall(Point2(x * cell, (y + 1) * cell), Point2((x + 1) * cell, (y + 1) * cell)));
     }
   }
   return w;
@@ -174,8 +169,8 @@ WorldDef rooms(Random& r, std::uint64_t seed) {
   const auto wallWithDoor = [&](const Point2& a, const Point2& b) {
     const double length = (b - a).norm(), door = r.uniform(1.2, 1.6), at = r.uniform(0.6, length - door - 0.6);
     const Vec2 u = (b - a) / length;
-    w.walls.push_back(worlds::segmentWall(a, Point2(a + u * at)));
-    w.walls.push_back(worlds::segmentWall(Point2(a + u * (at + door)), b));
+    w.walls.push_back(segmentWall(a, Point2(a + u * at)));
+    w.walls.push_back(segmentWall(Point2(a + u * (at + door)), b));
   };
   wallWithDoor({split, 0}, {split, height});
   wallWithDoor({0, across}, {split, across});
@@ -184,9 +179,9 @@ WorldDef rooms(Random& r, std::uint64_t seed) {
   // Furniture: tables and pillars, more than the robot's diameter from each other and from walls.
   for (int attempt = 0, pieces = r.integer(4, 8); pieces > 0 && attempt < 300; ++attempt) {
     const Point2 c(r.uniform(0.8, width - 0.8), r.uniform(0.8, height - 0.8));
-    const WallDef o = r.next() % 2 == 0 ? worlds::circleWall(c, r.uniform(0.15, 0.35))
-                                        : worlds::rectangleWall(Point2(c - Vec2(0.4, 0.3)), Point2(c + Vec2(r.uniform(0.4, 0.8), 0.3)));
-    bool clear = worlds::distanceToWall(w.robots[0].start.position, o) > 0.8 && worlds::distanceToWall(w.points[0].position, o) > 0.8;
+    const WallDef o = r.next() % 2 == 0 ? circleWall(c, r.uniform(0.15, 0.35))
+                                        : rectangleWall(Point2(c - Vec2(0.4, 0.3)), Point2(c + Vec2(r.uniform(0.4, 0.8), 0.3)));
+    bool clear = distanceToWall(w.robots[0].start.position, o) > 0.8 && distanceToWall(w.points[0].position, o) > 0.8;
     for (const WallDef& other : allWalls(w)) clear = clear && gapBetween(o, other) > 2 * kRadius + 0.1;
     if (clear) w.walls.push_back(o), --pieces;
   }
@@ -201,12 +196,12 @@ WorldDef loop(Random& r, std::uint64_t seed) {
   const Point2 lo(corridor, corridor), hi(width - corridor, height - corridor);
   const double notchAt = r.uniform(lo.x() + 1.0, hi.x() - 2.5), notchWidth = r.uniform(0.8, 1.5), notchDepth = r.uniform(0.5, 1.2);
   w.walls.push_back(
-      worlds::polylineWall({lo, Point2(notchAt, lo.y()), Point2(notchAt, lo.y() + notchDepth), Point2(notchAt + notchWidth, lo.y() + notchDepth),
-                            Point2(notchAt + notchWidth, lo.y()), Point2(hi.x(), lo.y()), hi, Point2(lo.x(), hi.y())},
-                           true));
+      polylineWall({lo, Point2(notchAt, lo.y()), Point2(notchAt, lo.y() + notchDepth), Point2(notchAt + notchWidth, lo.y() + notchDepth),
+                    Point2(notchAt + notchWidth, lo.y()), Point2(hi.x(), lo.y()), hi, Point2(lo.x(), hi.y())},
+                   true));
   // Outer corners cut at 45 degrees on some sides: the corridor's convex corners become concave.
-  if (r.next() % 2 == 0) w.walls.push_back(worlds::segmentWall({0, corridor * 0.6}, {corridor * 0.6, 0}));
-  if (r.next() % 2 == 0) w.walls.push_back(worlds::segmentWall({width - corridor * 0.6, height}, {width, height - corridor * 0.6}));
+  if (r.next() % 2 == 0) w.walls.push_back(segmentWall({0, corridor * 0.6}, {corridor * 0.6, 0}));
+  if (r.next() % 2 == 0) w.walls.push_back(segmentWall({width - corridor * 0.6, height}, {width, height - corridor * 0.6}));
   return w;
 }
 
@@ -249,7 +244,7 @@ Result<WorldDef> generateWorld(WorldKind kind, std::uint64_t seed) {
     Random random(seed * 0x100000001b3ULL + attempt);
     WorldDef w = make[static_cast<int>(kind)](random, seed);
     snap(w);
-    if (keepsPromises(w) && worlds::checkWorld(w).empty()) return w;
+    if (keepsPromises(w) && checkWorld(w).ok()) return w;
   }
   return Status::failure(std::string("no ") + toString(kind) + " world keeping its promises was found for seed " + std::to_string(seed));
 }
@@ -258,24 +253,24 @@ std::string toToml(const WorldDef& w) {
   std::string t = "# Made by frob world generate; the loader reads it back as it was made.\n";
   t += "description = \"" + w.description + "\"\nsize = " + point(w.size) + "\nenclosed = " + (w.enclosed ? "true" : "false") +
        "\nseed = " + std::to_string(w.seed) + "\n\n[points]\n";
-  for (const worlds::Landmark& p : w.points) t += p.name + " = " + point(p.position) + "\n";
-  for (const worlds::RobotDef& r : w.robots) {
+  for (const Landmark& p : w.points) t += p.name + " = " + point(p.position) + "\n";
+  for (const RobotDef& r : w.robots) {
     t += "\n[[robot]]\nname = \"" + r.name + "\"\nstart = " + point(r.start.position) + "\nheading_deg = " + number(r.start.heading * 180.0 / pi) +
          "\n";
   }
   for (const WallDef& wall : w.walls) {
     t += "\n[[wall]]\n";
     switch (wall.shape) {
-      case worlds::WallShape::Segment:
+      case WallShape::Segment:
         t += "from = " + point(wall.points[0]) + "\nto = " + point(wall.points[1]) + "\n";
         break;
-      case worlds::WallShape::Rectangle:
+      case WallShape::Rectangle:
         t += "rect = [" + point(wall.points[0]) + ", " + point(wall.points[1]) + "]\n";
         break;
-      case worlds::WallShape::Circle:
+      case WallShape::Circle:
         t += "circle = " + point(wall.points[0]) + "\nradius = " + number(wall.radius) + "\n";
         break;
-      case worlds::WallShape::Polyline: {
+      case WallShape::Polyline: {
         t += "polyline = [";
         for (std::size_t i = 0; i < wall.points.size(); ++i) t += (i ? ", " : "") + point(wall.points[i]);
         t += std::string("]\n") + (wall.closed ? "closed = true\n" : "");
@@ -286,4 +281,4 @@ std::string toToml(const WorldDef& w) {
   return t;
 }
 
-}  // namespace frob::course
+}  // namespace frob::worlds

@@ -35,12 +35,13 @@ std::optional<Point2> findPoint(const WorldDef& w, const std::string& name) {
   return std::nullopt;
 }
 
-std::string checkWorld(const WorldDef& w) { return detail::checkWorld(w, detail::SourceLines{}); }
+Status checkWorld(const WorldDef& w) { return detail::checkWorld(w, detail::SourceLines{}); }
 
-std::string checkRunnable(const WorldDef& w) {
-  if (!w.robots.empty()) return "";
-  return "the world has no robot to drive: add one, e.g. a [[robot]] table with start = [1, 1] "
-         "(the world format: worlds/data/README.md)";
+Status checkRunnable(const WorldDef& w) {
+  if (!w.robots.empty()) return {};
+  return Status::failure(
+      "the world has no robot to drive: add one, e.g. a [[robot]] table with start = [1, 1] "
+      "(the world format: worlds/data/README.md)");
 }
 
 double distanceToWall(const Point2& p, const WallDef& wall) {
@@ -84,16 +85,17 @@ std::string fmt(double v) {
 bool finite(const Point2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
 
 // Empty if `wall` is well formed and inside the world, else what is wrong with which field.
-std::string checkWall(const WallDef& wall, const Vec2& size) {
+Status checkWall(const WallDef& wall, const Vec2& size) {
   const auto& v = wall.points;
   const std::size_t need = wall.shape == WallShape::Circle ? 1 : 2;
   if (v.size() < need || (wall.shape != WallShape::Polyline && v.size() != need))
-    return "points: expected " + std::to_string(need) + (wall.shape == WallShape::Polyline ? " or more" : "") + " points, got " +
-           std::to_string(v.size());
+    return Status::failure("points: expected " + std::to_string(need) + (wall.shape == WallShape::Polyline ? " or more" : "") + " points, got " +
+                           std::to_string(v.size()));
   for (const auto& p : v) {
-    if (!finite(p)) return "points: coordinates must be finite";
+    if (!finite(p)) return Status::failure("points: coordinates must be finite");
     if (p.x() < -1e-9 || p.y() < -1e-9 || p.x() > size.x() + 1e-9 || p.y() > size.y() + 1e-9)
-      return "points: (" + fmt(p.x()) + ", " + fmt(p.y()) + ") lies outside the world [0, " + fmt(size.x()) + "] x [0, " + fmt(size.y()) + "]";
+      return Status::failure("points: (" + fmt(p.x()) + ", " + fmt(p.y()) + ") lies outside the world [0, " + fmt(size.x()) + "] x [0, " +
+                             fmt(size.y()) + "]");
   }
   std::string error;
   std::size_t i = 0;  // the edge's first vertex
@@ -117,70 +119,75 @@ std::string checkWall(const WallDef& wall, const Vec2& size) {
           error = "radius: the pillar reaches outside the world";
         }
       });
-  return error;
+  if (error.empty()) return {};
+  return Status::failure(error);
 }
 
-std::string checkRobot(const RobotDef& r) {
+Status checkRobot(const RobotDef& r) {
   auto bad = [](double v, double lo, double hi) { return !(v >= lo && v <= hi); };  // NaN is bad too
-  if (bad(r.radius, 0.01, 5.0)) return "radius: must lie in [0.01, 5] m";
-  if (bad(r.density, 1e-3, 1e6)) return "density: must lie in [0.001, 1e6] kg/m^2";
-  if (r.bumpers < 1 || r.bumpers > 64) return "bumpers: must lie in [1, 64]";
+  if (bad(r.radius, 0.01, 5.0)) return Status::failure("radius: must lie in [0.01, 5] m");
+  if (bad(r.density, 1e-3, 1e6)) return Status::failure("density: must lie in [0.001, 1e6] kg/m^2");
+  if (r.bumpers < 1 || r.bumpers > 64) return Status::failure("bumpers: must lie in [1, 64]");
   const SonarDef& s = r.sonar;
-  if (s.angles.empty() && (s.count < 0 || s.count > 64)) return "sonar.count: must lie in [0, 64]";
-  if (s.angles.size() > 64) return "sonar.angles: at most 64 sonars";
+  if (s.angles.empty() && (s.count < 0 || s.count > 64)) return Status::failure("sonar.count: must lie in [0, 64]");
+  if (s.angles.size() > 64) return Status::failure("sonar.angles: at most 64 sonars");
   for (double a : s.angles)
-    if (!std::isfinite(a)) return "sonar.angles: must be finite";
-  if (s.rays < 1 || s.rays > 64) return "sonar.rays: must lie in [1, 64]";
-  if (bad(s.cone, 0.0, pi)) return "sonar.cone: must lie in [0, 180] degrees";
-  if (bad(s.minRange, 0.0, 100.0)) return "sonar.min_range: must lie in [0, 100] m";
-  if (bad(s.maxRange, s.minRange, 100.0) || s.maxRange <= s.minRange) return "sonar.max_range: must exceed min_range and be at most 100 m";
-  if (bad(s.specularCutoff, 0.0, pi / 2)) return "sonar.specular_cutoff: must lie in [0, 90] degrees";
-  if (bad(s.noise, 0.0, 1.0)) return "sonar.noise: must lie in [0, 1]";
+    if (!std::isfinite(a)) return Status::failure("sonar.angles: must be finite");
+  if (s.rays < 1 || s.rays > 64) return Status::failure("sonar.rays: must lie in [1, 64]");
+  if (bad(s.cone, 0.0, pi)) return Status::failure("sonar.cone: must lie in [0, 180] degrees");
+  if (bad(s.minRange, 0.0, 100.0)) return Status::failure("sonar.min_range: must lie in [0, 100] m");
+  if (bad(s.maxRange, s.minRange, 100.0) || s.maxRange <= s.minRange)
+    return Status::failure("sonar.max_range: must exceed min_range and be at most 100 m");
+  if (bad(s.specularCutoff, 0.0, pi / 2)) return Status::failure("sonar.specular_cutoff: must lie in [0, 90] degrees");
+  if (bad(s.noise, 0.0, 1.0)) return Status::failure("sonar.noise: must lie in [0, 1]");
   const OdometryDef& o = r.odometry;
-  if (bad(o.translation, 0.0, 10.0)) return "odometry.translation: must lie in [0, 10]";
-  if (bad(o.heading, 0.0, 10.0)) return "odometry.heading: must lie in [0, 10]";
-  if (bad(o.turn, 0.0, 10.0)) return "odometry.turn: must lie in [0, 10]";
+  if (bad(o.translation, 0.0, 10.0)) return Status::failure("odometry.translation: must lie in [0, 10]");
+  if (bad(o.heading, 0.0, 10.0)) return Status::failure("odometry.heading: must lie in [0, 10]");
+  if (bad(o.turn, 0.0, 10.0)) return Status::failure("odometry.turn: must lie in [0, 10]");
   const DriveDef& d = r.drive;
-  if (bad(d.maxSpeed, 0.0, 20.0)) return "drive.max_speed: must lie in [0, 20] m/s";
-  if (bad(d.maxTurnRate, 0.0, 50.0)) return "drive.max_turn_rate: must lie in [0, 50] rad/s";
-  if (bad(d.acceleration, 1e-6, 1e3)) return "drive.acceleration: must lie in (0, 1000] m/s^2";
-  if (bad(d.turnAcceleration, 1e-6, 1e4)) return "drive.turn_acceleration: must lie in (0, 10000] rad/s^2";
-  if (!finite(r.start.position) || !std::isfinite(r.start.heading)) return "start: must be finite";
+  if (bad(d.maxSpeed, 0.0, 20.0)) return Status::failure("drive.max_speed: must lie in [0, 20] m/s");
+  if (bad(d.maxTurnRate, 0.0, 50.0)) return Status::failure("drive.max_turn_rate: must lie in [0, 50] rad/s");
+  if (bad(d.acceleration, 1e-6, 1e3)) return Status::failure("drive.acceleration: must lie in (0, 1000] m/s^2");
+  if (bad(d.turnAcceleration, 1e-6, 1e4)) return Status::failure("drive.turn_acceleration: must lie in (0, 10000] rad/s^2");
+  if (!finite(r.start.position) || !std::isfinite(r.start.heading)) return Status::failure("start: must be finite");
   return {};
 }
 
 }  // namespace
 
-std::string checkWorld(const WorldDef& w, const SourceLines& at) {
+Status checkWorld(const WorldDef& w, const SourceLines& at) {
   if (!(w.size.x() > 0 && w.size.y() > 0 && w.size.x() <= kMaxSize && w.size.y() <= kMaxSize))
-    return where(at, at.size) + "size: width and height must lie in (0, 1000] m, got [" + fmt(w.size.x()) + ", " + fmt(w.size.y()) + "]";
+    return Status::failure(where(at, at.size) + "size: width and height must lie in (0, 1000] m, got [" + fmt(w.size.x()) + ", " + fmt(w.size.y()) +
+                           "]");
   for (std::size_t i = 0; i < w.walls.size(); ++i)
-    if (auto e = checkWall(w.walls[i], w.size); !e.empty()) return where(at, lineAt(at.walls, i)) + "wall[" + std::to_string(i) + "]." + e;
+    if (Status e = checkWall(w.walls[i], w.size); !e)
+      return Status::failure(where(at, lineAt(at.walls, i)) + "wall[" + std::to_string(i) + "]." + e.error());
   for (std::size_t i = 0; i < w.points.size(); ++i) {
     const Point2& p = w.points[i].position;
     if (!finite(p) || p.x() < 0 || p.y() < 0 || p.x() > w.size.x() || p.y() > w.size.y())
-      return where(at, lineAt(at.points, i)) + "points." + w.points[i].name + ": lies outside the world";
+      return Status::failure(where(at, lineAt(at.points, i)) + "points." + w.points[i].name + ": lies outside the world");
   }
-  if (w.robots.size() > kMaxRobots) return where(at, 0) + "robot: at most 1000 robots";
+  if (w.robots.size() > kMaxRobots) return Status::failure(where(at, 0) + "robot: at most 1000 robots");
   for (std::size_t i = 0; i < w.robots.size(); ++i) {
     const RobotDef& r = w.robots[i];
     const std::string field = where(at, lineAt(at.robots, i)) + "robot[" + std::to_string(i) + "].";
-    if (auto e = checkRobot(r); !e.empty()) return field + e;
+    if (Status e = checkRobot(r); !e) return Status::failure(field + e.error());
     const Point2& p = r.start.position;
     if (p.x() - r.radius < 0 || p.y() - r.radius < 0 || p.x() + r.radius > w.size.x() || p.y() + r.radius > w.size.y())
-      return field + "start: the robot (radius " + fmt(r.radius) + " m) reaches outside the world";
+      return Status::failure(field + "start: the robot (radius " + fmt(r.radius) + " m) reaches outside the world");
     for (std::size_t k = 0; k < w.walls.size(); ++k)
       if (distanceToWall(p, w.walls[k]) < r.radius)
-        return field + "start: the robot (radius " + fmt(r.radius) + " m) is inside or touching wall[" + std::to_string(k) + "]";
+        return Status::failure(field + "start: the robot (radius " + fmt(r.radius) + " m) is inside or touching wall[" + std::to_string(k) + "]");
     for (std::size_t k = 0; k < i; ++k)
       if ((w.robots[k].start.position - p).norm() < w.robots[k].radius + r.radius)
-        return field + "start: the robot overlaps robot[" + std::to_string(k) + "]";
+        return Status::failure(field + "start: the robot overlaps robot[" + std::to_string(k) + "]");
   }
   for (std::size_t i = 0; i < w.keys.size(); ++i) {
     const KeyEventDef& k = w.keys[i];
     const std::string field = where(at, lineAt(at.keys, i)) + "key[" + std::to_string(i) + "].";
-    if (!(k.time >= 0 && k.time < 1e7)) return field + "time: must lie in [0, 1e7) s";
-    if (k.robot < -1 || k.robot >= static_cast<int>(w.robots.size())) return field + "robot: no robot with index " + std::to_string(k.robot);
+    if (!(k.time >= 0 && k.time < 1e7)) return Status::failure(field + "time: must lie in [0, 1e7) s");
+    if (k.robot < -1 || k.robot >= static_cast<int>(w.robots.size()))
+      return Status::failure(field + "robot: no robot with index " + std::to_string(k.robot));
   }
   return {};
 }

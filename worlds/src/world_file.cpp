@@ -27,7 +27,7 @@ class Parser : TomlReader {
     toml::table root;
     if (!TomlReader::parse(text, root)) return failed(error());
     if (!readWorld(root)) return failed(error());
-    if (auto e = detail::checkWorld(world_, lines_); !e.empty()) return failed(e);
+    if (Status s = detail::checkWorld(world_, lines_); !s) return s;
     return std::move(world_);
   }
 

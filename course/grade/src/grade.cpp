@@ -1,7 +1,7 @@
-#include "frob/course/grade.hpp"
+#include "frob/grade/grade.hpp"
 
-#include "frob/course/diagnose.hpp"
-#include "frob/course/judge.hpp"
+#include "frob/grade/judge.hpp"
+#include "frob/run/diagnose.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/world_file.hpp"
 
@@ -166,8 +166,8 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
     CheckGrade cg{.name = check.name, .points = check.points, .visibility = check.visibility};
     const std::vector<std::uint64_t> seeds = seedsOf(check, def.secret);
     for (const WorldRef& w : worldsOf(check, def.secret)) {
-      auto [known, added] = worldsByName.try_emplace(w.name, Status());
-      if (added) known->second = loadWorldRef(w);
+      auto known = worldsByName.find(w.name);
+      if (known == worldsByName.end()) known = worldsByName.emplace(w.name, loadWorldRef(w)).first;
       const Result<worlds::WorldDef>& world = known->second;
       for (std::size_t s = 0; s < std::max<std::size_t>(seeds.size(), 1); ++s) {
         RunGrade& r = cg.runs.emplace_back(RunGrade{.world = w.name});
@@ -180,7 +180,7 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
           r.reason = "the world could not be loaded: " + world.error();
           continue;
         }
-        Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start({compiled.value().module}, {compiled.value().source}, def.isolation);
+        Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start({compiled.value().module}, {compiled.value().source}, def.host);
         if (!host) {
           r.reason = host.error();
           continue;
@@ -236,7 +236,7 @@ Result<Replay> replay(const fs::path& log) {
       robots = std::stoull(value);
     else if (key == "generated") {
       const std::size_t gap = value.find(' ');
-      const std::optional<WorldKind> kind = worldKind(value.substr(0, gap));
+      const std::optional<worlds::WorldKind> kind = worlds::worldKind(value.substr(0, gap));
       if (!kind || gap == std::string::npos) return bad("line '" + line + "'");
       generated = WorldRef{.generated = kind, .worldSeed = std::stoull(value.substr(gap + 1))};
     } else if (key == "failure" || key == "returned") {

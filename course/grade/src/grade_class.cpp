@@ -1,7 +1,7 @@
 // Grading a class: its submissions found and sharded, graded a few at a time; and the pieces a
 // report needs around one grade (its assignment's rubric, a film of a run).
 #include "frob/base/layout.hpp"
-#include "frob/course/grade.hpp"
+#include "frob/grade/grade.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/world_file.hpp"
 
@@ -18,7 +18,7 @@ std::vector<Grade> gradeAll(GradeDef def, const std::vector<fs::path>& submissio
                             const std::function<void(std::size_t, std::size_t)>& progress) {
   jobs = std::clamp(jobs, 1, std::max<int>(1, static_cast<int>(submissions.size())));
   // Each run is two processes that take turns; spinning pays only while each has a core of its own.
-  if (2 * jobs > static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))) def.isolation.spinNanoseconds = 0;
+  if (2 * jobs > static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))) def.host.spinNanoseconds = 0;
   std::vector<Grade> grades(submissions.size());
   std::atomic<std::size_t> next{0};
   std::size_t done = 0;
@@ -88,13 +88,13 @@ Status filmRun(const GradeDef& def, const fs::path& submission, const std::strin
   if (!world) return world.status();
   Result<CompiledController> compiled = compileControllerFile(submission, def.compiler);
   if (!compiled) return compiled.status();
-  Result<LoadedController> controller = describeInHost(compiled.value(), def.isolation);
+  Result<LoadedController> controller = describeInHost(compiled.value(), def.host);
   if (!controller) return controller.status();
   Result<Summary> s = runSession({.world = world.value(),
                                   .worldName = run.world,
                                   .options = {.dt = def.rubric.dt, .seed = run.seed},
                                   .controllers = {controller.value()},
-                                  .isolation = def.isolation,
+                                  .host = def.host,
                                   .seconds = check->seconds,
                                   .outputs = outputs});
   if (!s) return s.status();

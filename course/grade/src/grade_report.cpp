@@ -8,7 +8,7 @@
 // - JUnit XML: the Jenkins/Surefire schema junit-10.xsd (<testsuite> needs name, tests, failures, errors;
 //   time with at most three decimals); XML 1.0 forbids most control characters, even escaped.
 
-#include "frob/course/grade_report.hpp"
+#include "frob/grade/grade_report.hpp"
 
 #include "frob/render/output_file.hpp"
 #include "grade_files.hpp"

@@ -1,6 +1,6 @@
 // The class gradebook: RFC 4180 CSV (fields with a comma, quote, CR or LF quoted, quotes doubled,
 // records ended by CRLF), one row per submission; and the merge of the shards' gradebooks.
-#include "frob/course/grade_report.hpp"
+#include "frob/grade/grade_report.hpp"
 #include "grade_files.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "frob/course/gradescope.hpp"
+#include "frob/grade/gradescope.hpp"
 
 #include "frob/base/layout.hpp"
 #include "frob/render/output_file.hpp"

@@ -1,7 +1,7 @@
-#include "frob/course/judge.hpp"
+#include "frob/grade/judge.hpp"
 
-#include "free_space.hpp"
-#include "text.hpp"
+#include "frob/run/format.hpp"
+#include "frob/worlds/free_space.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -164,7 +164,7 @@ class Judge {
   std::string collisions(const Track& t) {
     if (static_cast<int>(t.contacts.size()) <= c_.count) return "";
     const auto& [when, where] = t.contacts[static_cast<std::size_t>(c_.count)];
-    const WallIndex walls(run_.walls, run_.size, 1.0);
+    const worlds::WallIndex walls(run_.walls, run_.size, 1.0);
     const char* what = walls.distance(where) <= t.radius + 0.05 ? "a wall" : "another robot";
     std::string why = format("touched %s at %s at %s", what, secondsText(when).c_str(), at(where).c_str());
     if (c_.count > 0 || t.contacts.size() > 1) why += format(" (%zu contacts; %d allowed)", t.contacts.size(), c_.count);
@@ -172,7 +172,7 @@ class Judge {
   }
 
   std::string clearance(const Track& t) {
-    const WallIndex walls(run_.walls, run_.size, t.radius + c_.distance + 1.0);
+    const worlds::WallIndex walls(run_.walls, run_.size, t.radius + c_.distance + 1.0);
     for (std::size_t k = 0; k < t.path.size(); ++k) {
       const double gap = walls.distance(t.path[k]) - t.radius;
       if (gap < c_.distance - 1e-9) {
@@ -184,7 +184,7 @@ class Judge {
   }
 
   std::string wallDistance(const Track& t) {
-    const WallIndex walls(run_.walls, run_.size, t.radius + c_.distance + c_.tolerance + 1.0);
+    const worlds::WallIndex walls(run_.walls, run_.size, t.radius + c_.distance + c_.tolerance + 1.0);
     std::size_t counted = 0, within = 0, worst = 0;
     double worstOff = -1;
     for (std::size_t k = 0; k < t.path.size(); ++k) {
@@ -202,7 +202,7 @@ class Judge {
   }
 
   std::string coverage(const Track& t) {
-    const FreeGrid grid(run_.walls, run_.size, t.radius, c_.cell);
+    const worlds::FreeGrid grid(run_.walls, run_.size, t.radius, c_.cell);
     const std::vector<bool> reachable = grid.reachable(grid.cellOf(t.path.front()));
     std::vector<bool> visited(reachable.size(), false);
     for (const Point2& p : t.path) visited[grid.cellOf(p)] = true;
@@ -227,7 +227,7 @@ class Judge {
     const double travelled = lengthUpTo(t.path, *k);
     const double direct = (*g - t.path.front()).norm();
     if (c_.kind == Kind::PathRatio) {
-      const double shortest = FreeGrid(run_.walls, run_.size, t.radius, 0.05).shortestPath(t.path.front(), *g);
+      const double shortest = worlds::FreeGrid(run_.walls, run_.size, t.radius, 0.05).shortestPath(t.path.front(), *g);
       if (travelled <= c_.ratio * shortest + 1e-9) return "";
       return format("drove %.2f m to %s; the shortest path is %.2f m and at most %.2f× that (%.2f m) is allowed", travelled, name.c_str(), shortest,
                     c_.ratio, c_.ratio * shortest);

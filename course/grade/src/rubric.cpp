@@ -1,4 +1,4 @@
-#include "frob/course/rubric.hpp"
+#include "frob/grade/rubric.hpp"
 
 #include "frob/worlds/fnv.hpp"
 #include "frob/worlds/registry.hpp"
@@ -125,10 +125,10 @@ class RubricReader : worlds::TomlReader {
     GeneratedWorlds gen;
     std::string kind;
     const toml::node* k = g->get("kind");
-    if (k == nullptr) return fail(*n, field + "generated.kind", "missing (one of " + worldKindNames() + ")");
+    if (k == nullptr) return fail(*n, field + "generated.kind", "missing (one of " + worlds::worldKindNames() + ")");
     if (!string(*k, field + "generated.kind", kind)) return false;
-    if (!worldKind(kind)) return fail(*k, field + "generated.kind", "unknown kind '" + kind + "' (one of " + worldKindNames() + ")");
-    gen.kind = *worldKind(kind);
+    if (!worlds::worldKind(kind)) return fail(*k, field + "generated.kind", "unknown kind '" + kind + "' (one of " + worlds::worldKindNames() + ")");
+    gen.kind = *worlds::worldKind(kind);
     if (!seedList(*g, "seeds", field + "generated.seeds", gen.seeds) || !optInteger(*g, "secret", field + "generated.secret", 0, 1000, gen.secret))
       return false;
     if (gen.seeds.empty() && gen.secret == 0) return fail(*n, field + "generated", "give seeds, or a number of secret ones");
@@ -288,10 +288,10 @@ std::vector<WorldRef> worldsOf(const Check& check, const std::string& secret) {
 }
 
 Result<worlds::WorldDef> loadWorldRef(const WorldRef& w) {
-  if (w.generated) return generateWorld(*w.generated, w.worldSeed);
+  if (w.generated) return worlds::generateWorld(*w.generated, w.worldSeed);
   Result<worlds::WorldDef> loaded = w.file.empty() ? worlds::loadReferenceWorld(w.name) : worlds::loadWorld(w.file);
   if (!loaded) return Status::failure(loaded.error());
-  if (std::string e = worlds::checkRunnable(*loaded); !e.empty()) return Status::failure(w.name + ": " + e);
+  if (Status s = worlds::checkRunnable(*loaded); !s) return Status::failure(w.name + ": " + s.error());
   return *loaded;
 }
 

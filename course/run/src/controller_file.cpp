@@ -1,10 +1,10 @@
-#include "frob/course/controller_file.hpp"
+#include "frob/run/controller_file.hpp"
 
 #include "controller_setup.inc"
 #include "frob/base/layout.hpp"
 #include "frob/worlds/fnv.hpp"
-#include "jail.hpp"
 #include "load_error.hpp"
+#include "sandboxed.hpp"
 
 #include <cxxabi.h>
 #include <dlfcn.h>
@@ -80,7 +80,7 @@ std::unique_lock<std::mutex> lockModule(const fs::path& module) {
   return std::unique_lock<std::mutex>(m);
 }
 
-// The compiler on PATH, as an absolute path for frob-jail.
+// The compiler on PATH, as an absolute path for frob-sandbox.
 std::string onPath(const std::string& program) {
   if (program.find('/') != std::string::npos) return program;
   for (const char* dir : {"/usr/local/bin", "/usr/bin", "/bin"}) {
@@ -103,7 +103,7 @@ CompilerSetup compilerSetup(bool checked) {
   for (std::string f; std::getline(flags, f);) {
     if (!f.empty()) s.flags.push_back(f);
   }
-  // frob's headers, seen where the precompiled header saw them (see course/CMakeLists.txt).
+  // frob's headers, seen where the precompiled header saw them (see course/run/CMakeLists.txt).
   s.flags.insert(s.flags.end(), {"-ivfsoverlay", files.headerOverlay.string(), std::string("-I") + kSdkIncludeDir});
   s.reads = {files.headerOverlay.string(), files.includeDir.string()};
   // A Task called and not awaited does nothing: Task's [[nodiscard]] says so, and here it stops the build.
@@ -191,21 +191,21 @@ Result<CompiledController> compileControllerFile(const fs::path& source, const C
   if (::mkdtemp(build.data()) == nullptr) return Status::failure("cannot make a build folder in '" + setup.cacheDir.string() + "'");
   const fs::path absolute = fs::absolute(source);
   const fs::path partial = fs::path(build) / "module.so";
-  JailDef jail{.command = {onPath(setup.compiler)},
-               .limits = {.cpuSeconds = static_cast<std::uint64_t>(setup.seconds),
-                          .memoryBytes = setup.memoryBytes,
-                          .fileBytes = 512ULL << 20,
-                          .openFiles = 256},
-               .files = {.read = compilerReads(setup, pch), .write = {build}, .execute = {"/usr", "/bin"}},
-               .cwd = fs::current_path().string(),  // so that its messages name the file as it was given
-               .env = {"PATH=/usr/bin:/bin", "TMPDIR=" + build},
-               .dropUser = false,
-               .noNetwork = true};
-  jail.files.read.push_back(absolute.parent_path().string());
-  jail.command.insert(jail.command.end(), setup.flags.begin(), setup.flags.end());
-  if (pch) jail.command.insert(jail.command.end(), {"-include-pch", setup.precompiledHeader});
-  jail.command.insert(jail.command.end(), {"-shared", "-o", partial.string(), source.string()});
-  Result<JailedRun> run = runJailed(std::move(jail), setup.seconds, 1 << 20);
+  SandboxedDef program{.command = {onPath(setup.compiler)},
+                       .limits = {.cpuSeconds = static_cast<std::uint64_t>(setup.seconds),
+                                  .memoryBytes = setup.memoryBytes,
+                                  .fileBytes = 512ULL << 20,
+                                  .openFiles = 256},
+                       .files = {.read = compilerReads(setup, pch), .write = {build}, .execute = {"/usr", "/bin"}},
+                       .cwd = fs::current_path().string(),  // so that its messages name the file as it was given
+                       .env = {"PATH=/usr/bin:/bin", "TMPDIR=" + build},
+                       .dropUser = false,
+                       .noNetwork = true};
+  program.files.read.push_back(absolute.parent_path().string());
+  program.command.insert(program.command.end(), setup.flags.begin(), setup.flags.end());
+  if (pch) program.command.insert(program.command.end(), {"-include-pch", setup.precompiledHeader});
+  program.command.insert(program.command.end(), {"-shared", "-o", partial.string(), source.string()});
+  Result<SandboxedRun> run = runSandboxed(std::move(program), setup.seconds, 1 << 20);
   const auto cleanUp = [&] { fs::remove_all(build, ec); };
   if (!run) return cleanUp(), run.status();
   show(run.value().output);

@@ -1,7 +1,7 @@
-#include "frob/course/diagnose.hpp"
+#include "frob/run/diagnose.hpp"
 
-#include "free_space.hpp"
-#include "text.hpp"
+#include "frob/run/format.hpp"
+#include "frob/worlds/free_space.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -39,7 +39,7 @@ struct Watch {
 
 struct Diagnosis::Impl {
   std::vector<worlds::WallDef> walls;
-  WallIndex index;
+  worlds::WallIndex index;
   double dt;
   std::vector<Watch> robots;
   Impl(std::vector<worlds::WallDef> w, const Vec2& size, double step) : walls(std::move(w)), index(walls, size, 1.0), dt(step) {}

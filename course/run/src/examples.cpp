@@ -1,4 +1,4 @@
-#include "frob/course/examples.hpp"
+#include "frob/run/examples.hpp"
 
 #include "frob/base/layout.hpp"
 

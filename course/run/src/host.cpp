@@ -1,10 +1,10 @@
-#include "frob/course/isolation.hpp"
+#include "frob/run/host.hpp"
 
 #include "frob/base/layout.hpp"
 #include "frob/sandbox/channel.hpp"
 #include "frob/sandbox/wire.hpp"
-#include "jail.hpp"
 #include "load_error.hpp"
+#include "sandboxed.hpp"
 #include "sanitizer_report.hpp"
 
 #include <fcntl.h>
@@ -76,12 +76,12 @@ std::uint64_t residentBytes(pid_t pid) {
 }  // namespace
 
 struct ControllerHost::Impl {
-  IsolationDef def;
+  HostDef def;
   fs::path scratch;
   sandbox::Channel channel;
-  Jailed process;
-  int wake = -1;    // eventfd the host writes when it answers and we sleep
-  int output = -1;  // read end of its stdout and stderr
+  Sandboxed process;
+  sandbox::Fd wake;    // eventfd the host writes when it answers and we sleep
+  sandbox::Fd output;  // read end of its stdout and stderr
   std::uint64_t outputSeen = 0;
   std::string outputTail;  // the last of what it printed, where a failed assertion's message is
   std::vector<std::string> sources;
@@ -96,8 +96,6 @@ struct ControllerHost::Impl {
     process.kill();
     process.wait();
     drainOutput();
-    if (wake >= 0) ::close(wake);
-    if (output >= 0) ::close(output);
     std::error_code ec;
     if (!scratch.empty()) fs::remove_all(scratch, ec);
   }
@@ -107,7 +105,7 @@ struct ControllerHost::Impl {
   // Passes on what the host printed, up to the limit.
   void drainOutput() {
     char buf[1 << 16];
-    for (ssize_t n; output >= 0 && (n = ::read(output, buf, sizeof buf)) > 0;) {
+    for (ssize_t n; output.valid() && (n = ::read(output.get(), buf, sizeof buf)) > 0;) {
       const std::uint64_t room = def.outputBytes > outputSeen ? def.outputBytes - outputSeen : 0;
       const std::string_view text(buf, std::min<std::uint64_t>(room, static_cast<std::uint64_t>(n)));
       outputSeen += static_cast<std::uint64_t>(n);
@@ -162,8 +160,8 @@ struct ControllerHost::Impl {
     }
   }
 
-  // Waits up to `limit` seconds for the host's reply `seq`; "" or why not (the host is then killed).
-  std::string await(std::uint32_t seq, double limit, bool starting) {
+  // Waits up to `limit` seconds for the host's reply `seq`; fails with why not (the host is then killed).
+  Status await(std::uint32_t seq, double limit, bool starting) {
     sandbox::Doorbell& bell = header().reply;
     if (sandbox::spinUntil(bell, seq, def.spinNanoseconds)) return {};
     const Clock::time_point start = Clock::now();
@@ -188,12 +186,12 @@ struct ControllerHost::Impl {
         }
         break;
       }
-      pollfd fds[3] = {{wake, POLLIN, 0}, {output, POLLIN, 0}, {process.pidfd(), POLLIN, 0}};
+      pollfd fds[3] = {{wake.get(), POLLIN, 0}, {output.get(), POLLIN, 0}, {process.pidfd(), POLLIN, 0}};
       const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count() + 1;
       const int ready = ::poll(fds, 3, static_cast<int>(std::min<long long>(ms, 20)));
       if (fds[0].revents != 0) {
         std::uint64_t count = 0;
-        [[maybe_unused]] const ssize_t n = ::read(wake, &count, sizeof count);
+        [[maybe_unused]] const ssize_t n = ::read(wake.get(), &count, sizeof count);
       }
       if (fds[1].revents != 0) drainOutput();
       if (fds[2].revents != 0) {
@@ -210,12 +208,13 @@ struct ControllerHost::Impl {
       }
     }
     bell.sleeping.store(0, std::memory_order_relaxed);
-    if (!why.empty()) process.kill();
-    return why;
+    if (why.empty()) return {};
+    process.kill();
+    return Status::failure(why);
   }
 
-  // The file the host's guard says a controller was refused, as a reason; "" when none was.
-  std::string refusal() const {
+  // Fails with the file the host's refusal notes say a controller was refused, if it was.
+  Status refusal() const {
     const sandbox::Header& h = header();
     if (h.deniedPath[0] == 0) return {};
     std::string path;
@@ -223,12 +222,12 @@ struct ControllerHost::Impl {
       const char c = h.deniedPath[i];
       path += (c >= 32 && c < 127) ? c : '?';
     }
-    return std::string("tried to ") + (h.deniedWrite != 0 ? "write " : "read ") + path + " (not allowed)";
+    return Status::failure(std::string("tried to ") + (h.deniedWrite != 0 ? "write " : "read ") + path + " (not allowed)");
   }
 };
 
 Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<fs::path>& modules, const std::vector<std::string>& sources,
-                                                              IsolationDef def) {
+                                                              HostDef def) {
   auto impl = std::make_unique<Impl>();
   impl->def = std::move(def);
   impl->sources = sources;
@@ -250,43 +249,44 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
   }
   if (root && ::chown(scratch.c_str(), kNobody, kNobody) != 0) return failure("cannot hand " + scratch + " to nobody");
 
-  if (std::string e = impl->channel.create(kSetupBytes); !e.empty()) return failure(e);
+  if (Status s = impl->channel.create(kSetupBytes); !s) return failure(s.error());
   impl->header().spinNanoseconds = impl->def.spinNanoseconds;
-  impl->wake = ::eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK);
-  int out[2];
-  if (impl->wake < 0 || ::pipe2(out, O_CLOEXEC) != 0) return failure(std::strerror(errno));
-  impl->output = out[0];
-  ::fcntl(out[0], F_SETFL, O_NONBLOCK);
+  impl->wake.reset(::eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK));
+  if (!impl->wake.valid()) return failure(std::string("eventfd: ") + std::strerror(errno));
+  Result<sandbox::Pipe> out = sandbox::openPipe("its output's pipe");
+  if (!out) return failure(out.error());
+  impl->output = std::move(out.value().read);
+  ::fcntl(impl->output.get(), F_SETFL, O_NONBLOCK);
 
-  const IsolationDef& d = impl->def;
-  JailDef jail{.command = command,
-               .limits = {.cpuSeconds = static_cast<std::uint64_t>(std::ceil(d.runSeconds)),
-                          .memoryBytes = d.memoryBytes,
-                          .fileBytes = d.fileBytes,
-                          .openFiles = 64},
-               .files = {.read = {"/usr", "/lib", "/lib64", "/etc/ld.so.cache"}, .write = {scratch}},
-               .cwd = scratch,
-               .fds = {-1, out[1], out[1], impl->channel.fd(), impl->wake}};
+  const HostDef& d = impl->def;
+  SandboxedDef program{.command = command,
+                       .limits = {.cpuSeconds = static_cast<std::uint64_t>(std::ceil(d.runSeconds)),
+                                  .memoryBytes = d.memoryBytes,
+                                  .fileBytes = d.fileBytes,
+                                  .openFiles = 64},
+                       .files = {.read = {"/usr", "/lib", "/lib64", "/etc/ld.so.cache"}, .write = {scratch}},
+                       .cwd = scratch,
+                       .fds = {-1, out.value().write.get(), out.value().write.get(), impl->channel.fd(), impl->wake.get()}};
   if (d.checked) {
     // The sanitizers' runtime (unless this program has its own), reporting into the scratch folder.
-    jail.env = sanitizerEnvironment(impl->scratch);
+    program.env = sanitizerEnvironment(impl->scratch);
     if (!kSanitizedBuild) {
       if (!fs::exists(sanitizerRuntime()))
         return failure("a checked controller needs clang's AddressSanitizer runtime " + sanitizerRuntime() + " (Debian package libclang-rt-16-dev)");
-      jail.env.push_back("LD_PRELOAD=" + sanitizerRuntime());
+      program.env.push_back("LD_PRELOAD=" + sanitizerRuntime());
     }
   } else if constexpr (kSanitizedBuild) {
     // Crashes are left to the kernel so that they read as the signals they are.
     // Real stacks (no fake ones for use-after-return), so that an overflow faults next to the stack.
-    jail.env = {
+    program.env = {
         "ASAN_OPTIONS=detect_leaks=0:handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_abort=0:symbolize=0:"
         "detect_stack_use_after_return=0"};
   }
   // AddressSanitizer reserves terabytes of address space: then memory is watched by its size instead of limited.
   impl->memoryLimited = !kSanitizedBuild && !d.checked;
-  if (!impl->memoryLimited) jail.limits.memoryBytes = 0, jail.files.read.push_back("/proc");
-  Result<Jailed> process = Jailed::start(jail);
-  ::close(out[1]);
+  if (!impl->memoryLimited) program.limits.memoryBytes = 0, program.files.read.push_back("/proc");
+  Result<Sandboxed> process = Sandboxed::start(program);
+  out.value().write.reset();  // the host holds its own copy
   if (!process) return failure(process.error());
   impl->process = std::move(process.value());
   impl->layers = impl->process.layers();
@@ -297,8 +297,8 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
     const std::uint32_t m = impl->header().robot;
     return Status::failure("the controller " + (m < sources.size() ? "'" + sources[m] + "' " : "") + "failed: " + why);
   };
-  if (std::string why = impl->await(1, d.startSeconds, true); !why.empty()) return named(why + when(0.0, impl->header().activity));
-  if (std::string why = impl->refusal(); !why.empty()) return named(why + when(0.0, Activity::Loading));
+  if (Status s = impl->await(1, d.startSeconds, true); !s) return named(s.error() + when(0.0, impl->header().activity));
+  if (Status s = impl->refusal(); !s) return named(s.error() + when(0.0, Activity::Loading));
   std::vector<std::byte> setup(impl->channel.setup().begin(), impl->channel.setup().end());
   sandbox::Reader r(setup);
   std::uint32_t layerCount = 0, moduleCount = 0;
@@ -342,10 +342,10 @@ std::vector<std::string> ControllerHost::notes() const {
 namespace {
 
 // Controllers sampled in the host: each step the frames go out and the replies come back.
-class IsolatedDriver final : public worlds::ControllerDriver {
+class HostDriver final : public worlds::ControllerDriver {
  public:
-  IsolatedDriver(std::shared_ptr<ControllerHost> owner, ControllerHost::Impl& host, const worlds::Simulation& sim,
-                 const std::vector<std::size_t>& modules, bool pictures)
+  HostDriver(std::shared_ptr<ControllerHost> owner, ControllerHost::Impl& host, const worlds::Simulation& sim,
+             const std::vector<std::size_t>& modules, bool pictures)
       : owner_(std::move(owner)),
         host_(host),
         sim_(sim),
@@ -357,8 +357,8 @@ class IsolatedDriver final : public worlds::ControllerDriver {
     FROB_ASSERT(!host.driving, "a controller host drives one run");
     FROB_ASSERT(modules.size() == 1 || modules.size() == n, "give one module per robot, or one for all");
     host.driving = true;
-    if (std::string e = host.channel.resize(n, kFrameBytes, kReplyBytes); !e.empty()) {
-      lost_ = e;
+    if (Status s = host.channel.resize(n, kFrameBytes, kReplyBytes); !s) {
+      lost_ = s;
       return;
     }
     sandbox::Writer w(host.channel.setup());
@@ -375,13 +375,13 @@ class IsolatedDriver final : public worlds::ControllerDriver {
     h.command = sandbox::Command::Build;
     sandbox::ring(h.request, host.sequence, -1);
     lost_ = host.await(++host.sequence, host.def.startSeconds, true);
-    if (lost_.empty()) lost_ = host.refusal();
-    if (!lost_.empty()) lost_ += when(0.0, host.header().activity);
+    if (lost_) lost_ = host.refusal();
+    if (!lost_) lost_ = Status::failure(lost_.error() + when(0.0, host.header().activity));
   }
 
   void decide(const Instant& now, std::span<Wheels> wheels, std::span<Picture> pictures,
               std::vector<std::pair<std::size_t, std::string>>& failed) override {
-    if (!lost_.empty()) return fail(failed, lost_);
+    if (!lost_) return fail(failed, lost_.error());
     if (dead_) return;
     sandbox::Header& h = host_.header();
     for (std::uint32_t i = 0; i < wheels.size(); ++i) {
@@ -392,15 +392,15 @@ class IsolatedDriver final : public worlds::ControllerDriver {
     h.command = sandbox::Command::Step;
     h.step = now.step;
     sandbox::ring(h.request, host_.sequence, -1);
-    if (std::string why = host_.await(++host_.sequence, host_.def.stepSeconds, false); !why.empty()) {
+    if (Status s = host_.await(++host_.sequence, host_.def.stepSeconds, false); !s) {
       char at[48];
       std::snprintf(at, sizeof at, " at t = %.2f s", now.time);
-      return fail(failed, why + at);
+      return fail(failed, s.error() + at);
     }
-    if (std::string why = host_.refusal(); !why.empty()) {
+    if (Status s = host_.refusal(); !s) {
       char at[48];
       std::snprintf(at, sizeof at, " at t = %.2f s", now.time);
-      return fail(failed, why + at);
+      return fail(failed, s.error() + at);
     }
     for (std::uint32_t i = 0; i < wheels.size(); ++i) {
       if (stopped_[i]) continue;
@@ -421,7 +421,7 @@ class IsolatedDriver final : public worlds::ControllerDriver {
     const std::uint32_t robot = host_.header().robot;
     failed.emplace_back(robot < stopped_.size() ? robot : 0, why);
     stopped_.assign(stopped_.size(), true);
-    lost_.clear();
+    lost_ = {};
     dead_ = true;
     host_.process.kill();
   }
@@ -473,7 +473,7 @@ class IsolatedDriver final : public worlds::ControllerDriver {
   std::vector<Timeline> timelines_;
   std::vector<std::int64_t> started_;  // tasks started so far, per robot: the next one's id
   std::vector<bool> stopped_;
-  std::string lost_;  // why the host could not build the controllers, reported at the first step
+  Status lost_;  // why the host could not build the controllers, reported at the first step
   bool dead_ = false;
   std::int64_t steps_ = 0;
   std::vector<std::byte> copy_;
@@ -490,7 +490,7 @@ std::string missingLayers(const std::vector<sandbox::Layer>& layers) {
   return out;
 }
 
-Result<LoadedController> describeInHost(const CompiledController& compiled, IsolationDef def) {
+Result<LoadedController> describeInHost(const CompiledController& compiled, HostDef def) {
   def.checked = def.checked || compiled.checked;
   Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start({compiled.module}, {compiled.source}, std::move(def));
   if (!host) return host.status();
@@ -501,7 +501,7 @@ Result<LoadedController> describeInHost(const CompiledController& compiled, Isol
 worlds::DriverFactory ControllerHost::driver(std::vector<std::size_t> modulePerRobot, bool pictures) {
   return [self = shared_from_this(), modulePerRobot = std::move(modulePerRobot),
           pictures](const worlds::Simulation& sim) -> std::unique_ptr<worlds::ControllerDriver> {
-    return std::make_unique<IsolatedDriver>(self, *self->impl_, sim, modulePerRobot, pictures);
+    return std::make_unique<HostDriver>(self, *self->impl_, sim, modulePerRobot, pictures);
   };
 }
 

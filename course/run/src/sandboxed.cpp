@@ -1,4 +1,4 @@
-#include "jail.hpp"
+#include "sandboxed.hpp"
 
 #include "frob/base/layout.hpp"
 
@@ -18,11 +18,11 @@
 
 namespace frob::course {
 
-Result<Jailed> Jailed::start(const JailDef& def) {
-  int report[2];
-  if (::pipe2(report, O_CLOEXEC) != 0) return Status::failure(std::string("cannot start the sandbox: ") + std::strerror(errno));
+Result<Sandboxed> Sandboxed::start(const SandboxedDef& def) {
+  Result<sandbox::Pipe> report = sandbox::openPipe("cannot start the sandbox");
+  if (!report) return report.status();
   const int keep = static_cast<int>(def.fds.size());
-  std::vector<std::string> args{layout().jail.string(),
+  std::vector<std::string> args{layout().sandbox.string(),
                                 "--keep-fds",
                                 std::to_string(keep),
                                 "--report-fd",
@@ -59,30 +59,28 @@ Result<Jailed> Jailed::start(const JailDef& def) {
     }
   }
   for (int k = 0; k < keep; ++k) posix_spawn_file_actions_adddup2(&actions, kHigh + k, k);
-  posix_spawn_file_actions_adddup2(&actions, report[1], keep);
+  posix_spawn_file_actions_adddup2(&actions, report.value().write.get(), keep);
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
   char* noEnv[] = {nullptr};
-  Jailed j;
+  Sandboxed j;
   const int err = ::posix_spawn(&j.pid_, argv[0], &actions, nullptr, argv.data(), noEnv);
   posix_spawn_file_actions_destroy(&actions);
-  ::close(report[1]);
+  report.value().write.reset();  // so that the report ends when frob-sandbox closes its copy
   if (err != 0) {
-    ::close(report[0]);
     j.pid_ = 0;
-    return Status::failure("cannot start the sandbox " + layout().jail.string() + ": " + std::strerror(err));
+    return Status::failure("cannot start the sandbox " + layout().sandbox.string() + ": " + std::strerror(err));
   }
-  j.pidfd_ = static_cast<int>(::syscall(SYS_pidfd_open, j.pid_, 0));
-  // The report ends when frob-jail closes it, just before it runs the program (or dies).
+  j.pidfd_.reset(static_cast<int>(::syscall(SYS_pidfd_open, j.pid_, 0)));
+  // The report ends when frob-sandbox closes it, just before it runs the program (or dies).
   std::string text;
   char buf[4096];
-  for (ssize_t n; (n = ::read(report[0], buf, sizeof buf)) != 0;) {
+  for (ssize_t n; (n = ::read(report.value().read.get(), buf, sizeof buf)) != 0;) {
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) break;
     text.append(buf, static_cast<std::size_t>(n));
   }
-  ::close(report[0]);
   std::istringstream lines(text);
   for (std::string line; std::getline(lines, line);) {
     const std::size_t a = line.find('\t'), b = line.find('\t', a + 1);
@@ -90,21 +88,20 @@ Result<Jailed> Jailed::start(const JailDef& def) {
     const std::string flags = line.substr(a + 1, b - a - 1);  // applied, then required
     j.layers_.push_back({line.substr(0, a), flags.starts_with("1"), flags.ends_with("1"), line.substr(b + 1)});
   }
-  if (j.layers_.empty()) return Status::failure("the sandbox " + layout().jail.string() + " did not start: status " + std::to_string(j.wait()));
+  if (j.layers_.empty()) return Status::failure("the sandbox " + layout().sandbox.string() + " did not start: status " + std::to_string(j.wait()));
   return j;
 }
 
-Jailed::~Jailed() {
+Sandboxed::~Sandboxed() {
   if (pid_ > 0) {
     kill();
     wait();
   }
-  if (pidfd_ >= 0) ::close(pidfd_);
 }
 
-Jailed::Jailed(Jailed&& o) noexcept { *this = std::move(o); }
+Sandboxed::Sandboxed(Sandboxed&& o) noexcept { *this = std::move(o); }
 
-Jailed& Jailed::operator=(Jailed&& o) noexcept {
+Sandboxed& Sandboxed::operator=(Sandboxed&& o) noexcept {
   std::swap(pid_, o.pid_);
   std::swap(pidfd_, o.pidfd_);
   std::swap(status_, o.status_);
@@ -112,13 +109,13 @@ Jailed& Jailed::operator=(Jailed&& o) noexcept {
   return *this;
 }
 
-void Jailed::kill() {
+void Sandboxed::kill() {
   if (pid_ <= 0 || status_ != -1) return;
   ::kill(-pid_, SIGKILL);  // its process group: any thread or child it has
   ::kill(pid_, SIGKILL);   // in case it had not made its own group yet
 }
 
-int Jailed::wait() {
+int Sandboxed::wait() {
   if (pid_ > 0 && status_ == -1) {
     int status = 0;
     while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
@@ -128,19 +125,17 @@ int Jailed::wait() {
   return status_;
 }
 
-Result<JailedRun> runJailed(JailDef def, double seconds, std::size_t outputBytes) {
-  int out[2];
-  if (::pipe2(out, O_CLOEXEC) != 0) return Status::failure(std::string("cannot start the sandbox: ") + std::strerror(errno));
+Result<SandboxedRun> runSandboxed(SandboxedDef def, double seconds, std::size_t outputBytes) {
+  Result<sandbox::Pipe> out = sandbox::openPipe("cannot start the sandbox");
+  if (!out) return out.status();
   def.fds.resize(std::max<std::size_t>(def.fds.size(), 3), -1);
-  def.fds[1] = def.fds[2] = out[1];
-  Result<Jailed> started = Jailed::start(def);
-  ::close(out[1]);
-  if (!started) {
-    ::close(out[0]);
-    return started.status();
-  }
-  Jailed& j = started.value();
-  JailedRun run{.layers = j.layers()};
+  def.fds[1] = def.fds[2] = out.value().write.get();
+  Result<Sandboxed> started = Sandboxed::start(def);
+  out.value().write.reset();  // so that the output ends when the program and its children are gone
+  if (!started) return started.status();
+  const int output = out.value().read.get();
+  Sandboxed& j = started.value();
+  SandboxedRun run{.layers = j.layers()};
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
   char buf[1 << 16];
   // Read until the pipe closes (the program and anything it started are gone) or time is up.
@@ -151,14 +146,13 @@ Result<JailedRun> runJailed(JailDef def, double seconds, std::size_t outputBytes
       j.kill();
       break;
     }
-    pollfd p{out[0], POLLIN, 0};
+    pollfd p{output, POLLIN, 0};
     if (::poll(&p, 1, static_cast<int>(std::min<long long>(left, 1000))) <= 0) continue;
-    const ssize_t n = ::read(out[0], buf, sizeof buf);
+    const ssize_t n = ::read(output, buf, sizeof buf);
     if (n < 0 && errno == EINTR) continue;
     open = n > 0;
     if (n > 0) run.output.append(buf, std::min(static_cast<std::size_t>(n), outputBytes - std::min(outputBytes, run.output.size())));
   }
-  ::close(out[0]);
   run.status = j.wait();
   return run;
 }

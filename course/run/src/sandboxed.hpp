@@ -1,9 +1,10 @@
 #pragma once
-// Starting a program under frob-jail, which confines itself and then runs it; shared by the
+// Starting a program under frob-sandbox, which applies the sandbox to itself and then runs it; shared by the
 // sandboxed compile and the controller host.
 
 #include "frob/base/result.hpp"
-#include "frob/sandbox/confine.hpp"
+#include "frob/sandbox/fd.hpp"
+#include "frob/sandbox/layers.hpp"
 
 #include <sys/types.h>
 
@@ -19,15 +20,15 @@
 namespace frob::course {
 
 /// Whether this build runs under AddressSanitizer, which reserves terabytes of address space: then
-/// no address-space limit can be set on frob-jail or what it runs, and memory is watched instead.
+/// no address-space limit can be set on frob-sandbox or what it runs, and memory is watched instead.
 #ifdef FROB_SANITIZED_BUILD
 inline constexpr bool kSanitizedBuild = true;
 #else
 inline constexpr bool kSanitizedBuild = false;
 #endif
 
-/// A program to run confined.
-struct JailDef {
+/// A program to run in the sandbox.
+struct SandboxedDef {
   std::vector<std::string> command;  ///< the program (absolute path) and its arguments
   sandbox::Limits limits;            ///< memoryBytes is dropped in a sanitizer build (kSanitizedBuild)
   sandbox::FileAccess files;
@@ -38,20 +39,20 @@ struct JailDef {
   std::vector<int> fds;          ///< fds[k] becomes descriptor k of the program; -1: /dev/null
 };
 
-/// A confined program, running. Kills its process group when destroyed, unless reaped.
-class Jailed {
+/// A sandboxed program, running. Kills its process group when destroyed, unless reaped.
+class Sandboxed {
  public:
-  /// Starts `def` under frob-jail and reads which layers it applied.
-  [[nodiscard]] static Result<Jailed> start(const JailDef& def);
-  Jailed() = default;
-  ~Jailed();
-  Jailed(Jailed&& o) noexcept;
-  Jailed& operator=(Jailed&& o) noexcept;
+  /// Starts `def` under frob-sandbox and reads which layers it applied.
+  [[nodiscard]] static Result<Sandboxed> start(const SandboxedDef& def);
+  Sandboxed() = default;
+  ~Sandboxed();
+  Sandboxed(Sandboxed&& o) noexcept;
+  Sandboxed& operator=(Sandboxed&& o) noexcept;
 
   [[nodiscard]] pid_t pid() const { return pid_; }
   /// A pidfd, readable once the program has ended.
-  [[nodiscard]] int pidfd() const { return pidfd_; }
-  /// The layers frob-jail applied.
+  [[nodiscard]] int pidfd() const { return pidfd_.get(); }
+  /// The layers frob-sandbox applied.
   [[nodiscard]] const std::vector<sandbox::Layer>& layers() const { return layers_; }
   /// Kills the program's whole process group.
   void kill();
@@ -60,13 +61,13 @@ class Jailed {
 
  private:
   pid_t pid_ = 0;
-  int pidfd_ = -1;
+  sandbox::Fd pidfd_;
   int status_ = -1;
   std::vector<sandbox::Layer> layers_;
 };
 
-/// How a confined program that ran to its end (or its deadline) did.
-struct JailedRun {
+/// How a sandboxed program that ran to its end (or its deadline) did.
+struct SandboxedRun {
   int status = -1;        ///< its wait status
   bool timedOut = false;  ///< killed at the deadline
   std::string output;     ///< its stdout and stderr together, cut at the limit
@@ -75,6 +76,6 @@ struct JailedRun {
 
 /// Runs `def` to its end with its stdout and stderr captured (def.fds[1], [2] are set here), killed
 /// after `seconds` of wall-clock time; keeps the first `outputBytes` of what it printed.
-[[nodiscard]] Result<JailedRun> runJailed(JailDef def, double seconds, std::size_t outputBytes);
+[[nodiscard]] Result<SandboxedRun> runSandboxed(SandboxedDef def, double seconds, std::size_t outputBytes);
 
 }  // namespace frob::course

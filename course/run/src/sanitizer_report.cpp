@@ -1,7 +1,7 @@
 #include "sanitizer_report.hpp"
 
 #include "frob/base/layout.hpp"
-#include "jail.hpp"
+#include "sandboxed.hpp"
 
 #include <sys/wait.h>
 
@@ -78,17 +78,17 @@ std::string failedAssertion(std::string_view output) {
   return last;
 }
 
-// Symbolizes with binutils' addr2line, run confined: it reads only the module and the system. The
+// Symbolizes with binutils' addr2line, run in the sandbox: it reads only the module and the system. The
 // frames of `module` at each offset, innermost first; an inlined call gives several.
 std::vector<std::vector<SourceFrame>> addr2line(const fs::path& module, const std::vector<std::string>& offsets) {
-  JailDef jail{.command = {"/usr/bin/addr2line", "--addresses", "--functions", "--demangle", "--inlines", "--exe", module.string()},
-               .limits = {.cpuSeconds = 10, .memoryBytes = 1ULL << 30, .fileBytes = 1 << 20, .openFiles = 32},
-               .files = {.read = {"/usr", "/lib", "/lib64", "/etc/ld.so.cache", module.string()}},
-               .cwd = "/",
-               .dropUser = true,
-               .noNetwork = true};
-  jail.command.insert(jail.command.end(), offsets.begin(), offsets.end());
-  Result<JailedRun> run = runJailed(std::move(jail), 10.0, 1 << 20);
+  SandboxedDef program{.command = {"/usr/bin/addr2line", "--addresses", "--functions", "--demangle", "--inlines", "--exe", module.string()},
+                       .limits = {.cpuSeconds = 10, .memoryBytes = 1ULL << 30, .fileBytes = 1 << 20, .openFiles = 32},
+                       .files = {.read = {"/usr", "/lib", "/lib64", "/etc/ld.so.cache", module.string()}},
+                       .cwd = "/",
+                       .dropUser = true,
+                       .noNetwork = true};
+  program.command.insert(program.command.end(), offsets.begin(), offsets.end());
+  Result<SandboxedRun> run = runSandboxed(std::move(program), 10.0, 1 << 20);
   std::vector<std::vector<SourceFrame>> frames;
   if (!run || !WIFEXITED(run.value().status) || WEXITSTATUS(run.value().status) != 0) return frames;
   // Each address on a line of its own ("0x..."), then pairs of lines: function, file:line.

@@ -1,9 +1,9 @@
-#include "frob/course/session.hpp"
+#include "frob/run/session.hpp"
 
-#include "frob/course/diagnose.hpp"
 #include "frob/render/output_file.hpp"
 #include "frob/render/run_view.hpp"
 #include "frob/render/video.hpp"
+#include "frob/run/diagnose.hpp"
 #include "session_outputs.hpp"
 
 #include <algorithm>
@@ -34,7 +34,7 @@ class Unstarted final : public worlds::ControllerDriver {
 
 // The driver of `def`'s controllers: in this process, or in a sandboxed host.
 worlds::DriverFactory driverFor(const RunDef& def, std::shared_ptr<ControllerHost>& host, bool pictures) {
-  if (!def.isolation) {
+  if (!def.host) {
     std::vector<Controller> controllers;
     for (const LoadedController& c : def.controllers) controllers.push_back(c.entry.make);
     return worlds::inProcess(std::move(controllers));
@@ -47,7 +47,7 @@ worlds::DriverFactory driverFor(const RunDef& def, std::shared_ptr<ControllerHos
     modulePerRobot.push_back(static_cast<std::size_t>(known - modules.begin()));
     if (known == modules.end()) modules.push_back(c.module), sources.push_back(c.source);
   }
-  Result<std::shared_ptr<ControllerHost>> started = ControllerHost::start(modules, sources, *def.isolation);
+  Result<std::shared_ptr<ControllerHost>> started = ControllerHost::start(modules, sources, *def.host);
   if (!started) {
     return [why = started.error()](const worlds::Simulation& sim) -> std::unique_ptr<worlds::ControllerDriver> {
       return std::make_unique<Unstarted>(sim.robotCount(), why);
@@ -102,7 +102,7 @@ std::optional<std::size_t> sonarSignal(const std::string& name) {
 
 Status validate(const RunDef& def) {
   const std::size_t robots = def.world.robots.size();
-  if (std::string e = worlds::checkRunnable(def.world); !e.empty()) return Status::failure(def.worldName + ": " + e);
+  if (Status s = worlds::checkRunnable(def.world); !s) return Status::failure(def.worldName + ": " + s.error());
   if (def.controllers.empty()) return Status::failure("no controller given");
   if (def.controllers.size() != 1 && def.controllers.size() != robots) {
     return Status::failure("the world '" + def.worldName + "' has " + std::to_string(robots) +
@@ -135,9 +135,8 @@ Status validate(const RunDef& def) {
     if (Status s = render::checkWritable(path, what); !s) return s;
   }
   for (const LoadedController& c : def.controllers) {
-    if (def.isolation ? c.module.empty() : !c.entry.make) {
-      return Status::failure("the controller '" + c.source + "' " +
-                             (def.isolation ? "has no module to run in a sandbox" : "cannot run in this process"));
+    if (def.host ? c.module.empty() : !c.entry.make) {
+      return Status::failure("the controller '" + c.source + "' " + (def.host ? "has no module to run in a sandbox" : "cannot run in this process"));
     }
   }
   return {};
@@ -167,7 +166,7 @@ Result<Summary> runSession(const RunDef& def) {
   worlds::Run run(def.world, def.options, driverFor(def, host, drawFrames || !out.plot.empty()), {.window = 1});
   const worlds::Simulation& sim = run.simulation();
   const std::size_t n = sim.robotCount();
-  const bool checked = def.isolation && def.isolation->checked;
+  const bool checked = def.host && def.host->checked;
 
   // Outputs, opened before the first step so that a bad path fails at once.
   std::optional<render::RunView> view;

@@ -1,4 +1,4 @@
-#include "frob/course/summary.hpp"
+#include "frob/run/summary.hpp"
 
 #include <nlohmann/json.hpp>
 

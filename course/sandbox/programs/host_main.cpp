@@ -1,12 +1,12 @@
 // frob-controller-host: runs student controllers for a grader that never lets them near its world.
-// Started by frob-jail with its channel on fd 3 and a wake-up eventfd on fd 4; it adds its own
+// Started by frob-sandbox with its channel on fd 3 and a wake-up eventfd on fd 4; it adds its own
 // system-call filter, loads the controller modules named on its command line, builds one controller
 // per robot as asked, then each step reads the robots' frames and answers their wheels.
 #include "frob/controller.hpp"
 #include "frob/sandbox/channel.hpp"
-#include "frob/sandbox/confine.hpp"
+#include "frob/sandbox/layers.hpp"
 #include "frob/sandbox/wire.hpp"
-#include "guard.hpp"
+#include "refusals.hpp"
 
 #include <dlfcn.h>
 #include <signal.h>
@@ -138,15 +138,15 @@ void step(const Channel& channel, std::vector<Driven>& driven, const Instant& no
 
 int main(int argc, char** argv) {
   Channel channel;
-  if (std::string e = channel.attach(kChannelFd); !e.empty()) {
-    std::fprintf(stderr, "frob-controller-host: %s\n", e.c_str());
+  if (Status s = channel.attach(kChannelFd); !s) {
+    std::fprintf(stderr, "frob-controller-host: %s\n", s.error().c_str());
     return 3;
   }
   header = &channel.header();
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // a student's prints arrive as they are made
   installTrapReporter(&header->trappedSyscall);
   installFaultReporter();
-  guardCalls(header);
+  noteRefusedCalls(header);
   const Layer seccomp = restrictSyscalls(SyscallPolicy::Controller);
   const std::vector<const ControllerEntry*> entries = load(channel, argc, argv, seccomp);
 
@@ -158,7 +158,7 @@ int main(int argc, char** argv) {
   for (;;) {
     waitFutex(header->request, sequence, header->spinNanoseconds);
     if (header->command == Command::Build) {
-      if (std::string e = channel.attach(kChannelFd); !e.empty()) return 3;
+      if (!channel.attach(kChannelFd)) return 3;
       clock = Clock(header->dt);
       driven = build(channel, entries);
     } else {

@@ -2,7 +2,7 @@
 // module's calls (and those of the C++ library it uses) bind to these, which call the real ones and
 // note what happened. Landlock and seccomp do the refusing; this only names what was refused in the
 // grader's message. A raw system call passes unnoticed, and is refused all the same.
-#include "guard.hpp"
+#include "refusals.hpp"
 
 #include <dlfcn.h>
 #include <fcntl.h>
@@ -41,7 +41,7 @@ mode_t modeOf(int flags, va_list args) { return (flags & (O_CREAT | O_TMPFILE)) 
 
 }  // namespace
 
-void guardCalls(frob::sandbox::Header* header) { guarded = header; }
+void noteRefusedCalls(frob::sandbox::Header* header) { guarded = header; }
 
 namespace {
 // Notes a process start, which seccomp is about to refuse.
@@ -50,7 +50,7 @@ void noteProcess() {
 }
 }  // namespace
 
-#define FROB_GUARD_OPEN(name)                                             \
+#define FROB_NOTE_REFUSED_OPEN(name)                                      \
   extern "C" int name(const char* path, int flags, ...) {                 \
     static const auto next = real<int (*)(const char*, int, ...)>(#name); \
     va_list args;                                                         \
@@ -61,7 +61,7 @@ void noteProcess() {
     if (fd < 0) noteRefusal(path, writes(flags));                         \
     return fd;                                                            \
   }
-#define FROB_GUARD_OPENAT(name)                                                \
+#define FROB_NOTE_REFUSED_OPENAT(name)                                         \
   extern "C" int name(int dir, const char* path, int flags, ...) {             \
     static const auto next = real<int (*)(int, const char*, int, ...)>(#name); \
     va_list args;                                                              \
@@ -72,7 +72,7 @@ void noteProcess() {
     if (fd < 0) noteRefusal(path, writes(flags));                              \
     return fd;                                                                 \
   }
-#define FROB_GUARD_FOPEN(name)                                                 \
+#define FROB_NOTE_REFUSED_FOPEN(name)                                          \
   extern "C" FILE* name(const char* path, const char* mode) {                  \
     static const auto next = real<FILE* (*)(const char*, const char*)>(#name); \
     FILE* f = next(path, mode);                                                \
@@ -80,12 +80,12 @@ void noteProcess() {
     return f;                                                                  \
   }
 
-FROB_GUARD_OPEN(open)
-FROB_GUARD_OPEN(open64)
-FROB_GUARD_OPENAT(openat)
-FROB_GUARD_OPENAT(openat64)
-FROB_GUARD_FOPEN(fopen)
-FROB_GUARD_FOPEN(fopen64)
+FROB_NOTE_REFUSED_OPEN(open)
+FROB_NOTE_REFUSED_OPEN(open64)
+FROB_NOTE_REFUSED_OPENAT(openat)
+FROB_NOTE_REFUSED_OPENAT(openat64)
+FROB_NOTE_REFUSED_FOPEN(fopen)
+FROB_NOTE_REFUSED_FOPEN(fopen64)
 
 extern "C" int system(const char* command) {
   static const auto next = real<int (*)(const char*)>("system");
@@ -99,7 +99,7 @@ extern "C" FILE* popen(const char* command, const char* mode) {
   return next(command, mode);
 }
 
-#define FROB_GUARD_SPAWN(name)                                                                                                              \
+#define FROB_NOTE_REFUSED_SPAWN(name)                                                                                                       \
   extern "C" int name(pid_t* pid, const char* path, const posix_spawn_file_actions_t* actions, const posix_spawnattr_t* attributes,         \
                       char* const argv[], char* const envp[]) {                                                                             \
     static const auto next =                                                                                                                \
@@ -107,5 +107,5 @@ extern "C" FILE* popen(const char* command, const char* mode) {
     noteProcess();                                                                                                                          \
     return next(pid, path, actions, attributes, argv, envp);                                                                                \
   }
-FROB_GUARD_SPAWN(posix_spawn)
-FROB_GUARD_SPAWN(posix_spawnp)
+FROB_NOTE_REFUSED_SPAWN(posix_spawn)
+FROB_NOTE_REFUSED_SPAWN(posix_spawnp)

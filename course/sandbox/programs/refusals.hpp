@@ -5,4 +5,4 @@
 /// From now on, a refused open() or fopen() writes its path into `header`, and system(), popen()
 /// and posix_spawn() note that they start a process (their clone is refused with every signal
 /// blocked, so the SIGSYS handler never runs to say so).
-void guardCalls(frob::sandbox::Header* header);
+void noteRefusedCalls(frob::sandbox::Header* header);

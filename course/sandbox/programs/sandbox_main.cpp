@@ -1,9 +1,10 @@
-// frob-jail: confines itself, then runs a program in its place. The grader runs the compiler and
+// frob-sandbox: applies the sandbox to itself, then runs a program in its place. The grader runs the compiler and
 // the controller host through it, so that every layer is in force before their first instruction.
 //
-//   frob-jail --cpu 60 --memory 2147483648 --read /usr --write /tmp/build.x --cwd /tmp/build.x \
+//   frob-sandbox --cpu 60 --memory 2147483648 --read /usr --write /tmp/build.x --cwd /tmp/build.x \
 //             --report-fd 5 --keep-fds 3 -- /usr/bin/clang++ ...
-#include "frob/sandbox/confine.hpp"
+#include "frob/sandbox/fd.hpp"
+#include "frob/sandbox/layers.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -43,7 +44,7 @@ std::string interpreterOf(int fd) {
 
 int main(int argc, char** argv) {
   using namespace frob::sandbox;
-  CLI::App cli{"Runs a program confined: resource limits, an unprivileged user, Landlock, seccomp", "frob-jail"};
+  CLI::App cli{"Runs a program in the sandbox: resource limits, an unprivileged user, Landlock, seccomp", "frob-sandbox"};
   Limits limits;
   FileAccess files;
   std::uint32_t uid = 65534, gid = 65534;
@@ -75,7 +76,7 @@ int main(int argc, char** argv) {
   // Opened before the user changes: the program may sit in a folder only the caller can enter.
   const int program = ::open(command[0].c_str(), O_RDONLY | O_CLOEXEC);
   if (program < 0 || ::chdir(cwd.c_str()) != 0) {
-    std::fprintf(stderr, "frob-jail: cannot run %s in %s: %s\n", command[0].c_str(), cwd.c_str(), std::strerror(errno));
+    std::fprintf(stderr, "frob-sandbox: cannot run %s in %s: %s\n", command[0].c_str(), cwd.c_str(), std::strerror(errno));
     return 127;
   }
   // Every descriptor closes but 0 .. keepFds-1, the report and the program.
@@ -95,11 +96,10 @@ int main(int argc, char** argv) {
   // Killed with the process that started it; set after the user changed, which clears it.
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (parent != 0 && ::getppid() != parent) return 127;
-  if (reportFd >= 0) {
+  if (Fd out(reportFd); out.valid()) {  // closed here, so that the report ends before the program starts
     std::string report;
     for (const Layer& l : layers) report += l.name + "\t" + (l.applied ? "1" : "0") + (l.required ? "1" : "0") + "\t" + l.note + "\n";
-    [[maybe_unused]] const ssize_t n = ::write(reportFd, report.data(), report.size());
-    ::close(reportFd);
+    [[maybe_unused]] const ssize_t n = ::write(out.get(), report.data(), report.size());
   }
 
   std::vector<char*> args, envp;
@@ -107,6 +107,6 @@ int main(int argc, char** argv) {
   for (std::string& e : env) envp.push_back(e.data());
   args.push_back(nullptr), envp.push_back(nullptr);
   ::syscall(SYS_execveat, program, "", args.data(), envp.data(), AT_EMPTY_PATH);
-  std::fprintf(stderr, "frob-jail: cannot run %s: %s\n", command[0].c_str(), std::strerror(errno));
+  std::fprintf(stderr, "frob-sandbox: cannot run %s: %s\n", command[0].c_str(), std::strerror(errno));
   return 127;
 }

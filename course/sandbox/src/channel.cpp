@@ -16,7 +16,7 @@ namespace frob::sandbox {
 
 namespace {
 
-std::string errorText(const char* what) { return std::string(what) + ": " + std::strerror(errno); }
+Status errorText(const char* what) { return Status::failure(std::string(what) + ": " + std::strerror(errno)); }
 
 void cpuRelax() { __builtin_ia32_pause(); }
 
@@ -25,7 +25,6 @@ void cpuRelax() { __builtin_ia32_pause(); }
 Channel::~Channel() {
   if (base_ != nullptr) ::munmap(base_, mapped_);
   if (head_ != nullptr) ::munmap(head_, kHeaderBytes);
-  if (fd_ >= 0) ::close(fd_);
 }
 
 Channel::Channel(Channel&& o) noexcept { *this = std::move(o); }
@@ -42,13 +41,13 @@ Channel& Channel::operator=(Channel&& o) noexcept {
   return *this;
 }
 
-std::string Channel::map(std::size_t bytes) {
+Status Channel::map(std::size_t bytes) {
   if (head_ == nullptr) {
-    void* head = ::mmap(nullptr, kHeaderBytes, PROT_READ | PROT_WRITE, MAP_SHARED, fd_, 0);
+    void* head = ::mmap(nullptr, kHeaderBytes, PROT_READ | PROT_WRITE, MAP_SHARED, fd_.get(), 0);
     if (head == MAP_FAILED) return errorText("mapping the controller channel");
     head_ = static_cast<std::byte*>(head);
   }
-  void* at = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_SHARED, fd_, 0);
+  void* at = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_SHARED, fd_.get(), 0);
   if (at == MAP_FAILED) return errorText("mapping the controller channel");
   if (base_ != nullptr) ::munmap(base_, mapped_);
   base_ = static_cast<std::byte*>(at);
@@ -56,35 +55,35 @@ std::string Channel::map(std::size_t bytes) {
   return {};
 }
 
-std::string Channel::create(std::size_t setupBytes) {
-  fd_ = ::memfd_create("frob-channel", MFD_CLOEXEC);
-  if (fd_ < 0) return errorText("memfd_create");
+Status Channel::create(std::size_t setupBytes) {
+  fd_.reset(::memfd_create("frob-channel", MFD_CLOEXEC));
+  if (!fd_.valid()) return errorText("memfd_create");
   setupBytes_ = setupBytes;
   const std::size_t bytes = kHeaderBytes + setupBytes;
-  if (::ftruncate(fd_, static_cast<off_t>(bytes)) != 0) return errorText("sizing the controller channel");
-  if (std::string e = map(bytes); !e.empty()) return e;
+  if (::ftruncate(fd_.get(), static_cast<off_t>(bytes)) != 0) return errorText("sizing the controller channel");
+  if (Status s = map(bytes); !s) return s;
   Header& h = *new (head_) Header{};
   h.setupBytes = setupBytes;
   return {};
 }
 
-std::string Channel::resize(std::uint32_t robots, std::size_t inBytes, std::size_t outBytes) {
+Status Channel::resize(std::uint32_t robots, std::size_t inBytes, std::size_t outBytes) {
   robots_ = robots, inBytes_ = inBytes, outBytes_ = outBytes;
   const std::size_t bytes = kHeaderBytes + setupBytes_ + robots * (inBytes + outBytes);
-  if (::ftruncate(fd_, static_cast<off_t>(bytes)) != 0) return errorText("sizing the controller channel");
-  if (std::string e = map(bytes); !e.empty()) return e;
+  if (::ftruncate(fd_.get(), static_cast<off_t>(bytes)) != 0) return errorText("sizing the controller channel");
+  if (Status s = map(bytes); !s) return s;
   Header& h = header();
   h.robots = robots, h.inBytes = inBytes, h.outBytes = outBytes;
   return {};
 }
 
-std::string Channel::attach(int fd) {
-  fd_ = fd;
+Status Channel::attach(int fd) {
+  fd_.reset(fd);
   if (head_ == nullptr) {
-    if (std::string e = map(kHeaderBytes); !e.empty()) return e;
+    if (Status s = map(kHeaderBytes); !s) return s;
   }
   const Header& h = header();
-  if (h.magic != kMagic || h.version != kVersion) return "the controller channel has another version";
+  if (h.magic != kMagic || h.version != kVersion) return Status::failure("the controller channel has another version");
   setupBytes_ = h.setupBytes, robots_ = h.robots, inBytes_ = h.inBytes, outBytes_ = h.outBytes;
   return map(kHeaderBytes + setupBytes_ + robots_ * (inBytes_ + outBytes_));
 }

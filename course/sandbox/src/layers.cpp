@@ -1,4 +1,6 @@
-#include "frob/sandbox/confine.hpp"
+#include "frob/sandbox/layers.hpp"
+
+#include "frob/sandbox/fd.hpp"
 
 #include <fcntl.h>
 #include <grp.h>
@@ -39,13 +41,12 @@ struct RulesetAttr {
 
 // Adds a rule granting `rights` (those a file can hold, when `path` is a file) below `path`.
 bool addRule(int ruleset, const std::string& path, std::uint64_t rights, std::string& problem) {
-  const int fd = ::open(path.c_str(), O_PATH | O_CLOEXEC);
-  if (fd < 0) return errno == ENOENT;  // nothing there to grant
+  const Fd fd(::open(path.c_str(), O_PATH | O_CLOEXEC));
+  if (!fd.valid()) return errno == ENOENT;  // nothing there to grant
   struct stat st {};
-  if (::fstat(fd, &st) == 0 && !S_ISDIR(st.st_mode)) rights &= kFileRights;
-  landlock_path_beneath_attr rule{.allowed_access = rights, .parent_fd = fd};
+  if (::fstat(fd.get(), &st) == 0 && !S_ISDIR(st.st_mode)) rights &= kFileRights;
+  landlock_path_beneath_attr rule{.allowed_access = rights, .parent_fd = fd.get()};
   const long rc = ::syscall(SYS_landlock_add_rule, ruleset, LANDLOCK_RULE_PATH_BENEATH, &rule, 0);
-  ::close(fd);
   if (rc != 0) problem = errorText(("adding " + path).c_str());
   return rc == 0;
 }
@@ -113,19 +114,18 @@ Layer restrictFiles(const FileAccess& access) {
   if (abi >= 4) attr.handledNet = kNetBindTcp | kNetConnectTcp, size = 2 * sizeof(std::uint64_t);
   if (abi >= 5) attr.handledFs |= kFsIoctlDev;
   if (abi >= 6) attr.scoped = kScopeAbstractUnix | kScopeSignal, size = sizeof attr;
-  const int ruleset = static_cast<int>(::syscall(SYS_landlock_create_ruleset, &attr, size, 0));
-  if (ruleset < 0) {
+  const Fd ruleset(static_cast<int>(::syscall(SYS_landlock_create_ruleset, &attr, size, 0)));
+  if (!ruleset.valid()) {
     layer.note = errorText("landlock_create_ruleset");
     return layer;
   }
   constexpr std::uint64_t kRead = LANDLOCK_ACCESS_FS_READ_FILE | LANDLOCK_ACCESS_FS_READ_DIR;
   const std::uint64_t all = attr.handledFs & ~(LANDLOCK_ACCESS_FS_MAKE_CHAR | LANDLOCK_ACCESS_FS_MAKE_BLOCK);
   bool ok = true;
-  for (const std::string& p : access.read) ok = ok && addRule(ruleset, p, kRead, layer.note);
-  for (const std::string& p : access.execute) ok = ok && addRule(ruleset, p, kRead | LANDLOCK_ACCESS_FS_EXECUTE, layer.note);
-  for (const std::string& p : access.write) ok = ok && addRule(ruleset, p, all & ~LANDLOCK_ACCESS_FS_EXECUTE, layer.note);
-  if (ok && ::syscall(SYS_landlock_restrict_self, ruleset, 0) != 0) ok = false, layer.note = errorText("landlock_restrict_self");
-  ::close(ruleset);
+  for (const std::string& p : access.read) ok = ok && addRule(ruleset.get(), p, kRead, layer.note);
+  for (const std::string& p : access.execute) ok = ok && addRule(ruleset.get(), p, kRead | LANDLOCK_ACCESS_FS_EXECUTE, layer.note);
+  for (const std::string& p : access.write) ok = ok && addRule(ruleset.get(), p, all & ~LANDLOCK_ACCESS_FS_EXECUTE, layer.note);
+  if (ok && ::syscall(SYS_landlock_restrict_self, ruleset.get(), 0) != 0) ok = false, layer.note = errorText("landlock_restrict_self");
   layer.applied = ok;
   if (ok) layer.note = "ABI " + std::to_string(abi);
   return layer;

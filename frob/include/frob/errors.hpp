@@ -1,6 +1,7 @@
 #pragma once
 /// Errors: FROB_ASSERT for programmer mistakes, FrobError for a controller misbehaving at run time.
 
+#include "frob/assert.hpp"
 #include "frob/behavior.hpp"
 #include "frob/robot_values.hpp"
 
@@ -21,9 +22,6 @@ class UsageError : public std::logic_error {
  public:
   using std::logic_error::logic_error;
 };
-
-/// Checks a precondition in every build; throws UsageError naming the file, line and `message`.
-#define FROB_ASSERT(condition, message) ((condition) ? static_cast<void>(0) : ::frob::detail::failAssert(#condition, message, __FILE__, __LINE__))
 
 /// True when every number in `v` is finite (no NaN, no infinity).
 [[nodiscard]] inline bool isFinite(double v) { return std::isfinite(v); }

@@ -1,6 +1,6 @@
 // The grade's writers: the terminal table and the CSV byte for byte, the results.json files field by
 // field, and the JUnit XML read back by libxml2. The HTML report: html_report_test.cpp.
-#include "frob/course/grade_report.hpp"
+#include "frob/grade/grade_report.hpp"
 
 #include "grade_samples.hpp"
 

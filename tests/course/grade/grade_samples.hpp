@@ -1,7 +1,7 @@
 #pragma once
 // Grades written by hand for the grade's writers' tests, the files they write, and what libxml2
 // reads back from them: shared by grade_report_test.cpp and html_report_test.cpp.
-#include "frob/course/grade_report.hpp"
+#include "frob/grade/grade_report.hpp"
 
 #include <gtest/gtest.h>
 #include <libxml/HTMLparser.h>

@@ -1,6 +1,6 @@
 // frob grade's engine: real submissions compiled, run in the sandboxed host, scored from the true
 // trajectory; the same grade twice; each run's wheel log replayed to the same verdict bit for bit.
-#include "frob/course/grade.hpp"
+#include "frob/grade/grade.hpp"
 
 #include <gtest/gtest.h>
 

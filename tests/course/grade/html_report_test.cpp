@@ -1,6 +1,6 @@
 // The HTML report: as written (self-contained, escaped, its media inline), and as Debian's headless
 // Chromium renders it (a screenshot, its DOM, and the video's state once the page has loaded).
-#include "frob/course/grade_report.hpp"
+#include "frob/grade/grade_report.hpp"
 #include "frob/render/image.hpp"
 #include "frob/render/video.hpp"
 #include "grade_samples.hpp"

@@ -1,5 +1,5 @@
 // The grader's criteria, judged on hand-made runs whose answers are known exactly.
-#include "frob/course/judge.hpp"
+#include "frob/grade/judge.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Rubric files: what they say, and one clear line naming the file, line and field for every mistake.
-#include "frob/course/rubric.hpp"
+#include "frob/grade/rubric.hpp"
 
 #include <gtest/gtest.h>
 
@@ -141,7 +141,7 @@ goal = { within = 0.5 }
   EXPECT_EQ(worlds[1].worldSeed, worldsOf(r.value().checks[0], "s3cret")[1].worldSeed);
   Result<worlds::WorldDef> w = loadWorldRef(worlds[0]);
   ASSERT_TRUE(w.ok()) << w.error();
-  EXPECT_EQ(toToml(w.value()), toToml(generateWorld(WorldKind::Obstacles, 4).value()));
+  EXPECT_EQ(worlds::toToml(w.value()), worlds::toToml(worlds::generateWorld(worlds::WorldKind::Obstacles, 4).value()));
 
   const fs::path bad = rubricFile("generated_bad", "[[check]]\nname = \"x\"\ngenerated = { kind = \"forest\", seeds = [1] }\nstopped = {}\n");
   EXPECT_EQ(loadRubric(bad).error(), bad.string() + ":3: check[0].generated.kind: unknown kind 'forest' (one of obstacles, maze, rooms, loop)");

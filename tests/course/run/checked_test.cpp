@@ -2,9 +2,9 @@
 // library's checks stops at its first mistake, and the trusted side names the student's file and
 // line, which the sandboxed host could not symbolize itself. Each submission in checked/ marks the
 // line it goes wrong on with "// CHECKED".
-#include "frob/course/controller_file.hpp"
-#include "frob/course/isolation.hpp"
-#include "frob/course/session.hpp"
+#include "frob/run/controller_file.hpp"
+#include "frob/run/host.hpp"
+#include "frob/run/session.hpp"
 #include "frob/worlds/world_file.hpp"
 
 #include <gtest/gtest.h>
@@ -50,7 +50,7 @@ Outcome runIn(const std::string& name, bool checked) {
   Outcome o;
   Result<CompiledController> c = compiled(name, checked);
   if (!c) return o;
-  IsolationDef def{.output = [&o](std::string_view text) { o.output.append(text); }, .checked = checked};
+  HostDef def{.output = [&o](std::string_view text) { o.output.append(text); }, .checked = checked};
   Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start({c.value().module}, {submission(name).string()}, def);
   EXPECT_TRUE(host.ok()) << host.error();
   if (!host) return o;
@@ -120,13 +120,13 @@ TEST(Checked, ARunThatNeverMovedSuggestsCheckingUnlessItWasChecked) {
   for (const bool checked : {false, true}) {
     Result<CompiledController> c = compiled("stands_still", checked);
     ASSERT_TRUE(c.ok());
-    const IsolationDef isolation{.checked = checked};
-    Result<LoadedController> loaded = describeInHost(c.value(), isolation);
+    const HostDef host{.checked = checked};
+    Result<LoadedController> loaded = describeInHost(c.value(), host);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
     RunDef def{.world = *worlds::parseWorld("size = [4.0, 3.0]\n[[robot]]\nname = \"ada\"\nstart = [1.0, 1.0]\n", "room.toml"),
                .worldName = "room",
                .controllers = {loaded.value()},
-               .isolation = isolation,
+               .host = host,
                .seconds = 1.0};
     Result<Summary> s = runSession(def);
     ASSERT_TRUE(s.ok()) << s.error();

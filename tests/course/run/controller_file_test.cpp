@@ -1,6 +1,6 @@
 // Compiling a controller file: in a sandbox that lets the compiler read the system's headers,
 // frob's and the submission's own folder, and nothing else, within limits of time and memory.
-#include "frob/course/controller_file.hpp"
+#include "frob/run/controller_file.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // Runs that explain themselves: each common mistake, fed to the diagnosis as a run would show it,
 // gives the hint that names the fix; a good run gives none. And the paper's runAround written
 // literally (one front sonar) is told why it keeps pushing against walls.
-#include "frob/course/diagnose.hpp"
+#include "frob/run/diagnose.hpp"
 
-#include "frob/course/session.hpp"
 #include "frob/frob.hpp"
+#include "frob/run/session.hpp"
 #include "frob/worlds/registry.hpp"
 
 #include <gtest/gtest.h>

@@ -1,12 +1,12 @@
 // The controller host: student controllers in a sandboxed process of their own. A well-behaved
 // controller drives exactly as it does in this process; a hostile one fails its robot with a reason
 // a student can act on, and never the process that holds the world.
-#include "frob/course/isolation.hpp"
+#include "frob/run/host.hpp"
 
+#include "../sandbox/hostile.hpp"
 #include "frob/frob.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/world_file.hpp"
-#include "hostile.hpp"
 
 #include <dlfcn.h>
 #include <gtest/gtest.h>
@@ -23,7 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Loads a module into this process, as `frob run` without isolation does.
+// Loads a module into this process, as `frob run` without host does.
 Controller inProcess(const fs::path& module) {
   void* handle = ::dlopen(module.c_str(), RTLD_NOW | RTLD_LOCAL);
   EXPECT_NE(handle, nullptr) << ::dlerror();
@@ -31,7 +31,7 @@ Controller inProcess(const fs::path& module) {
   return reinterpret_cast<Entry>(::dlsym(handle, "frob_controller_v1"))()->make;
 }
 
-std::shared_ptr<ControllerHost> startHost(const std::vector<fs::path>& modules, IsolationDef def = {}) {
+std::shared_ptr<ControllerHost> startHost(const std::vector<fs::path>& modules, HostDef def = {}) {
   std::vector<std::string> sources;
   for (const fs::path& m : modules) sources.push_back(m.stem().string());
   Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start(modules, sources, std::move(def));
@@ -39,7 +39,7 @@ std::shared_ptr<ControllerHost> startHost(const std::vector<fs::path>& modules, 
   return host.ok() ? host.value() : nullptr;
 }
 
-TEST(Isolation, AWellBehavedControllerDrivesBitIdenticallyInAndOutOfIsolation) {
+TEST(Sandbox, AWellBehavedControllerDrivesBitIdenticallyInAndOutOfTheSandbox) {
   const worlds::WorldDef world = *worlds::loadReferenceWorld("obstacles");
   const fs::path bug = testing::exampleModule("06_bug");
   worlds::Run here(world, {}, {inProcess(bug)}, {.keepSteps = false});
@@ -85,7 +85,7 @@ struct Outcome {
   std::vector<sandbox::Layer> layers;
 };
 
-Outcome runHostile(const std::vector<std::string>& names, IsolationDef def = {}) {
+Outcome runHostile(const std::vector<std::string>& names, HostDef def = {}) {
   Outcome o;
   def.output = [&o](std::string_view text) { o.output.append(text); };
   std::vector<fs::path> modules;
@@ -127,7 +127,7 @@ TEST_P(Hostile, FailsItsRobotWithAReasonAndNothingElse) {
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    Isolation, Hostile,
+    Sandbox, Hostile,
     ::testing::Values(Case{"segfault", "ada: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.50 s"},
                       Case{"abort", "ada: crashed with SIGABRT (abort(), a failed assert, or an exception nothing caught) at t = 0.50 s"},
                       Case{"stack_overflow", "ada: crashed with SIGSEGV: its stack overflowed (a recursion that never ends?) at t = 0.50 s"},
@@ -146,7 +146,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"commands_nan", "ada: the controller commanded non-finite wheels {forward nan m/s, turn 0.000 rad/s} at t = 0.500 s"}),
     [](const ::testing::TestParamInfo<Case>& info) { return info.param.module; });
 
-TEST(Isolation, NothingOutsideItsScratchFolderIsReadOrWritten) {
+TEST(Sandbox, NothingOutsideItsScratchFolderIsReadOrWritten) {
   fs::remove("/tmp/frob-hostile-was-here");
   EXPECT_EQ(runHostile({"writes_outside"}).failures.size(), 1u);
   EXPECT_FALSE(fs::exists("/tmp/frob-hostile-was-here"));
@@ -154,14 +154,14 @@ TEST(Isolation, NothingOutsideItsScratchFolderIsReadOrWritten) {
   EXPECT_EQ(read.output.find("root:"), std::string::npos) << read.output;
 }
 
-TEST(Isolation, ItsOwnScratchFolderCanBeWrittenAndReadBack) {
+TEST(Sandbox, ItsOwnScratchFolderCanBeWrittenAndReadBack) {
   const Outcome o = runHostile({"writes_scratch"});
   EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
   EXPECT_EQ(o.lastWheels, (Wheels{0.25, 0.0}));
 }
 
 // A value a task plots (withPlot) crosses from the host with the pictures, as it is in this process.
-TEST(Isolation, PlottedValuesComeBackWithThePictures) {
+TEST(Sandbox, PlottedValuesComeBackWithThePictures) {
   const worlds::WorldDef world = *worlds::loadReferenceWorld("corridor");
   const fs::path module = testing::hostileModule("plots_a_value");
   std::shared_ptr<ControllerHost> host = startHost({module});
@@ -177,19 +177,19 @@ TEST(Isolation, PlottedValuesComeBackWithThePictures) {
   EXPECT_EQ(plotted, here.recorder().steps().back().robots[0].picture);
 }
 
-TEST(Isolation, ThreadsAreAllowed) {
+TEST(Sandbox, ThreadsAreAllowed) {
   const Outcome o = runHostile({"starts_thread"});
   EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
   EXPECT_EQ(o.lastWheels, (Wheels{0.2, 0.0}));
 }
 
-TEST(Isolation, AForgedResultIsOnlyOutputAndTheRunStillFails) {
+TEST(Sandbox, AForgedResultIsOnlyOutputAndTheRunStillFails) {
   const Outcome o = runHostile({"forged_exit"});
   EXPECT_NE(o.output.find("goal_reached"), std::string::npos);
   ASSERT_EQ(o.failures.size(), 1u);
 }
 
-TEST(Isolation, AFloodOfOutputIsCutAtItsLimitAndTheRunGoesOn) {
+TEST(Sandbox, AFloodOfOutputIsCutAtItsLimitAndTheRunGoesOn) {
   const Outcome o = runHostile({"floods_output"}, {.outputBytes = 1 << 20});
   EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
   EXPECT_EQ(o.output.size(), 1u << 20);
@@ -197,35 +197,35 @@ TEST(Isolation, AFloodOfOutputIsCutAtItsLimitAndTheRunGoesOn) {
   EXPECT_EQ(o.notes[0], "the controller wrote 80 MB to stdout and stderr; only the first 1 MB were shown");
 }
 
-TEST(Isolation, AMemoryBombFailsOnItsLimit) {
+TEST(Sandbox, AMemoryBombFailsOnItsLimit) {
   // A generous step deadline: on a crowded machine filling the memory may take more than a second.
   const Outcome o = runHostile({"memory_bomb"}, {.stepSeconds = 60, .memoryBytes = 256 << 20});
   ASSERT_EQ(o.failures.size(), 1u);
   EXPECT_NE(o.failures[0].message.find("memory"), std::string::npos) << o.failures[0].message;
 }
 
-TEST(Isolation, AGlobalConstructorThatNeverEndsIsStopped) {
+TEST(Sandbox, AGlobalConstructorThatNeverEndsIsStopped) {
   const Outcome o = runHostile({"endless_constructor"}, {.startSeconds = 0.5});
   EXPECT_EQ(
       o.startError,
       "the controller 'endless_constructor' failed: did not finish starting within 0.5 s (an endless loop?) at t = 0.00 s (in a global constructor)");
 }
 
-TEST(Isolation, AGlobalConstructorThatCrashesIsNamed) {
+TEST(Sandbox, AGlobalConstructorThatCrashesIsNamed) {
   const Outcome o = runHostile({"crash_in_constructor"});
   EXPECT_EQ(o.startError,
             "the controller 'crash_in_constructor' failed: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.00 s "
             "(in a global constructor)");
 }
 
-TEST(Isolation, AMultiRobotRunNamesTheRobotWhoseControllerFailed) {
+TEST(Sandbox, AMultiRobotRunNamesTheRobotWhoseControllerFailed) {
   const Outcome o = runHostile({"starts_thread", "segfault"});
   ASSERT_EQ(o.failures.size(), 1u);
   EXPECT_EQ(o.failures[0].robot, 1u);
   EXPECT_EQ(o.failures[0].message, "bob: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.50 s");
 }
 
-TEST(Isolation, TheHostDiesWithTheProcessThatStartedIt) {
+TEST(Sandbox, TheHostDiesWithTheProcessThatStartedIt) {
   int pipeFds[2];
   ASSERT_EQ(::pipe(pipeFds), 0);
   const pid_t starter = ::fork();
@@ -249,7 +249,7 @@ TEST(Isolation, TheHostDiesWithTheProcessThatStartedIt) {
   ::close(pipeFds[0]), ::close(pipeFds[1]);
 }
 
-TEST(Isolation, TheHostHoldsNoCodeOfTheWorldTheRendererOrTheGrader) {
+TEST(Sandbox, TheHostHoldsNoCodeOfTheWorldTheRendererOrTheGrader) {
   std::ifstream in(FROB_HOST_PATH, std::ios::binary);
   const std::string binary{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   ASSERT_GT(binary.size(), 100'000u);
@@ -259,7 +259,7 @@ TEST(Isolation, TheHostHoldsNoCodeOfTheWorldTheRendererOrTheGrader) {
   }
 }
 
-TEST(Isolation, EveryLayerSaysWhetherItWasApplied) {
+TEST(Sandbox, EveryLayerSaysWhetherItWasApplied) {
   const Outcome o = runHostile({"starts_thread"});
   std::vector<std::string> names;
   for (const sandbox::Layer& l : o.layers) {

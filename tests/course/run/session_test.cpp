@@ -1,6 +1,6 @@
 // runSession: the run loop behind `frob run`: when a run ends, what the summary says, and that the
 // trace holds exactly the recorded values. (The files' atomicity is tested end to end in tests/app.)
-#include "frob/course/session.hpp"
+#include "frob/run/session.hpp"
 
 #include "frob/frob.hpp"
 #include "frob/render/image.hpp"

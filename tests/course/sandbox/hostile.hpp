@@ -1,6 +1,6 @@
 #pragma once
 // Where the tests find the controller modules the build made: the course's examples and the
-// hostile submissions of tests/course/hostile/.
+// hostile submissions of tests/course/sandbox/hostile/.
 #include <filesystem>
 #include <string>
 

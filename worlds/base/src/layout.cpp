@@ -25,7 +25,7 @@ Layout buildLayout() {
                 .precompiledHeader = FROB_BUILD_PCH,
                 .headerOverlay = FROB_BUILD_OVERLAY,
                 .controllerHost = FROB_BUILD_HOST,
-                .jail = FROB_BUILD_JAIL};
+                .sandbox = FROB_BUILD_SANDBOX};
 }
 
 // The prefix the running program is installed in, or empty: the program is P/bin/frob (bin being
@@ -59,7 +59,7 @@ Layout installedLayout(const fs::path& prefix) {
                 .precompiledHeader = lib / "frob.pch",
                 .headerOverlay = lib / "frob-headers.yaml",
                 .controllerHost = libexec / "frob-controller-host",
-                .jail = libexec / "frob-jail"};
+                .sandbox = libexec / "frob-sandbox"};
 }
 
 const Layout& layout() {

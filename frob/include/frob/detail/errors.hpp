@@ -1,5 +1,5 @@
 #pragma once
-// The machinery behind errors.hpp: what FROB_ASSERT calls, and the node checkFinite makes.
+// The machinery behind errors.hpp: the node checkFinite makes.
 // errors.hpp includes it once it has declared FrobError and isFinite.
 
 #include "frob/behavior.hpp"
@@ -10,8 +10,6 @@
 namespace frob {
 namespace detail {
 
-// Throws UsageError for FROB_ASSERT.
-[[noreturn]] void failAssert(const char* condition, const char* message, const char* file, int line);
 [[nodiscard]] std::string notFiniteMessage(const std::string& what, const Instant& now);
 
 template <class T>

@@ -1,7 +1,7 @@
 #pragma once
-// Private: where a robot's body fits among a world's walls. Nearest-wall distances, a grid of the
-// cells where the body fits, what is reachable from where, and the shortest way. The grader judges
-// runs with it; the world generators check their worlds with it.
+/// Where a robot's body fits among a world's walls: nearest-wall distances, a grid of the cells where
+/// the body fits, what is reachable from where, and the shortest way. The world generators check
+/// their worlds with it; the grader and the diagnosis judge runs with it.
 
 #include "frob/worlds/world_def.hpp"
 
@@ -10,9 +10,7 @@
 #include <queue>
 #include <vector>
 
-namespace frob::course {
-
-using worlds::WallDef;
+namespace frob::worlds {
 
 // Nearest-wall distances, found among the walls whose box lies within `reach` of a bucket.
 class WallIndex {
@@ -34,7 +32,7 @@ class WallIndex {
   // Distance from `p` to the nearest wall's surface, at most `reach`.
   double distance(const Point2& p) const {
     double d = reach_;
-    for (std::size_t w : buckets_[clampY(p.y()) * nx_ + clampX(p.x())]) d = std::min(d, worlds::distanceToWall(p, walls_[w]));
+    for (std::size_t w : buckets_[clampY(p.y()) * nx_ + clampX(p.x())]) d = std::min(d, distanceToWall(p, walls_[w]));
     return d;
   }
 
@@ -165,4 +163,4 @@ class FreeGrid {
   std::vector<bool> free_;
 };
 
-}  // namespace frob::course
+}  // namespace frob::worlds

@@ -3,7 +3,7 @@
 /// is checked for what its kind promises before it is handed out, and writes as a world file that
 /// loads back to the same world. The same kind and seed give the same world on every machine.
 ///
-///   Result<worlds::WorldDef> w = generateWorld(WorldKind::Obstacles, 42);
+///   Result<WorldDef> w = generateWorld(WorldKind::Obstacles, 42);
 ///   std::ofstream("field.toml") << toToml(w.value());
 
 #include "frob/base/result.hpp"
@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-namespace frob::course {
+namespace frob::worlds {
 
 /// What a generated world is. Every kind promises: the robot's start and the point "goal" have at
 /// least 0.1 m of clearance around the body, and the goal can be reached from the start by the body.
@@ -33,10 +33,10 @@ enum class WorldKind {
 [[nodiscard]] std::string worldKindNames();
 
 /// The world of `kind` made from `seed`; fails only if no world keeping the promises was found.
-[[nodiscard]] Result<worlds::WorldDef> generateWorld(WorldKind kind, std::uint64_t seed);
+[[nodiscard]] Result<WorldDef> generateWorld(WorldKind kind, std::uint64_t seed);
 
 /// `world` as a world file (walls, points, robots, keys and the seed; the generators' worlds use
 /// nothing else) that the loader reads back to the same walls and points.
-[[nodiscard]] std::string toToml(const worlds::WorldDef& world);
+[[nodiscard]] std::string toToml(const WorldDef& world);
 
-}  // namespace frob::course
+}  // namespace frob::worlds

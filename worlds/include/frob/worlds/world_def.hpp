@@ -2,6 +2,7 @@
 /// Definitions of a simulated world: plain structs with defaults, filled with designated initializers
 /// in code or by the world-file loader (world_file.hpp). All lengths in metres, angles in radians.
 
+#include "frob/base/result.hpp"
 #include "frob/geometry.hpp"
 #include "frob/robot_values.hpp"
 
@@ -145,10 +146,10 @@ struct WorldDef {
 /// The named point `name`, if the world has one.
 [[nodiscard]] std::optional<Point2> findPoint(const WorldDef& w, const std::string& name);
 /// Checks a world built in code for contradictions (robot inside a wall, outside the world, bad
-/// sizes). Returns an empty string when it is valid, else a readable message naming the field.
-[[nodiscard]] std::string checkWorld(const WorldDef& w);
-/// Checks that `w` has something to run: at least one robot. Empty when it has, else a message
-/// that says how to add one. A world with no robot is fine to draw, not to run or grade.
-[[nodiscard]] std::string checkRunnable(const WorldDef& w);
+/// sizes). Fails with a readable message naming the field.
+[[nodiscard]] Status checkWorld(const WorldDef& w);
+/// Checks that `w` has something to run: at least one robot; else fails with a message that says
+/// how to add one. A world with no robot is fine to draw, not to run or grade.
+[[nodiscard]] Status checkRunnable(const WorldDef& w);
 
 }  // namespace frob::worlds

@@ -7,9 +7,9 @@
 ///   Grade g = grade({.rubric = *rubric, .assignment = "go_to_goal"}, "student.cpp");
 ///   g.score() / g.maxScore()
 
-#include "frob/course/isolation.hpp"
-#include "frob/course/rubric.hpp"
-#include "frob/course/session.hpp"
+#include "frob/grade/rubric.hpp"
+#include "frob/run/host.hpp"
+#include "frob/run/session.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -25,7 +25,7 @@ struct GradeDef {
   std::string assignment;      ///< its name, for reports
   std::string secret;          ///< the instructor's secret for hidden seeds; "" when none is given
   bool visibleOnly = false;    ///< grade only the visible checks (a student checking locally)
-  IsolationDef isolation;      ///< the controller host's limits
+  HostDef host;                ///< the controller host's limits
   std::filesystem::path logs;  ///< a folder for each run's wheel log (for --replay); empty: none
   CompilerSetup compiler = compilerSetup();
 };

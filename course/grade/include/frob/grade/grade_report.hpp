@@ -6,7 +6,7 @@
 ///   std::cout << scoreTable(g);
 ///   Status s = writeGradescope(g, "/autograder/results/results.json");
 
-#include "frob/course/grade.hpp"
+#include "frob/grade/grade.hpp"
 
 #include <filesystem>
 #include <string>

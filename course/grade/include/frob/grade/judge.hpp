@@ -2,7 +2,7 @@
 /// Judging a finished run against a rubric's criteria, from what the trusted simulation recorded
 /// of each robot: its true path, its contacts, and its controller's failure or returned value.
 
-#include "frob/course/rubric.hpp"
+#include "frob/grade/rubric.hpp"
 #include "frob/worlds/world_def.hpp"
 
 #include <optional>

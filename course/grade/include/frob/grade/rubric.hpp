@@ -5,7 +5,7 @@
 /// course/grading.md.
 
 #include "frob/base/result.hpp"
-#include "frob/course/generate.hpp"
+#include "frob/worlds/generate.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -52,15 +52,15 @@ struct Criterion {
 
 /// A world a check runs in: a reference world, a file beside the rubric, or a generated world.
 struct WorldRef {
-  std::string name;                    ///< as reports name it: "maze", "worlds/room.toml", "generated maze, seed 3"
-  std::filesystem::path file;          ///< the file, when it is not a reference world
-  std::optional<WorldKind> generated;  ///< the kind, when it is generated
-  std::uint64_t worldSeed = 0;         ///< the generator's seed, when it is generated
+  std::string name;                            ///< as reports name it: "maze", "worlds/room.toml", "generated maze, seed 3"
+  std::filesystem::path file;                  ///< the file, when it is not a reference world
+  std::optional<worlds::WorldKind> generated;  ///< the kind, when it is generated
+  std::uint64_t worldSeed = 0;                 ///< the generator's seed, when it is generated
 };
 
 /// The worlds a check generates: of one kind, from given seeds and from seeds of the instructor's secret.
 struct GeneratedWorlds {
-  WorldKind kind = WorldKind::Obstacles;
+  worlds::WorldKind kind = worlds::WorldKind::Obstacles;
   std::vector<std::uint64_t> seeds;
   int secret = 0;  ///< how many more, drawn from the secret (named without their seed)
 };

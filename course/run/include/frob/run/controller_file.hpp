@@ -1,7 +1,7 @@
 #pragma once
 /// Student controller files: one C++ file ending with FROB_CONTROLLER(...), compiled in a sandbox
 /// against the project's headers into a shared object, cached by content, then run in a sandboxed
-/// controller host (isolation.hpp) or, for trusted code, loaded into this process.
+/// controller host (host.hpp) or, for trusted code, loaded into this process.
 
 #include "frob/base/result.hpp"
 #include "frob/controller.hpp"
@@ -30,7 +30,7 @@ struct CompilerSetup {
 
 /// The build's compiler and flags, and the headers and precompiled header of frob::layout(); the cache is $FROB_CACHE_DIR, else
 /// $XDG_CACHE_HOME/frob, else ~/.cache/frob. With `checked`, controllers are compiled with AddressSanitizer, UBSan, asserts
-/// and std::vector's index checks on, for a host started with IsolationDef::checked (no precompiled header: slower to build).
+/// and std::vector's index checks on, for a host started with HostDef::checked (no precompiled header: slower to build).
 [[nodiscard]] CompilerSetup compilerSetup(bool checked = false);
 
 /// Where clang's AddressSanitizer runtime is, which a checked controller needs (Debian: libclang-rt-16-dev).
@@ -52,12 +52,12 @@ struct LoadedController {
   bool compiled = false;         ///< true when it was compiled now, false when the cache (or the build) had it
 };
 
-/// Compiles `source` unless the cache already holds it. The compiler runs confined: it reads only
+/// Compiles `source` unless the cache already holds it. The compiler runs in the sandbox: it reads only
 /// the system's headers, frob's, and the source's own folder, within time and memory limits. On a
 /// compile error the error names the file; the compiler's messages go to `messages`, or to stderr.
 [[nodiscard]] Result<CompiledController> compileControllerFile(const std::filesystem::path& source, const CompilerSetup& setup = compilerSetup(),
                                                                std::string* messages = nullptr);
-/// Loads `compiled` into this process, where its code runs unconfined (trusted code only). Its
+/// Loads `compiled` into this process, where its code runs outside the sandbox (trusted code only). Its
 /// module stays loaded for the life of the process.
 [[nodiscard]] Result<LoadedController> loadInProcess(const CompiledController& compiled);
 

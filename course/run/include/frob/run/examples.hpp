@@ -2,7 +2,7 @@
 /// The course's numbered examples (course/examples/NN_name.cpp): the paper's programs as controller
 /// files, prebuilt as modules so that `frob run bug` starts at once.
 
-#include "frob/course/controller_file.hpp"
+#include "frob/run/controller_file.hpp"
 
 #include <filesystem>
 #include <optional>

@@ -9,8 +9,8 @@
 
 #include "frob/base/result.hpp"
 #include "frob/controller.hpp"
-#include "frob/course/controller_file.hpp"
-#include "frob/sandbox/confine.hpp"
+#include "frob/run/controller_file.hpp"
+#include "frob/sandbox/layers.hpp"
 #include "frob/worlds/run.hpp"
 
 #include <cstdint>
@@ -24,7 +24,7 @@
 namespace frob::course {
 
 /// The limits of a controller host and how it waits for its turn.
-struct IsolationDef {
+struct HostDef {
   double stepSeconds = 1.0;                      ///< wall-clock time one step of all its robots may take
   double startSeconds = 10.0;                    ///< to load the modules (global constructors run) and answer
   double runSeconds = 600.0;                     ///< wall-clock time of the whole run, and its CPU limit
@@ -44,7 +44,7 @@ class ControllerHost : public std::enable_shared_from_this<ControllerHost> {
   /// Starts a sandboxed host that loads `modules` (compiled controller files, named in messages
   /// by `sources`). Fails with a reason when one cannot be loaded or its global constructors fail.
   [[nodiscard]] static Result<std::shared_ptr<ControllerHost>> start(const std::vector<std::filesystem::path>& modules,
-                                                                     const std::vector<std::string>& sources, IsolationDef def = {});
+                                                                     const std::vector<std::string>& sources, HostDef def = {});
   ~ControllerHost();
   ControllerHost(const ControllerHost&) = delete;
   ControllerHost& operator=(const ControllerHost&) = delete;
@@ -72,6 +72,6 @@ class ControllerHost : public std::enable_shared_from_this<ControllerHost> {
 [[nodiscard]] std::string missingLayers(const std::vector<sandbox::Layer>& layers);
 
 /// What `compiled` declares, as a sandboxed host reports it: its code never runs in this process.
-[[nodiscard]] Result<LoadedController> describeInHost(const CompiledController& compiled, IsolationDef def = {});
+[[nodiscard]] Result<LoadedController> describeInHost(const CompiledController& compiled, HostDef def = {});
 
 }  // namespace frob::course

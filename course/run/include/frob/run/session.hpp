@@ -6,10 +6,10 @@
 ///              .outputs = {.video = "bug.mp4"}};
 ///   Result<Summary> s = runSession(def);   // a failed controller: s->failed(), and no files written
 
-#include "frob/course/controller_file.hpp"
-#include "frob/course/isolation.hpp"
 #include "frob/debug.hpp"
 #include "frob/render/renderer.hpp"
+#include "frob/run/controller_file.hpp"
+#include "frob/run/host.hpp"
 #include "frob/worlds/run.hpp"
 
 #include <cstdint>
@@ -41,7 +41,7 @@ struct RunDef {
   std::string worldName;                      ///< how the world was named, for the summary
   worlds::SimOptions options;                 ///< dt, seed, scripted keys
   std::vector<LoadedController> controllers;  ///< one per robot, or one for all robots
-  std::optional<IsolationDef> isolation;      ///< set: the controllers run in a sandboxed host (each needs its module)
+  std::optional<HostDef> host;                ///< set: the controllers run in a sandboxed host (each needs its module)
   double seconds = 60.0;                      ///< simulated seconds at most; ends sooner once every controller's task returned
   RunOutputs outputs;                         ///< files to write
   int fps = 30;                               ///< frames per second of the video and frames
@@ -78,7 +78,7 @@ struct Summary {
   std::vector<RobotSummary> robots;     ///< one per robot
   std::vector<std::string> written;     ///< the files written, in order
   std::vector<std::string> notes;       ///< what is worth saying besides, e.g. that output was cut
-  std::vector<sandbox::Layer> sandbox;  ///< the controller host's layers (empty when not isolated)
+  std::vector<sandbox::Layer> sandbox;  ///< the controller host's layers (empty when not in a sandbox)
   /// True when a controller failed.
   [[nodiscard]] bool failed() const;
 };

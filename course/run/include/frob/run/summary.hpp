@@ -1,7 +1,7 @@
 #pragma once
 /// A run's summary as people read it and as JSON, with the wall time the caller measured.
 
-#include "frob/course/session.hpp"
+#include "frob/run/session.hpp"
 
 #include <string>
 

@@ -5,6 +5,9 @@
 /// (the host on a futex, the trusted side in poll on an eventfd); the ringer wakes it only if it
 /// sleeps, so a step in which both sides spin makes no system call at all.
 
+#include "frob/base/result.hpp"
+#include "frob/sandbox/fd.hpp"
+
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -67,14 +70,14 @@ class Channel {
   Channel(Channel&& other) noexcept;
   Channel& operator=(Channel&& other) noexcept;
 
-  /// Trusted side: a new memfd holding a header and a setup area of `setupBytes`; "" or a reason.
-  [[nodiscard]] std::string create(std::size_t setupBytes);
-  /// Trusted side: room for `robots` robot areas of `inBytes` + `outBytes` each; "" or a reason.
-  [[nodiscard]] std::string resize(std::uint32_t robots, std::size_t inBytes, std::size_t outBytes);
-  /// Host: maps the channel on `fd` with the sizes its header gives now; "" or a reason.
-  [[nodiscard]] std::string attach(int fd);
+  /// Trusted side: a new memfd holding a header and a setup area of `setupBytes`.
+  [[nodiscard]] Status create(std::size_t setupBytes);
+  /// Trusted side: room for `robots` robot areas of `inBytes` + `outBytes` each.
+  [[nodiscard]] Status resize(std::uint32_t robots, std::size_t inBytes, std::size_t outBytes);
+  /// Host: maps the channel on `fd`, which it then owns, with the sizes its header gives now.
+  [[nodiscard]] Status attach(int fd);
 
-  [[nodiscard]] int fd() const { return fd_; }
+  [[nodiscard]] int fd() const { return fd_.get(); }
   /// The header, at an address that stays put when the channel grows.
   [[nodiscard]] Header& header() const { return *reinterpret_cast<Header*>(head_); }
   [[nodiscard]] std::span<std::byte> setup() const;
@@ -82,11 +85,11 @@ class Channel {
   [[nodiscard]] std::span<std::byte> replyArea(std::uint32_t robot) const;
 
  private:
-  std::string map(std::size_t bytes);
+  Status map(std::size_t bytes);
   std::byte* head_ = nullptr;  // the header's page, mapped once
   std::byte* base_ = nullptr;  // the whole channel, mapped anew as it grows
   std::size_t mapped_ = 0;
-  int fd_ = -1;
+  Fd fd_;
   // The layout as this side knows it (the trusted side never reads it back from the header).
   std::size_t setupBytes_ = 0, inBytes_ = 0, outBytes_ = 0;
   std::uint32_t robots_ = 0;

@@ -1,7 +1,7 @@
 #pragma once
-/// The layers that confine an untrusted process, each applied to the calling process and each
+/// The layers of the sandbox around an untrusted process, each applied to the calling process and each
 /// reporting whether it took effect: resource limits, an unprivileged user, no new privileges,
-/// Landlock for files, seccomp for system calls. The jail applies them before it runs a compiler or
+/// Landlock for files, seccomp for system calls. frob-sandbox applies them before it runs a compiler or
 /// a controller host; the host adds its own system-call filter before it loads student code.
 
 #include <cstdint>

@@ -27,7 +27,7 @@ struct Layout {
   std::filesystem::path precompiledHeader;  ///< frob.hpp precompiled as seen through headerOverlay
   std::filesystem::path headerOverlay;      ///< clang VFS overlay mapping kSdkIncludeDir to includeDir
   std::filesystem::path controllerHost;     ///< frob-controller-host
-  std::filesystem::path jail;               ///< frob-jail
+  std::filesystem::path sandbox;            ///< frob-sandbox, which runs a program under the sandbox
 };
 
 /// The layout of the running program: the installed one when the program sits in the bin folder of

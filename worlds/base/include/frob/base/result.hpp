@@ -3,6 +3,8 @@
 /// files, rubrics, compiles): a value or a readable message saying what went wrong and with which
 /// file. Nothing of ours throws for such failures; they come back as these.
 
+#include "frob/assert.hpp"
+
 #include <optional>
 #include <string>
 #include <utility>
@@ -35,25 +37,28 @@ class Result {
   /// A success holding `value`.
   Result(T value) : value_(std::move(value)) {}  // NOLINT(google-explicit-constructor)
   /// A failure carrying the message of `status` (which must have failed).
-  Result(Status status) : status_(std::move(status)) {}  // NOLINT(google-explicit-constructor)
+  Result(Status status) : status_(std::move(status)) {  // NOLINT(google-explicit-constructor)
+    FROB_ASSERT(!status_.ok(), "a Result made from a Status that did not fail");
+  }
   /// True when a value is held.
   [[nodiscard]] bool ok() const { return value_.has_value(); }
   /// True when a value is held.
   explicit operator bool() const { return ok(); }
-  /// The value; only when ok().
-  [[nodiscard]] T& value() { return *value_; }
-  /// The value; only when ok().
-  [[nodiscard]] const T& value() const { return *value_; }
-  /// The value; only when ok().
-  [[nodiscard]] const T& operator*() const { return *value_; }
-  /// The value; only when ok().
-  [[nodiscard]] const T* operator->() const { return &*value_; }
+  /// The value; asking for it after a failure is a programmer's mistake (FROB_ASSERT).
+  [[nodiscard]] T& value() { return checked(), *value_; }
+  /// The value; asking for it after a failure is a programmer's mistake (FROB_ASSERT).
+  [[nodiscard]] const T& value() const { return checked(), *value_; }
+  /// As value().
+  [[nodiscard]] const T& operator*() const { return checked(), *value_; }
+  /// As value().
+  [[nodiscard]] const T* operator->() const { return checked(), &*value_; }
   /// The message; empty on success.
   [[nodiscard]] const std::string& error() const { return status_.error(); }
   /// The outcome without the value.
   [[nodiscard]] const Status& status() const { return status_; }
 
  private:
+  void checked() const { FROB_ASSERT(value_.has_value(), "the value of a failed Result was asked for"); }
   std::optional<T> value_;
   Status status_;
 };
