@@ -1,7 +1,7 @@
 // The class gradebook: RFC 4180 CSV (fields with a comma, quote, CR or LF quoted, quotes doubled,
 // records ended by CRLF), one row per submission; and the merge of the shards' gradebooks.
 #include "frob/grade/grade_report.hpp"
-#include "grade_files.hpp"
+#include "writers.hpp"
 
 #include <algorithm>
 #include <map>
