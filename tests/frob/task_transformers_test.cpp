@@ -43,6 +43,72 @@ TEST(Transformers, AddErrorCoversEverySubtaskAndEndsWithTheWrappedTask) {
   EXPECT_EQ(forwardOf(runTask(idleRobot(), seq()), 7), (std::vector<double>{1, 2, 2, 3, 4, 4, 4}));
 }
 
+// One occurrence is delivered once (event.hpp): an addError event that occurs once, at t = 0.3,
+// fails the subtask running then; the inner handler catches it, and the task it starts in that
+// instant runs on: the outer handler never hears of it.
+TEST(Transformers, AScopedErrorsOneOccurrenceIsCaughtOnceByTheInnermostHandler) {
+  int inner = 0, outer = 0;
+  auto t = taskCatch(addError(after(0.3).map([] { return RoboErr("bump"); }), taskCatch(forever(1),
+                                                                                        [&inner](const RoboErr&) {
+                                                                                          ++inner;
+                                                                                          return drive(2, 0.25);
+                                                                                        })),
+                     [&outer](const RoboErr&) {
+                       ++outer;
+                       return forever(9);
+                     });
+  const std::vector<double> f = forwardOf(runTask(idleRobot(), Task<Wheels>(std::move(t))), 8);
+  EXPECT_EQ(f, (std::vector<double>{1, 1, 1, 2, 2, 2, 0, 0}));  // 2 from 0.3 to 0.55, then the run's end
+  EXPECT_EQ(inner, 1);
+  EXPECT_EQ(outer, 0);
+}
+
+// The paper's BUG pattern under addError: one occurrence restarts the attempt once, not a thousand
+// times in one instant; a second occurrence restarts it again.
+TEST(Transformers, ARestartingHandlerRestartsOncePerOccurrenceOfAScopedError) {
+  int restarts = 0;
+  auto attempts = [&restarts]() -> Task<Wheels> {
+    for (;;) {
+      try {
+        co_await forever(1 + restarts);
+      } catch (const RoboErr&) {
+        ++restarts;
+      }
+    }
+  };
+  auto t = addError(every(0.3).map([] { return RoboErr("bump"); }), attempts());
+  const std::vector<double> f = forwardOf(runTask(idleRobot(), std::move(t)), 8);
+  EXPECT_EQ(f, (std::vector<double>{1, 1, 1, 2, 2, 2, 3, 3}));
+  EXPECT_EQ(restarts, 2);
+}
+
+// Only an occurrence that ended or failed a task is used up: a time limit that expires in the
+// instant its body's first subtask ends (the exit wins the tie) still ends the next subtask.
+TEST(Transformers, AScopesOccurrenceThatLostATieStillEndsTheNextTask) {
+  bool inTime = true;
+  auto t = [&inTime]() -> Task<Wheels> {
+    auto body = []() -> Task<Wheels> {
+      co_await drive(1, 0.3);
+      co_await forever(2);
+    };
+    inTime = co_await timeLimit(body(), 0.3);
+    co_await drive(3, 0.2);
+  };
+  EXPECT_EQ(forwardOf(runTask(idleRobot(), t()), 6), (std::vector<double>{1, 1, 1, 3, 3, 0}));
+  EXPECT_FALSE(inTime);
+}
+
+// A sequence's next task, started in the instant the previous one ended on a stored event, does
+// not end at once on that same occurrence: it waits for the next one.
+TEST(Transformers, TheNextTaskOfASequenceDoesNotSeeTheOccurrenceThatEndedTheLastOne) {
+  const Event<Unit> tick = every(0.3).as(Unit{});
+  auto seq = [tick]() -> Task<Wheels> {
+    co_await mkTask([tick](const TaskState&) { return std::pair{wheels(1, 0), tick}; });
+    co_await mkTask([tick](const TaskState&) { return std::pair{wheels(2, 0), tick}; });
+  };
+  EXPECT_EQ(forwardOf(runTask(idleRobot(), seq()), 8), (std::vector<double>{1, 1, 1, 2, 2, 2, 0, 0}));
+}
+
 Task<Wheels, int> driveThen(double forward, double seconds, int result) {
   return mkTask([=](const TaskState&) { return std::pair{wheels(forward, 0), after(seconds).map([result] { return result; })}; });
 }

@@ -1,5 +1,12 @@
 #pragma once
 /// Events: discrete occurrences in time, each carrying a value; at most one per instant.
+///
+/// One occurrence is delivered once. A task sees an occurrence of its exit event, its error event
+/// or an enclosing scope's (addError, timeLimit, withExit) at the instant it happens, once: when a
+/// task ends or fails on it, the task started in that same instant (the next task of a sequence,
+/// a taskCatch handler's task) does not see that occurrence again, though it sees its own events'
+/// occurrences at that instant (a predicate whose condition already holds). An occurrence that
+/// lost a tie (a scope's, while the task's own exit won) still ends the task started next.
 
 #include "frob/behavior.hpp"
 
@@ -74,7 +81,9 @@ template <class T = Unit>
 }
 
 /// Occurs when `condition` becomes true, including at its first sample if it already holds; it
-/// occurs again only after the condition has been false.
+/// occurs again only after the condition has been false. The condition is sampled once per step
+/// of the run (its dt: 0.01 s in the simulator unless the world says otherwise): a condition true
+/// only between two samples never fires.
 [[nodiscard]] inline Event<Unit> predicate(const Behavior<bool>& condition) {
   return Event<Unit>(std::make_shared<detail::PredicateNode>(condition.node()));
 }

@@ -29,7 +29,11 @@ namespace frob {
 
 /// The paper's taskCatch: runs `t`; if it fails with a RoboErr, becomes `handler(error)`.
 /// The handler takes this task's place (a tail call), so a task that restarts itself from its
-/// handler, as the paper's `bug` does, runs in constant memory.
+/// handler, as the paper's `bug` does, runs in constant memory. The RoboErrs it sees: taskError,
+/// a mkTaskE error event, an enclosing addError's event, and withExit's "ended before its withExit
+/// event" (a mistake in the task's logic). A timeLimit's timeout is not one: it ends the timeLimit
+/// with std::nullopt, whatever handlers lie between. The occurrence that failed `t` is not seen
+/// again by the handler's task (event.hpp: one occurrence is delivered once).
 template <class A, class B, class H>
   requires std::invocable<H&, const RoboErr&>
 [[nodiscard]] Task<A, B> taskCatch(Task<A, B> t, H handler, std::source_location loc = std::source_location::current()) {
@@ -37,7 +41,9 @@ template <class A, class B, class H>
   return detail::catching(std::move(t), std::move(handler)).at(loc).named("taskCatch(" + inner + ")");
 }
 
-/// The paper's addError: `error` fails every subtask of `t` while `t` runs (scoped).
+/// The paper's addError: `error` fails every subtask of `t` while `t` runs (scoped), with a
+/// RoboErr that a taskCatch inside `t` can catch. Each occurrence fails the subtask running at its
+/// instant, once: a handler's task started in that instant runs on.
 template <class A, class B>
 [[nodiscard]] Task<A, B> addError(Event<RoboErr> error, Task<A, B> t, std::source_location loc = std::source_location::current()) {
   std::string name = "addError(" + t.name() + ")";
@@ -46,7 +52,8 @@ template <class A, class B>
 }
 
 /// The paper's timeLimit: `t`'s result, or std::nullopt if `t` has not ended within `seconds`
-/// (then `t` and its subtasks are aborted). For a task without a result (Task<A>), a bool: true
+/// (then `t` and its subtasks are aborted; the timeout is no RoboErr, so no taskCatch inside `t`
+/// can hold it up: the limit holds). For a task without a result (Task<A>), a bool: true
 /// when `t` ended in time, so `if (!co_await timeLimit(t, 5_s))` reads "if it ran out of time".
 template <class A, class B>
 [[nodiscard]] Task<A, TimeLimitResult<B>> timeLimit(Task<A, B> t, double seconds, std::source_location loc = std::source_location::current()) {

@@ -9,6 +9,7 @@
 #include "frob/event.hpp"
 #include "frob/task_state.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <concepts>
 #include <coroutine>
@@ -163,6 +164,19 @@ struct RunContext {
   std::exception_ptr origin;                                     // an unexpected exception, and the task it first left
   std::string originTask;
   std::int64_t nextScope = 0;
+  std::uint64_t seenAt = 0;                       // the instant `seen` holds occurrences of
+  std::vector<std::shared_ptr<const void>> seen;  // event nodes whose occurrence ended or failed a task then,
+                                                  // held so that no new node takes one's address
+
+  // One occurrence is delivered once: an occurrence that ended or failed a task of this run (its
+  // exit, its error or a scope's) is not seen again by a task started in the same instant.
+  [[nodiscard]] bool fresh(const void* node, const Instant& at) const {
+    return seenAt != at.id || std::none_of(seen.begin(), seen.end(), [node](const auto& n) { return n.get() == node; });
+  }
+  void see(std::shared_ptr<const void> node, const Instant& at) {
+    if (seenAt != at.id) seen.clear(), seenAt = at.id;
+    seen.push_back(std::move(node));
+  }
 
   // The paper's snapRobot: record where the robot is as one task ends and the next begins.
   void snapshot(const Instant& at) {
@@ -461,7 +475,8 @@ class AtomicAwaiter final : public AtomicBase<A> {
   const A* step(const Instant& now) override {
     if (!error_ && ctx_->interrupts.empty()) {  // the common case, kept short: it runs every step
       if (!exitNever_) {
-        if (const std::optional<E>& exit = exit_.at(now)) {
+        if (const std::optional<E>& exit = exit_.at(now); exit && ctx_->fresh(exit_.node().get(), now)) {
+          ctx_->see(exit_.node(), now);
           result_ = *exit;
           return nullptr;
         }
@@ -473,21 +488,33 @@ class AtomicAwaiter final : public AtomicBase<A> {
   void fail(std::exception_ptr e) override { failure_ = std::move(e); }
 
  private:
+  // The occurrence of `e` at `now` unless it already ended or failed a task of this run.
+  template <class T>
+  const std::optional<T>* occurrence(const Event<T>& e, const Instant& now) const {
+    const std::optional<T>& o = e.at(now);
+    return o && ctx_->fresh(e.node().get(), now) ? &o : nullptr;
+  }
+
   bool check(const Instant& now) {
-    const std::optional<E>& exit = exit_.at(now);
     // Every event is sampled each instant so stateful ones stay current; the exit wins ties, then
-    // the task's own error, then the innermost scope.
-    const std::optional<RoboErr>* error = error_ ? &error_->at(now) : nullptr;
+    // the task's own error, then the innermost scope. Only the winner is used up: a scope's
+    // occurrence that lost a tie still ends the next task started in this instant.
+    const std::optional<E>* exit = occurrence(exit_, now);
+    const std::optional<RoboErr>* error = error_ ? occurrence(*error_, now) : nullptr;
     const std::optional<std::exception_ptr>* interrupt = nullptr;
+    const Event<std::exception_ptr>* scope = nullptr;
     for (auto it = ctx_->interrupts.rbegin(); it != ctx_->interrupts.rend(); ++it) {
-      const std::optional<std::exception_ptr>& o = it->at(now);
-      if (o && interrupt == nullptr) interrupt = &o;
+      const std::optional<std::exception_ptr>* o = occurrence(*it, now);
+      if (o && interrupt == nullptr) interrupt = o, scope = &*it;
     }
     if (exit) {
-      result_ = *exit;
-    } else if (error && *error) {
+      ctx_->see(exit_.node(), now);
+      result_ = **exit;
+    } else if (error) {
+      ctx_->see(error_->node(), now);
       failure_ = std::make_exception_ptr(**error);
     } else if (interrupt) {
+      ctx_->see(scope->node(), now);
       failure_ = **interrupt;
     } else {
       return false;
