@@ -1,5 +1,6 @@
 #include "frob/task.hpp"
 
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <string_view>
@@ -94,6 +95,12 @@ std::string tooDeepMessage(const std::vector<std::string>& chain, int limit) {
          " waits for that call, so every earlier call stays in memory for as long as the robot runs. End it with "
          "co_await become(" +
          self + "()); instead: the new call then takes the old one's place.";
+}
+
+std::string endedOutputMessage(const std::string& task, double endedAt, double readAt) {
+  char times[96];
+  std::snprintf(times, sizeof times, "ended at t = %.3f s, and its output was read at t = %.3f s", endedAt, readAt);
+  return "withTask: task '" + task + "' " + times + ": a task's output exists only while it runs (stop reading it when its end event occurs)";
 }
 
 std::optional<RoboErr> roboErrIn(const std::exception_ptr& e) {

@@ -49,6 +49,46 @@ TEST(Parallel, WithTaskShowsEachTheOthersOutputAndTheFirstsEnd) {
   EXPECT_EQ(s[3].forward, 0);  // the second ended at t = 0.3 when the first did: final output
 }
 
+// withTask's end event occurs once, at the instant the first task ended (0.3 s), the same for every
+// observer: a subtask of the second that starts later (at 0.5 s) does not see it, whether or not
+// an earlier subtask looked at the event when it occurred.
+TEST(Parallel, WithTaskEndOccursAtTheFirstsEndWhoeverLookedBefore) {
+  for (const bool glance : {false, true}) {
+    std::optional<int> seen;
+    auto t = withTask([](Behavior<Wheels>) { return drive(0, 0.3); },
+                      [glance, &seen](Behavior<Wheels>, Event<Outcome<void>> end) -> Task<Wheels> {
+                        // The first subtask ends at 0.5 s; glancing, it samples the end event each step.
+                        Behavior<bool> heard = hold(false, end.as(true));
+                        co_await mkTask([glance, heard](const TaskState&) {
+                          return std::pair{wheels(glance ? lift([](bool h) { return h ? 1.0 : 1.0; }, heard) : Behavior<double>(1.0), 0), after(0.5)};
+                        });
+                        seen = co_await mkTask([end](const TaskState&) { return std::pair{wheels(2, 0), end.as(1) | after(0.3).as(2)}; });
+                      });
+    const std::vector<Wheels> s = run(std::move(t), 10);
+    ASSERT_TRUE(seen) << "glance " << glance;
+    EXPECT_EQ(*seen, 2) << "glance " << glance;  // its own timer ended it: the end had occurred before it began
+    EXPECT_EQ(s[5].forward, 2);
+    EXPECT_EQ(s[8].forward, 0);  // ended at 0.8 s
+  }
+}
+
+// Reading the first task's output once it has ended is an error that names the task and the
+// instants, never a silent default value.
+TEST(Parallel, WithTaskReadingTheFirstsOutputAfterItsEndIsAnError) {
+  auto t = withTask([](Behavior<Wheels>) { return drive(5.5, 0.3); },
+                    [](Behavior<Wheels> first, Event<Outcome<void>>) {
+                      return mkTask([first](const TaskState&) { return std::pair{first, after(1.0)}; });
+                    });
+  Behavior<Wheels> b = runTask(idleRobot(), Task<Wheels>(std::move(t)));
+  std::string message;
+  try {
+    (void)sample(b, 0.1, 6);
+  } catch (const FrobError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("withTask: task 'drive' ended at t = 0.300 s, and its output was read at t = 0.300 s"), std::string::npos) << message;
+}
+
 // Issue 15: generic lambdas for both; the first's argument is then a Behavior<Wheels>.
 TEST(Parallel, WithTaskTakesGenericLambdas) {
   auto t =

@@ -31,6 +31,10 @@ namespace frob {
 /// the first sees the second's output one step late (no algebraic loop). When the second ends,
 /// the first is aborted. The first runs with a fresh copy of the task state. Either function may
 /// be a generic lambda; the first's argument is then a Behavior<Wheels>.
+/// `end1` occurs once, at the instant the first ended, the same for every subtask of the second;
+/// a subtask started after that instant does not see it (as any event's past occurrence). Reading
+/// `out1` at or after that instant is a run-time error naming the task and the instants, as the
+/// paper says: the first's output exists only while it runs.
 template <class F1, class F2>
 [[nodiscard]] auto withTask(F1 t1f, F2 t2f, std::source_location loc = std::source_location::current()) {
   using A2 = detail::FedOutput<F1>;

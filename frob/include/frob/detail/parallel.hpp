@@ -9,12 +9,16 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <utility>
 #include <variant>
 #include <vector>
 
 namespace frob {
 namespace detail {
+
+// Why reading withTask's first task's output after it ended fails.
+[[nodiscard]] std::string endedOutputMessage(const std::string& task, double endedAt, double readAt);
 
 // A task run beside the current one in a run of its own: a fresh copy of the task state, none of
 // the parent's scopes or filters (as the paper's cloneState). Destroying it aborts the task.
@@ -38,7 +42,8 @@ Strand<A, B> startStrand(const TaskState& state, std::int64_t parentRecord, Task
   return {runner, Behavior<A>(runner)};
 }
 
-// Occurs once, at the instant the strand's task has ended, carrying how.
+// Occurs once, at the instant the strand's task ended, carrying how: the same occurrence for every
+// observer, whenever it first looked. A task started after that instant does not see it.
 template <class A, class B>
 class StrandEndNode final : public EventNode<Outcome<B>> {
  public:
@@ -46,16 +51,35 @@ class StrandEndNode final : public EventNode<Outcome<B>> {
 
  protected:
   std::optional<Outcome<B>> compute(const Instant& now) override {
-    if (fired_) return std::nullopt;
     strand_.output.at(now);  // run it up to now
-    if (!strand_.done()) return std::nullopt;
-    fired_ = true;
+    const std::optional<Instant>& end = strand_.runner->endedAt();
+    if (!end || end->id != now.id) return std::nullopt;
     return strand_.outcome();
   }
 
  private:
   Strand<A, B> strand_;
-  bool fired_ = false;
+};
+
+// A strand's output as withTask's second task reads it: from the instant the strand's task ended
+// on, a read is a run-time error naming the task and both instants (the paper: "reference to the
+// value of t1 after this event will result in a runtime error"), never a silent default.
+template <class A, class B>
+class StrandOutputNode final : public BehaviorNode<A> {
+ public:
+  explicit StrandOutputNode(Strand<A, B> s) : strand_(std::move(s)) {}
+
+ protected:
+  A compute(const Instant& now) override {
+    A v = strand_.output.at(now);
+    if (const std::optional<Instant>& end = strand_.runner->endedAt()) {
+      throw FrobError(endedOutputMessage(strand_.runner->taskName(), end->time, now.time));
+    }
+    return v;
+  }
+
+ private:
+  Strand<A, B> strand_;
 };
 
 template <class A, class B>
@@ -106,9 +130,9 @@ Task<A2, B2> feeding(F1 first, F2 second) {
   Strand<A1, B1> strand = startStrand(ctx->state, record, std::invoke(first, secondOut));
   ScopeEntry<Watcher> keep(ctx->watchers, keepSampling(strand.output));
   if constexpr (std::is_void_v<B2>) {
-    co_await std::invoke(second, strand.output, endOf(strand));
+    co_await std::invoke(second, Behavior<A1>(std::make_shared<StrandOutputNode<A1, B1>>(strand)), endOf(strand));
   } else {
-    co_return co_await std::invoke(second, strand.output, endOf(strand));
+    co_return co_await std::invoke(second, Behavior<A1>(std::make_shared<StrandOutputNode<A1, B1>>(strand)), endOf(strand));
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <string>
 
 namespace frob {
@@ -19,7 +20,12 @@ class RunnerNode final : public BehaviorNode<A> {
   // `parentRecord` and, with `holdRoboErrs`, keeps an uncaught RoboErr in result() for the other
   // branch to catch; any other exception ends the whole run, as it would at the top.
   RunnerNode(TaskState ts, Task<A, B> task, Behavior<A> final, std::int64_t parentRecord = -1, bool holdRoboErrs = false)
-      : ctx_(std::move(ts)), task_(std::move(task)), final_(std::move(final)), parentRecord_(parentRecord), holdRoboErrs_(holdRoboErrs) {}
+      : ctx_(std::move(ts)),
+        name_(task.name()),
+        task_(std::move(task)),
+        final_(std::move(final)),
+        parentRecord_(parentRecord),
+        holdRoboErrs_(holdRoboErrs) {}
   RunnerNode(const RunnerNode&) = delete;
   RunnerNode& operator=(const RunnerNode&) = delete;
   ~RunnerNode() override {
@@ -29,6 +35,10 @@ class RunnerNode final : public BehaviorNode<A> {
   /// The task's result or error once it has ended (done() is true).
   [[nodiscard]] bool done() const { return slot_.value.has_value() || slot_.error != nullptr; }
   [[nodiscard]] const ResultSlot<ResultOf<B>>& result() const { return slot_; }
+  /// The instant the task ended, once it has (as first sampled then: the runner is sampled each instant).
+  [[nodiscard]] const std::optional<Instant>& endedAt() const { return endedAt_; }
+  /// The name of the task it runs.
+  [[nodiscard]] const std::string& taskName() const { return name_; }
 
  protected:
   A compute(const Instant& now) override {
@@ -93,6 +103,7 @@ class RunnerNode final : public BehaviorNode<A> {
   static constexpr int kMaxTransitionsPerInstant = 1000;
 
   A finished(const Instant& now) {
+    if (!endedAt_) endedAt_ = now;
     if (slot_.error && !reported_ && !(holdRoboErrs_ && roboErrIn(slot_.error))) {
       reported_ = true;
       TaskEnd how = TaskEnd::Failed;
@@ -125,12 +136,14 @@ class RunnerNode final : public BehaviorNode<A> {
   }
 
   RunContext<A> ctx_;
+  std::string name_;
   Task<A, B> task_;
   Behavior<A> final_;
   ResultSlot<ResultOf<B>> slot_;
   std::exception_ptr failure_;
   std::int64_t parentRecord_;
   bool holdRoboErrs_;
+  std::optional<Instant> endedAt_;
   bool started_ = false;
   bool reported_ = false;
 };
