@@ -139,6 +139,7 @@ Task<A, B> catching(Task<A, B> body, H handler) {
     caught = e;
   }
   co_await become(Task<A, B>(std::invoke(handler, *caught)));
+  if constexpr (!std::is_void_v<B>) __builtin_unreachable();  // become() destroys this frame: it never resumes
 }
 
 // timeLimit: `body` with a scope that aborts it `limit` seconds after it starts.
