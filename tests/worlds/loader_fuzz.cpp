@@ -23,7 +23,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     return 0;
   }
-  if (const Status s = checkWorld(*w); !s) {
+  if (const frob::Status s = checkWorld(*w); !s) {
     std::fprintf(stderr, "loaded a world that fails its own check: %s\n", s.error().c_str());
     std::abort();
   }
