@@ -34,7 +34,8 @@ constexpr std::size_t kSetupBytes = 1 << 20;
 constexpr std::size_t kFrameBytes = 64 << 10;   // a frame: its sonars, bumps and keys
 constexpr std::size_t kReplyBytes = 256 << 10;  // a reply: wheels, task records, a picture
 constexpr std::uint32_t kNobody = 65534;
-constexpr std::size_t kTailBytes = 4096;  // of the host's output kept for a checked run's report
+constexpr std::size_t kTailBytes = 4096;              // of the host's output kept for a checked run's report
+constexpr std::chrono::milliseconds kWatchEvery{20};  // how often a waiting step's memory and CPU are looked at
 
 std::string seconds(double s) {
   char buf[32];
@@ -105,7 +106,10 @@ struct ControllerHost::Impl {
   // Passes on what the host printed, up to the limit.
   void drainOutput() {
     char buf[1 << 16];
-    for (ssize_t n; output.valid() && (n = ::read(output.get(), buf, sizeof buf)) > 0;) {
+    while (output.valid()) {
+      const ssize_t n = ::read(output.get(), buf, sizeof buf);
+      if (n == 0) return output.reset();  // the host closed its output: nothing more to read or to poll
+      if (n < 0) return;
       const std::uint64_t room = def.outputBytes > outputSeen ? def.outputBytes - outputSeen : 0;
       const std::string_view text(buf, std::min<std::uint64_t>(room, static_cast<std::uint64_t>(n)));
       outputSeen += static_cast<std::uint64_t>(n);
@@ -169,6 +173,7 @@ struct ControllerHost::Impl {
         std::min(runDeadline, start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit)));
     bell.sleeping.store(1, std::memory_order_seq_cst);
     std::optional<std::pair<Clock::time_point, double>> cpuFrom;  // when the step had run a while, and its CPU then
+    Clock::time_point watched = start;                            // the memory and CPU watch's last look
     std::string why;
     for (;;) {
       if (bell.sequence.load(std::memory_order_seq_cst) == seq) break;
@@ -188,7 +193,7 @@ struct ControllerHost::Impl {
       }
       pollfd fds[3] = {{wake.get(), POLLIN, 0}, {output.get(), POLLIN, 0}, {process.pidfd(), POLLIN, 0}};
       const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count() + 1;
-      const int ready = ::poll(fds, 3, static_cast<int>(std::min<long long>(ms, 20)));
+      ::poll(fds, 3, static_cast<int>(std::min<long long>(ms, 20)));
       if (fds[0].revents != 0) {
         std::uint64_t count = 0;
         [[maybe_unused]] const ssize_t n = ::read(wake.get(), &count, sizeof count);
@@ -199,8 +204,10 @@ struct ControllerHost::Impl {
         why = death(process.wait());
         break;
       }
-      if (ready == 0) {
-        if (!cpuFrom) cpuFrom.emplace(Clock::now(), cpuSeconds(process.pid()));
+      // On a timer, whatever the output pipe does (a flood, or a hang-up that polls ready for ever).
+      if (const Clock::time_point t = Clock::now(); t - watched >= kWatchEvery) {
+        watched = t;
+        if (!cpuFrom) cpuFrom.emplace(t, cpuSeconds(process.pid()));
         if (!memoryLimited && residentBytes(process.pid()) > def.memoryBytes) {
           why = "used more than " + megabytes(def.memoryBytes) + " of memory";
           break;

@@ -11,6 +11,7 @@
 #include <dlfcn.h>
 #include <gtest/gtest.h>
 #include <poll.h>
+#include <sys/resource.h>
 #include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -145,6 +146,21 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"throws_int", "ada: an exception of unknown type"},
                       Case{"commands_nan", "ada: the controller commanded non-finite wheels {forward nan m/s, turn 0.000 rad/s} at t = 0.500 s"}),
     [](const ::testing::TestParamInfo<Case>& info) { return info.param.module; });
+
+// A host that closes its output makes the pipe poll ready for ever: the grader still waits for the
+// step without spinning (so the memory and CPU watch runs on its timer), and fails it as a sleeper.
+TEST(Sandbox, AHostThatClosesItsOutputIsWaitedForWithoutSpinning) {
+  rusage before{}, after{};
+  ::getrusage(RUSAGE_SELF, &before);
+  const Outcome o = runHostile({"closes_output"});
+  ::getrusage(RUSAGE_SELF, &after);
+  ASSERT_EQ(o.failures.size(), 1u);
+  EXPECT_EQ(o.failures[0].message, "ada: did not answer within 1 s in one step (it waited or slept) at t = 0.50 s");
+  const auto seconds = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+  const double cpu = seconds(after.ru_utime) - seconds(before.ru_utime) + seconds(after.ru_stime) - seconds(before.ru_stime);
+  // The step's 1 s wait: a busy loop spends most of it on the CPU, a poll with a timer next to none.
+  EXPECT_LT(cpu, 0.4) << "the grader spun while it waited";
+}
 
 TEST(Sandbox, NothingOutsideItsScratchFolderIsReadOrWritten) {
   fs::remove("/tmp/frob-hostile-was-here");
