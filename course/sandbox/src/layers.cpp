@@ -178,6 +178,18 @@ Layer restrictSyscalls(SyscallPolicy policy) {
                      SCMP_SYS(pidfd_send_signal), SCMP_SYS(pidfd_getfd), SCMP_SYS(setsid), SCMP_SYS(setpgid)}) {
       deny(call);
     }
+    // No kernel objects shared between processes, which outlive the run and would carry notes from
+    // one run, or one student, to the next: System V IPC and POSIX message queues.
+    for (int call : {SCMP_SYS(shmget), SCMP_SYS(shmat), SCMP_SYS(shmctl), SCMP_SYS(msgget), SCMP_SYS(msgsnd), SCMP_SYS(msgrcv), SCMP_SYS(msgctl),
+                     SCMP_SYS(semget), SCMP_SYS(semop), SCMP_SYS(semtimedop), SCMP_SYS(semctl), SCMP_SYS(mq_open), SCMP_SYS(mq_unlink),
+                     SCMP_SYS(mq_timedsend), SCMP_SYS(mq_timedreceive), SCMP_SYS(mq_notify), SCMP_SYS(mq_getsetattr)}) {
+      deny(call);
+    }
+    // No signals asked for on a file: they could be sent to another process (before Landlock scopes signals).
+    for (const std::uint64_t command : {F_SETOWN, F_SETOWN_EX, F_SETSIG, F_SETLEASE}) {
+      const scmp_arg_cmp asks{.arg = 1, .op = SCMP_CMP_EQ, .datum_a = command, .datum_b = 0};
+      if (rc == 0) rc = ::seccomp_rule_add_array(ctx, refuse, SCMP_SYS(fcntl), 1, &asks);
+    }
     // Threads may start; processes may not. clone3 hides its flags from the filter, so it reports
     // "not implemented" and the C library falls back to clone.
     const scmp_arg_cmp noThread{.arg = 0, .op = SCMP_CMP_MASKED_EQ, .datum_a = CLONE_THREAD, .datum_b = 0};
@@ -195,7 +207,7 @@ Layer restrictSyscalls(SyscallPolicy policy) {
   if (rc == 0) rc = ::seccomp_load(ctx);
   ::seccomp_release(ctx);
   layer.applied = rc == 0;
-  layer.note = rc == 0 ? (controller ? "no sockets, exec, processes, tracing or signals to others" : "no sockets or tracing")
+  layer.note = rc == 0 ? (controller ? "no sockets, exec, processes, tracing, IPC objects or signals to others" : "no sockets or tracing")
                        : std::string("not applied: ") + std::strerror(-rc);
   return layer;
 }
@@ -233,6 +245,11 @@ std::string describeSyscall(std::int32_t number) {
           SCMP_SYS(pidfd_send_signal), SCMP_SYS(pidfd_getfd)}))
     return "signal another process";
   if (is({SCMP_SYS(ptrace), SCMP_SYS(process_vm_readv), SCMP_SYS(process_vm_writev)})) return "inspect another process";
+  if (is({SCMP_SYS(shmget), SCMP_SYS(shmat), SCMP_SYS(shmctl), SCMP_SYS(msgget), SCMP_SYS(msgsnd), SCMP_SYS(msgrcv), SCMP_SYS(msgctl),
+          SCMP_SYS(semget), SCMP_SYS(semop), SCMP_SYS(semtimedop), SCMP_SYS(semctl), SCMP_SYS(mq_open), SCMP_SYS(mq_unlink), SCMP_SYS(mq_timedsend),
+          SCMP_SYS(mq_timedreceive), SCMP_SYS(mq_notify), SCMP_SYS(mq_getsetattr)}))
+    return "make a kernel object shared between processes (System V IPC or a POSIX message queue)";
+  if (is({SCMP_SYS(fcntl)})) return "ask for signals on a file (fcntl F_SETOWN, F_SETSIG or F_SETLEASE)";
   char* name = ::seccomp_syscall_resolve_num_arch(SCMP_ARCH_NATIVE, number);
   std::string what = std::string("make the system call ") + (name != nullptr ? name : std::to_string(number).c_str());
   std::free(name);

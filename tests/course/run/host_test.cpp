@@ -138,6 +138,11 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"runs_shell", "ada: tried to start another process (not allowed) at t = 0.50 s"},
                       Case{"opens_socket", "ada: tried to open a network socket (not allowed) at t = 0.50 s"},
                       Case{"signals_parent", "ada: tried to signal another process (not allowed) at t = 0.50 s"},
+                      Case{"shares_memory",
+                           "ada: tried to make a kernel object shared between processes (System V IPC or a POSIX message queue) (not "
+                           "allowed) at t = 0.50 s"},
+                      Case{"signals_by_file",
+                           "ada: tried to ask for signals on a file (fcntl F_SETOWN, F_SETSIG or F_SETLEASE) (not allowed) at t = 0.50 s"},
                       Case{"reads_outside", "ada: tried to read /etc/passwd (not allowed) at t = 0.50 s"},
                       Case{"writes_outside", "ada: tried to write /tmp/frob-hostile-was-here (not allowed) at t = 0.50 s"},
                       Case{"forged_exit",
