@@ -1,5 +1,6 @@
 #include "frob/task.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <map>
@@ -95,6 +96,15 @@ std::string tooDeepMessage(const std::vector<std::string>& chain, int limit) {
          " waits for that call, so every earlier call stays in memory for as long as the robot runs. End it with "
          "co_await become(" +
          self + "()); instead: the new call then takes the old one's place.";
+}
+
+bool UsedOccurrences::fresh(const void* node, const Instant& at) const {
+  return instant_ != at.id || std::none_of(nodes_.begin(), nodes_.end(), [node](const auto& n) { return n.get() == node; });
+}
+
+void UsedOccurrences::use(std::shared_ptr<const void> node, const Instant& at) {
+  if (instant_ != at.id) nodes_.clear(), instant_ = at.id;
+  nodes_.push_back(std::move(node));
 }
 
 std::string endedOutputMessage(const std::string& task, double endedAt, double readAt) {

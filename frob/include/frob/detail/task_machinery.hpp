@@ -9,7 +9,6 @@
 #include "frob/event.hpp"
 #include "frob/task_state.hpp"
 
-#include <algorithm>
 #include <atomic>
 #include <concepts>
 #include <coroutine>
@@ -148,6 +147,21 @@ struct AtomicBase {
   virtual ~AtomicBase() = default;
 };
 
+// One occurrence is delivered once: an occurrence that ended or failed a task of a run (its exit,
+// its error or a scope's) is not seen again by a task started in the same instant. Compiled once in
+// libfrob, so that no controller instantiates it.
+class UsedOccurrences {
+ public:
+  // Whether event node `node`'s occurrence at `at` has not ended or failed a task yet.
+  [[nodiscard]] bool fresh(const void* node, const Instant& at) const;
+  // Marks it used; holds the node so that no new node takes its address within the instant.
+  void use(std::shared_ptr<const void> node, const Instant& at);
+
+ private:
+  std::uint64_t instant_ = 0;
+  std::vector<std::shared_ptr<const void>> nodes_;
+};
+
 // What every frame of one runTask shares.
 template <class A>
 struct RunContext {
@@ -164,19 +178,7 @@ struct RunContext {
   std::exception_ptr origin;                                     // an unexpected exception, and the task it first left
   std::string originTask;
   std::int64_t nextScope = 0;
-  std::uint64_t seenAt = 0;                       // the instant `seen` holds occurrences of
-  std::vector<std::shared_ptr<const void>> seen;  // event nodes whose occurrence ended or failed a task then,
-                                                  // held so that no new node takes one's address
-
-  // One occurrence is delivered once: an occurrence that ended or failed a task of this run (its
-  // exit, its error or a scope's) is not seen again by a task started in the same instant.
-  [[nodiscard]] bool fresh(const void* node, const Instant& at) const {
-    return seenAt != at.id || std::none_of(seen.begin(), seen.end(), [node](const auto& n) { return n.get() == node; });
-  }
-  void see(std::shared_ptr<const void> node, const Instant& at) {
-    if (seenAt != at.id) seen.clear(), seenAt = at.id;
-    seen.push_back(std::move(node));
-  }
+  UsedOccurrences used;  // one occurrence is delivered once
 
   // The paper's snapRobot: record where the robot is as one task ends and the next begins.
   void snapshot(const Instant& at) {
@@ -475,8 +477,8 @@ class AtomicAwaiter final : public AtomicBase<A> {
   const A* step(const Instant& now) override {
     if (!error_ && ctx_->interrupts.empty()) {  // the common case, kept short: it runs every step
       if (!exitNever_) {
-        if (const std::optional<E>& exit = exit_.at(now); exit && ctx_->fresh(exit_.node().get(), now)) {
-          ctx_->see(exit_.node(), now);
+        if (const std::optional<E>& exit = exit_.at(now); exit && ctx_->used.fresh(exit_.node().get(), now)) {
+          ctx_->used.use(exit_.node(), now);
           result_ = *exit;
           return nullptr;
         }
@@ -492,7 +494,7 @@ class AtomicAwaiter final : public AtomicBase<A> {
   template <class T>
   const std::optional<T>* occurrence(const Event<T>& e, const Instant& now) const {
     const std::optional<T>& o = e.at(now);
-    return o && ctx_->fresh(e.node().get(), now) ? &o : nullptr;
+    return o && ctx_->used.fresh(e.node().get(), now) ? &o : nullptr;
   }
 
   bool check(const Instant& now) {
@@ -508,13 +510,13 @@ class AtomicAwaiter final : public AtomicBase<A> {
       if (o && interrupt == nullptr) interrupt = o, scope = &*it;
     }
     if (exit) {
-      ctx_->see(exit_.node(), now);
+      ctx_->used.use(exit_.node(), now);
       result_ = **exit;
     } else if (error) {
-      ctx_->see(error_->node(), now);
+      ctx_->used.use(error_->node(), now);
       failure_ = std::make_exception_ptr(**error);
     } else if (interrupt) {
-      ctx_->see(scope->node(), now);
+      ctx_->used.use(scope->node(), now);
       failure_ = **interrupt;
     } else {
       return false;
