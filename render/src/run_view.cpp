@@ -125,15 +125,15 @@ void RunView::takeInstant(const worlds::StepRecord& rec) {
   }
   for (const Shape& s : r.picture.shapes()) {
     if (s.kind != Shape::Kind::Value) continue;
-    const auto known = std::find(publishedNames_.begin(), publishedNames_.end(), s.text);
-    std::size_t k = static_cast<std::size_t>(known - publishedNames_.begin());
-    if (known == publishedNames_.end()) {  // a new name: its chart, when asked for
+    auto [known, added] = publishedPlots_.try_emplace(s.text, std::string::npos);
+    if (added) {  // a new name: its chart, when asked for
       publishedNames_.push_back(s.text);
-      const bool wanted = !def_.published || std::find(def_.published->begin(), def_.published->end(), s.text) != def_.published->end();
-      publishedPlots_.push_back(wanted ? plots_.plots.size() : std::string::npos);
-      if (wanted) plots_.plots.push_back({s.text, {{s.text, {}, s.color}}, {}, {}});
+      if (!def_.published || std::find(def_.published->begin(), def_.published->end(), s.text) != def_.published->end()) {
+        known->second = plots_.plots.size();
+        plots_.plots.push_back({s.text, {{s.text, {}, s.color}}, {}, {}});
+      }
     }
-    if (publishedPlots_[k] != std::string::npos) add({publishedPlots_[k], 0}, s.value);
+    if (known->second != std::string::npos) add({known->second, 0}, s.value);
   }
 }
 

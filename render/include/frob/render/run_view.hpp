@@ -18,6 +18,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace frob::render {
@@ -91,7 +92,7 @@ class RunView {
   Slot sonarSlot_{}, goalSlot_{}, forwardSlot_{}, turnSlot_{};
   std::vector<Slot> signalSlots_;
   std::vector<std::string> publishedNames_;
-  std::vector<std::size_t> publishedPlots_;  // per published name: its chart, or npos when not charted
+  std::unordered_map<std::string, std::size_t> publishedPlots_;  // per published name: its chart, or npos when not charted
 };
 
 }  // namespace frob::render
