@@ -202,7 +202,7 @@ TEST(FrobRun, SandboxedAndInProcessRunsDriveTheSameTrajectory) {
   // The sandbox's layers are in the summary; none is there when the controller ran in frob itself.
   std::vector<std::string> layers;
   for (const auto& l : a["sandbox"]) layers.push_back(l["layer"]);
-  EXPECT_EQ(layers, (std::vector<std::string>{"resource limits", "unprivileged user", "no new privileges", "landlock", "seccomp"}));
+  EXPECT_EQ(layers, (std::vector<std::string>{"resource limits", "unprivileged user", "namespaces", "no new privileges", "landlock", "seccomp"}));
   EXPECT_TRUE(b["sandbox"].empty());
 }
 

@@ -71,9 +71,33 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"signals_parent", "tried to signal another process"}, Case{"reads_outside", "tried to read /etc/passwd"},
         Case{"writes_outside", "tried to write /tmp/frob-hostile-was-here"}, Case{"forged_exit", "ended its program with exit status 0"},
         Case{"throws_int", "an exception of unknown type"}, Case{"commands_nan", "non-finite wheels"},
+        Case{"sleeps_each_step", "fell behind: it took"},
         Case{"endless_constructor", "did not finish starting within 10 s (an endless loop?)", "", false},
         Case{"crash_in_constructor", "crashed with SIGSEGV", "", false}),
     [](const ::testing::TestParamInfo<Case>& info) { return info.param.submission; });
+
+// A class with attacks in it, graded two at a time: every submission gets its line in the
+// gradebook, the harmless one its marks, and no scratch folder is left behind.
+TEST(GradeHostileClass, AClassWithAttacksInItWritesItsWholeGradebook) {
+  const fs::path dir = freshFolder("grade_hostile_class");
+  fs::create_directories(dir / "hostile");
+  std::ofstream(dir / "hostile" / "rubric.toml") << kRubric;
+  std::ofstream(dir / "hostile" / "room.toml") << "size = [4.0, 3.0]\n[[robot]]\nname = \"ada\"\nstart = [1.0, 1.0]\n";
+  const std::vector<std::string> attacks{"truncates_channel", "forges_records", "fills_scratch", "starts_many_threads",
+                                         "segfault",          "memory_bomb",    "shares_memory", "writes_scratch"};
+  fs::create_directories(dir / "class");
+  for (const std::string& a : attacks) fs::copy_file(fs::path(FROB_HOSTILE_DIR) / (a + ".cpp"), dir / "class" / (a + ".cpp"));
+  fs::copy_file(fs::path(FROB_HOSTILE_DIR) / "misbehave.hpp", dir / "class" / "misbehave.hpp");
+  const fs::path temp = dir / "tmp";
+  fs::create_directories(temp);
+  const FrobResult r = runFrob(dir, {"grade", "hostile", "class", "--jobs", "2", "--gradebook", "grades.csv"}, FROB_TEST_CACHE_DIR, temp);
+  ASSERT_EQ(r.status, 0) << r.err << r.out;
+  const std::string csv = readFile(dir / "grades.csv");
+  for (const std::string& a : attacks) EXPECT_NE(csv.find("class/" + a + ".cpp,"), std::string::npos) << a << "\n" << csv;
+  EXPECT_NE(csv.find("class/writes_scratch.cpp,2,2"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("class/segfault.cpp,1,2"), std::string::npos) << csv;
+  EXPECT_TRUE(fs::is_empty(temp)) << "a scratch folder was left in " << temp;
+}
 
 }  // namespace
 }  // namespace frob::testing

@@ -39,8 +39,10 @@ inline std::string readFile(const std::filesystem::path& path) {
   return s.str();
 }
 
-// Runs `frob args...` with `dir` as its working folder; controllers compile into `cache`.
-inline FrobResult runFrob(const std::filesystem::path& dir, const std::vector<std::string>& args, const std::string& cache = FROB_TEST_CACHE_DIR) {
+// Runs `frob args...` with `dir` as its working folder; controllers compile into `cache`; its
+// temporary folder is `temp` when given.
+inline FrobResult runFrob(const std::filesystem::path& dir, const std::vector<std::string>& args, const std::string& cache = FROB_TEST_CACHE_DIR,
+                          const std::filesystem::path& temp = {}) {
   std::vector<std::string> all{FROB_EXECUTABLE};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -52,8 +54,10 @@ inline FrobResult runFrob(const std::filesystem::path& dir, const std::vector<st
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   std::vector<std::string> env{"FROB_CACHE_DIR=" + cache};
+  if (!temp.empty()) env.push_back("TMPDIR=" + temp.string());
   for (char** e = environ; *e != nullptr; ++e) {
-    if (std::string(*e).rfind("FROB_CACHE_DIR=", 0) != 0) env.emplace_back(*e);
+    const std::string var(*e);
+    if (var.rfind("FROB_CACHE_DIR=", 0) != 0 && (temp.empty() || var.rfind("TMPDIR=", 0) != 0)) env.push_back(var);
   }
   std::vector<char*> envp;
   for (std::string& e : env) envp.push_back(e.data());

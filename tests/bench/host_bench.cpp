@@ -39,7 +39,7 @@ void InProcess(benchmark::State& state) {
 }
 
 void Sandboxed(benchmark::State& state) {
-  course::HostDef def{.spinNanoseconds = static_cast<std::uint64_t>(state.range(1)) * 1000};
+  course::HostDef def{.robots = static_cast<std::uint32_t>(state.range(0)), .spinNanoseconds = static_cast<std::uint64_t>(state.range(1)) * 1000};
   Result<std::shared_ptr<course::ControllerHost>> host = course::ControllerHost::start({kModule}, {"run_around"}, def);
   if (!host) return state.SkipWithError(host.error().c_str());
   worlds::Run run(world(static_cast<int>(state.range(0))), {}, host.value()->driver({0}, false), {.keepSteps = false});

@@ -158,7 +158,7 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
   const auto start = std::chrono::steady_clock::now();
   Grade g{.assignment = def.assignment, .submission = submission.string()};
   std::string messages;
-  Result<CompiledController> compiled = compileControllerFile(submission, def.compiler, &messages);
+  Result<CompiledController> compiled = compileSubmission(submission, def.compiler, &messages);
   if (!compiled) g.compileError = compiled.error() + (messages.empty() ? "" : "\n" + messages);
   std::map<std::string, Result<worlds::WorldDef>> worldsByName;
   for (const Check& check : def.rubric.checks) {
@@ -180,7 +180,9 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
           r.reason = "the world could not be loaded: " + world.error();
           continue;
         }
-        Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start({compiled.value().module}, {compiled.value().source}, def.host);
+        HostDef hostDef = def.host;
+        hostDef.robots = static_cast<std::uint32_t>(world.value().robots.size());
+        Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start({compiled.value().module}, {compiled.value().source}, hostDef);
         if (!host) {
           r.reason = host.error();
           continue;

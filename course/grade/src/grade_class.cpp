@@ -86,7 +86,7 @@ Status filmRun(const GradeDef& def, const fs::path& submission, const std::strin
   if (ref == all.end()) return Status::failure("no world '" + run.world + "' in check '" + checkName + "'");
   Result<worlds::WorldDef> world = loadWorldRef(*ref);
   if (!world) return world.status();
-  Result<CompiledController> compiled = compileControllerFile(submission, def.compiler);
+  Result<CompiledController> compiled = compileSubmission(submission, def.compiler);
   if (!compiled) return compiled.status();
   Result<LoadedController> controller = describeInHost(compiled.value(), def.host);
   if (!controller) return controller.status();

@@ -5,6 +5,7 @@
 #include "frob/worlds/fnv.hpp"
 #include "load_error.hpp"
 #include "sandboxed.hpp"
+#include "scratch.hpp"
 
 #include <cxxabi.h>
 #include <dlfcn.h>
@@ -34,6 +35,9 @@ namespace {
 #define FROB_STRINGIFY2(x) #x
 #define FROB_STRINGIFY(x) FROB_STRINGIFY2(x)
 constexpr const char* kEntrySymbol = FROB_STRINGIFY(FROB_CONTROLLER_SYMBOL);
+constexpr std::uintmax_t kModuleBytes = 64 << 20;  // largest compiled controller kept (a large one is 6 MB)
+constexpr std::uintmax_t kHeaderBytes = 1 << 20;   // largest header of its own a submission brings
+constexpr int kHeaders = 64;                       // most headers it brings
 
 // Size and modification time of a file, as text: a rebuilt file changes it.
 std::string fileStamp(const std::string& path) {
@@ -148,13 +152,20 @@ Result<LoadedController> loadInProcess(const CompiledController& compiled) {
   return LoadedController{.entry = *entry(), .source = source, .module = compiled.module, .compiled = compiled.compiled};
 }
 
-Result<CompiledController> compileControllerFile(const fs::path& source, const CompilerSetup& setup, std::string* messages) {
+namespace {
+
+// The text of controller file `source`, or why it cannot be read.
+Result<std::string> readControllerFile(const fs::path& source) {
   std::ifstream in(source, std::ios::binary);
   if (!in || fs::is_directory(source))
     return Status::failure("controller file '" + source.string() +
                            "' cannot be read: " + (fs::exists(source) ? "not a readable file" : "it does not exist"));
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 
+// Compiles `text`, the contents of `source`: the compiler reads `file` in `cwd` and the folder it is in.
+Result<CompiledController> compile(const fs::path& source, const std::string& text, const fs::path& file, const fs::path& cwd,
+                                   const CompilerSetup& setup, std::string* messages) {
   // The cache key: the source, how it is compiled, and the headers and program it is compiled for.
   const bool pch = !setup.precompiledHeader.empty() && fs::exists(setup.precompiledHeader);
   worlds::Fnv1a key;
@@ -187,26 +198,29 @@ Result<CompiledController> compileControllerFile(const fs::path& source, const C
   std::error_code ec;
   fs::create_directories(setup.cacheDir, ec);
   if (ec) return Status::failure("cannot create the controller cache '" + setup.cacheDir.string() + "': " + ec.message());
-  std::string build = (fs::absolute(setup.cacheDir) / "build-XXXXXX").string();
-  if (::mkdtemp(build.data()) == nullptr) return Status::failure("cannot make a build folder in '" + setup.cacheDir.string() + "'");
-  const fs::path absolute = fs::absolute(source);
+  removeStale(fs::absolute(setup.cacheDir), "build");  // left by a frob that was killed while it compiled
+  Result<Scratch> folder = Scratch::make(fs::absolute(setup.cacheDir), "build");
+  if (!folder) return Status::failure("cannot make a build folder in '" + setup.cacheDir.string() + "'");
+  const std::string build = folder.value().path().string();
+  const fs::path absolute = fs::absolute(cwd / file);
   const fs::path partial = fs::path(build) / "module.so";
   SandboxedDef program{.command = {onPath(setup.compiler)},
                        .limits = {.cpuSeconds = static_cast<std::uint64_t>(setup.seconds),
                                   .memoryBytes = setup.memoryBytes,
                                   .fileBytes = 512ULL << 20,
                                   .openFiles = 256},
+                       .namespaces = {.tasks = 64},
                        .files = {.read = compilerReads(setup, pch), .write = {build}, .execute = {"/usr", "/bin"}},
-                       .cwd = fs::current_path().string(),  // so that its messages name the file as it was given
+                       .cwd = cwd.string(),
                        .env = {"PATH=/usr/bin:/bin", "TMPDIR=" + build},
                        .dropUser = false,
                        .noNetwork = true};
   program.files.read.push_back(absolute.parent_path().string());
   program.command.insert(program.command.end(), setup.flags.begin(), setup.flags.end());
   if (pch) program.command.insert(program.command.end(), {"-include-pch", setup.precompiledHeader});
-  program.command.insert(program.command.end(), {"-shared", "-o", partial.string(), source.string()});
+  program.command.insert(program.command.end(), {"-shared", "-o", partial.string(), file.string()});
   Result<SandboxedRun> run = runSandboxed(std::move(program), setup.seconds, 1 << 20);
-  const auto cleanUp = [&] { fs::remove_all(build, ec); };
+  const auto cleanUp = [&] { folder = Scratch(); };
   if (!run) return cleanUp(), run.status();
   show(run.value().output);
   if (run.value().timedOut) {
@@ -221,6 +235,13 @@ Result<CompiledController> compileControllerFile(const fs::path& source, const C
     return Status::failure("could not compile '" + source.string() + "' " +
                            (limited ? "within the compiler's limits of time and memory" : "(the compiler's messages are above)"));
   }
+  if (const std::uintmax_t bytes = fs::file_size(partial, ec); ec || bytes > kModuleBytes) {
+    cleanUp();
+    return Status::failure("could not compile '" + source.string() + "': " +
+                           (ec ? "the compiler made no module"
+                               : "the compiled controller is " + std::to_string(bytes >> 20) + " MB, more than the " +
+                                     std::to_string(kModuleBytes >> 20) + " MB allowed (a huge array, or a file pulled in with .incbin?)"));
+  }
   if (!run.value().output.empty()) {  // first, so that a module in the cache always has its warnings
     std::ofstream(fs::path(build) / "module.warnings", std::ios::binary) << run.value().output;
     fs::rename(fs::path(build) / "module.warnings", warnings, ec);
@@ -229,6 +250,34 @@ Result<CompiledController> compileControllerFile(const fs::path& source, const C
   cleanUp();
   if (ec) return Status::failure("cannot store the compiled controller in '" + module.string() + "': " + ec.message());
   return compiled;
+}
+
+}  // namespace
+
+Result<CompiledController> compileControllerFile(const fs::path& source, const CompilerSetup& setup, std::string* messages) {
+  Result<std::string> text = readControllerFile(source);
+  if (!text) return text.status();
+  return compile(source, text.value(), source, fs::current_path(), setup, messages);  // messages name the file as it was given
+}
+
+Result<CompiledController> compileSubmission(const fs::path& source, const CompilerSetup& setup, std::string* messages) {
+  Result<std::string> text = readControllerFile(source);
+  if (!text) return text.status();
+  std::error_code ec;
+  fs::create_directories(setup.cacheDir, ec);
+  removeStale(fs::absolute(setup.cacheDir), "submission");
+  Result<Scratch> alone = Scratch::make(fs::absolute(setup.cacheDir), "submission");
+  if (!alone) return Status::failure("cannot make a folder for '" + source.string() + "' in '" + setup.cacheDir.string() + "'");
+  const fs::path file = source.filename();
+  std::ofstream(alone.value().path() / file, std::ios::binary) << text.value();
+  // Its own headers come with it (a class folder holds .cpp files, one a student).
+  int headers = 0;
+  for (const fs::directory_entry& e : fs::directory_iterator(source.parent_path().empty() ? "." : source.parent_path(), ec)) {
+    const fs::path ext = e.path().extension();
+    if ((ext == ".h" || ext == ".hpp") && e.is_regular_file(ec) && !e.is_symlink(ec) && e.file_size(ec) <= kHeaderBytes && ++headers <= kHeaders)
+      fs::copy_file(e.path(), alone.value().path() / e.path().filename(), ec);
+  }
+  return compile(source, text.value(), file, alone.value().path(), setup, messages);
 }
 
 }  // namespace frob::course

@@ -6,6 +6,7 @@
 #include "load_error.hpp"
 #include "sandboxed.hpp"
 #include "sanitizer_report.hpp"
+#include "scratch.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -20,6 +21,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <mutex>
 #include <optional>
 
 namespace frob::course {
@@ -78,7 +80,7 @@ std::uint64_t residentBytes(pid_t pid) {
 
 struct ControllerHost::Impl {
   HostDef def;
-  fs::path scratch;
+  Scratch scratch;
   sandbox::Channel channel;
   Sandboxed process;
   sandbox::Fd wake;    // eventfd the host writes when it answers and we sleep
@@ -90,6 +92,8 @@ struct ControllerHost::Impl {
   std::vector<sandbox::Layer> layers;
   std::uint32_t sequence = 1;  // the host's last reply
   Clock::time_point runDeadline;
+  double waited = 0.0;         // seconds the grader has waited for the run's replies
+  double simulated = 0.0;      // simulated seconds of the run so far
   bool memoryLimited = false;  // whether the address-space limit holds (not under AddressSanitizer)
   bool driving = false;
 
@@ -97,8 +101,6 @@ struct ControllerHost::Impl {
     process.kill();
     process.wait();
     drainOutput();
-    std::error_code ec;
-    if (!scratch.empty()) fs::remove_all(scratch, ec);
   }
 
   sandbox::Header& header() const { return channel.header(); }
@@ -131,7 +133,7 @@ struct ControllerHost::Impl {
   // Why the host ended, from its sanitizers' report when checked, else its wait status and what it claimed it was doing.
   std::string death(int status) const {
     if (def.checked) {
-      if (std::optional<SanitizerFinding> f = readSanitizerReport(scratch, outputTail)) {
+      if (std::optional<SanitizerFinding> f = readSanitizerReport(scratch.path() / "reports", outputTail, scratch.path())) {
         say("frob --check: " + f->reason + "\n" + f->stack);
         return f->reason;
       }
@@ -169,20 +171,37 @@ struct ControllerHost::Impl {
     sandbox::Doorbell& bell = header().reply;
     if (sandbox::spinUntil(bell, seq, def.spinNanoseconds)) return {};
     const Clock::time_point start = Clock::now();
-    const Clock::time_point deadline =
-        std::min(runDeadline, start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit)));
+    const auto after = [&](double seconds) { return start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds)); };
+    const double paceLeft = def.paceAllowance + def.pacePerSecond * simulated - waited;
+    const Clock::time_point paceDeadline = after(std::max(0.0, paceLeft));
+    const Clock::time_point deadline = std::min({runDeadline, after(limit), paceDeadline});
+    struct Tally {  // adds the wait to the run's, however it ends
+      double& waited;
+      Clock::time_point start;
+      ~Tally() { waited += std::chrono::duration<double>(Clock::now() - start).count(); }
+    } tally{waited, start};
     bell.sleeping.store(1, std::memory_order_seq_cst);
     std::optional<std::pair<Clock::time_point, double>> cpuFrom;  // when the step had run a while, and its CPU then
     Clock::time_point watched = start;                            // the memory and CPU watch's last look
     std::string why;
     for (;;) {
       if (bell.sequence.load(std::memory_order_seq_cst) == seq) break;
+      if (channel.cut()) {
+        why = "cut short the memory it shares with the grader (not allowed)";
+        break;
+      }
       const Clock::time_point now = Clock::now();
       if (now >= deadline) {
         // A sleeper uses next to no CPU; a loop gets its share of a core even on a crowded machine.
         const bool busy = cpuFrom && cpuSeconds(process.pid()) - cpuFrom->second > 0.1 * std::chrono::duration<double>(now - cpuFrom->first).count();
         if (deadline == runDeadline) {
           why = "the run took longer than " + seconds(def.runSeconds) + " of wall-clock time";
+        } else if (deadline == paceDeadline && !starting) {
+          char text[160];
+          std::snprintf(text, sizeof text,
+                        "fell behind: it took %.1f s of wall-clock time for %.2f s of simulated time (at most %g s + %g s per simulated second",
+                        waited + std::chrono::duration<double>(now - start).count(), simulated, def.paceAllowance, def.pacePerSecond);
+          why = std::string(text) + (busy ? "; an endless loop?)" : "; it waited or slept?)");
         } else if (starting) {
           why = "did not finish starting within " + seconds(limit) + (busy ? " (an endless loop?)" : " (it waited or slept)");
         } else {
@@ -240,23 +259,34 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
   impl->sources = sources;
   const auto failure = [](const std::string& what) { return Status::failure("cannot start the controller host: " + what); };
 
-  // A scratch folder of its own, holding a copy of each module: the only files it can write or read
-  // besides the system's libraries.
+  // A scratch folder of its own: a copy of each module, which it may read, and `work`, its working
+  // folder and the only one it may write (a tmpfs of its own where the kernel allows), and in a
+  // checked run `reports`, where the sanitizers write. Folders a killed frob left are removed first.
   std::error_code ec;
-  std::string scratch = (fs::temp_directory_path(ec) / "frob-host-XXXXXX").string();
-  if (::mkdtemp(scratch.data()) == nullptr) return failure("cannot make a scratch folder in " + fs::temp_directory_path(ec).string());
-  impl->scratch = scratch;
-  const bool root = ::geteuid() == 0;
+  const fs::path temp = fs::temp_directory_path(ec);
+  static std::once_flag swept;
+  std::call_once(swept, [&] { removeStale(temp, "frob-host"); });
+  Result<Scratch> scratch = Scratch::make(temp, "frob-host");
+  if (!scratch) return failure(scratch.error());
+  impl->scratch = std::move(scratch.value());
+  const fs::path& folder = impl->scratch.path();
+  const fs::path work = folder / "work", reports = folder / "reports";
+  fs::permissions(folder, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec, ec);  // nobody passes through
   std::vector<std::string> command{layout().controllerHost.string()};
   for (std::size_t m = 0; m < modules.size(); ++m) {
-    const fs::path copy = impl->scratch / ("m" + std::to_string(m) + ".so");
+    const fs::path copy = folder / ("m" + std::to_string(m) + ".so");
     if (!fs::copy_file(modules[m], copy, ec)) return failure("cannot copy " + modules[m].string() + ": " + ec.message());
-    if (root && ::chown(copy.c_str(), kNobody, kNobody) != 0) return failure("cannot hand " + copy.string() + " to nobody");
-    command.push_back("./" + copy.filename().string());
+    fs::permissions(copy, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read, ec);
+    command.push_back(copy.string());
   }
-  if (root && ::chown(scratch.c_str(), kNobody, kNobody) != 0) return failure("cannot hand " + scratch + " to nobody");
+  for (const fs::path& f : {work, reports}) {
+    if (f == reports && !impl->def.checked) continue;
+    if (!fs::create_directory(f, ec) || (::geteuid() == 0 && ::chown(f.c_str(), kNobody, kNobody) != 0))
+      return failure("cannot make " + f.string() + " for nobody");
+  }
 
-  if (Status s = impl->channel.create(kSetupBytes); !s) return failure(s.error());
+  if (Status s = impl->channel.create(kSetupBytes, std::max<std::uint32_t>(impl->def.robots, 1), kFrameBytes, kReplyBytes); !s)
+    return failure(s.error());
   impl->header().spinNanoseconds = impl->def.spinNanoseconds;
   impl->wake.reset(::eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK));
   if (!impl->wake.valid()) return failure(std::string("eventfd: ") + std::strerror(errno));
@@ -271,12 +301,14 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
                                   .memoryBytes = d.memoryBytes,
                                   .fileBytes = d.fileBytes,
                                   .openFiles = 64},
-                       .files = {.read = {"/usr", "/lib", "/lib64", "/etc/ld.so.cache"}, .write = {scratch}},
-                       .cwd = scratch,
+                       .namespaces = {.tasks = d.tasks, .scratch = work.string(), .scratchBytes = d.scratchBytes},
+                       .files = {.read = {"/usr", "/lib", "/lib64", "/etc/ld.so.cache", folder.string()}, .write = {work.string()}},
+                       .cwd = work.string(),
                        .fds = {-1, out.value().write.get(), out.value().write.get(), impl->channel.fd(), impl->wake.get()}};
   if (d.checked) {
-    // The sanitizers' runtime (unless this program has its own), reporting into the scratch folder.
-    program.env = sanitizerEnvironment(impl->scratch);
+    // The sanitizers' runtime (unless this program has its own), reporting into their own folder.
+    program.env = sanitizerEnvironment(reports);
+    program.files.write.push_back(reports.string());
     if (!kSanitizedBuild) {
       if (!fs::exists(sanitizerRuntime()))
         return failure("a checked controller needs clang's AddressSanitizer runtime " + sanitizerRuntime() + " (Debian package libclang-rt-16-dev)");
@@ -308,27 +340,17 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
   if (Status s = impl->refusal(); !s) return named(s.error() + when(0.0, Activity::Loading));
   std::vector<std::byte> setup(impl->channel.setup().begin(), impl->channel.setup().end());
   sandbox::Reader r(setup);
-  std::uint32_t layerCount = 0, moduleCount = 0;
-  r.count(layerCount, 8);
-  for (std::uint32_t i = 0; i < layerCount && r.ok(); ++i) {
-    sandbox::Layer l;
-    std::uint8_t applied = 0;
-    if (r.get(l.name) && r.get(applied) && r.get(l.note)) impl->layers.push_back({l.name, applied != 0, true, l.note});
+  sandbox::LoadReply reply;
+  if (!sandbox::read(r, reply) || reply.modules.size() != modules.size()) {
+    return failure("its answer was not understood" + (r.why().empty() ? std::string() : ": " + r.why()));
   }
-  if (!r.count(moduleCount) || moduleCount != modules.size()) return failure("its answer was not understood");
-  for (std::uint32_t m = 0; m < moduleCount; ++m) {
-    std::uint8_t ok = 0;
-    ControllerEntry e;
-    std::string error;
-    if (!r.get(ok)) break;
-    if (ok == 0) {
-      if (r.get(error)) return Status::failure(loadError(sources.at(m), error));
-      break;
-    }
-    if (!(r.get(e.name) && r.get(e.options.world) && r.get(e.options.seconds) && r.get(e.options.summary))) break;
-    impl->entries.push_back(std::move(e));
+  impl->layers.push_back({reply.seccomp.name, reply.seccomp.applied, true, reply.seccomp.note});
+  for (std::size_t m = 0; m < reply.modules.size(); ++m) {
+    sandbox::LoadReply::Module& e = reply.modules[m];
+    if (!e.loaded) return Status::failure(loadError(sources.at(m), e.error));
+    impl->entries.push_back(
+        {.name = std::move(e.name), .options = {.world = std::move(e.world), .seconds = e.seconds, .summary = std::move(e.summary)}});
   }
-  if (!r.ok()) return failure("its answer was not understood");
   return std::shared_ptr<ControllerHost>(new ControllerHost(std::move(impl)));
 }
 
@@ -358,28 +380,27 @@ class HostDriver final : public worlds::ControllerDriver {
         sim_(sim),
         pictures_(pictures),
         timelines_(sim.robotCount()),
-        started_(sim.robotCount(), 0),
+        budgets_(sim.robotCount()),
         stopped_(sim.robotCount(), false) {
     const auto n = static_cast<std::uint32_t>(sim.robotCount());
     FROB_ASSERT(!host.driving, "a controller host drives one run");
     FROB_ASSERT(modules.size() == 1 || modules.size() == n, "give one module per robot, or one for all");
+    FROB_ASSERT(n <= std::max<std::uint32_t>(host.def.robots, 1), "a controller host drives at most the robots its HostDef names");
     host.driving = true;
-    if (Status s = host.channel.resize(n, kFrameBytes, kReplyBytes); !s) {
-      lost_ = s;
-      return;
-    }
-    sandbox::Writer w(host.channel.setup());
-    w.put(n);
+    sandbox::BuildRequest request;
     for (std::uint32_t i = 0; i < n; ++i) {
       const std::size_t m = modules.size() == 1 ? modules.front() : modules[i];
       FROB_ASSERT(m < host.entries.size(), "no such module in this host");
-      w.put(static_cast<std::uint32_t>(m));
-      sandbox::write(w, sim.spec(i));
+      request.robots.push_back({static_cast<std::uint32_t>(m), sim.spec(i)});
     }
+    sandbox::Writer w(host.channel.setup());
+    sandbox::write(w, request);
+    FROB_ASSERT(w.ok(), "a build request larger than the channel's setup area");
     sandbox::Header& h = host.header();
     h.dt = sim.dt();
     h.pictures = pictures ? 1 : 0;
     h.command = sandbox::Command::Build;
+    host.waited = 0.0;  // the run's pace counts from here: loading had its own limit
     sandbox::ring(h.request, host.sequence, -1);
     lost_ = host.await(++host.sequence, host.def.startSeconds, true);
     if (lost_) lost_ = host.refusal();
@@ -398,6 +419,7 @@ class HostDriver final : public worlds::ControllerDriver {
     }
     h.command = sandbox::Command::Step;
     h.step = now.step;
+    host_.simulated = now.time;
     sandbox::ring(h.request, host_.sequence, -1);
     if (Status s = host_.await(++host_.sequence, host_.def.stepSeconds, false); !s) {
       char at[48];
@@ -411,10 +433,10 @@ class HostDriver final : public worlds::ControllerDriver {
     }
     for (std::uint32_t i = 0; i < wheels.size(); ++i) {
       if (stopped_[i]) continue;
-      if (!readReply(i, wheels[i], pictures[i], failed)) {
+      if (Status s = readReply(i, wheels[i], pictures[i], failed); !s) {
         stopped_[i] = true;
         wheels[i] = Wheels{};
-        failed.emplace_back(i, "its controller host sent a reply that cannot be read");
+        failed.emplace_back(i, "its controller host sent a reply that cannot be read: " + s.error());
       }
     }
     if (++steps_ % 64 == 0) host_.drainOutput();  // a student's prints appear as the run goes
@@ -433,58 +455,40 @@ class HostDriver final : public worlds::ControllerDriver {
     host_.process.kill();
   }
 
-  // Reads robot i's reply from a copy of its area, so the host cannot change it while it is read.
-  bool readReply(std::uint32_t i, Wheels& wheels, Picture& picture, std::vector<std::pair<std::size_t, std::string>>& failed) {
-    const std::span<const std::byte> area = host_.channel.replyArea(i);
-    std::uint32_t length = 0;
-    std::memcpy(&length, area.data(), sizeof length);
-    if (length > area.size() - sizeof length) return false;
-    copy_.assign(area.begin() + sizeof length, area.begin() + sizeof length + length);
-    sandbox::Reader r(copy_);
-    std::uint8_t state = 0, hasPicture = 0;
-    std::uint32_t records = 0;
-    if (!r.get(state) || state > 2 || !r.get(wheels.forward) || !r.get(wheels.turn)) return false;
-    if (state == 1) {
-      std::string why;
-      if (!r.get(why)) return false;
+  // Reads robot i's reply, checks it against the caps of a step and of the run, and takes it in.
+  Status readReply(std::uint32_t i, Wheels& wheels, Picture& picture, std::vector<std::pair<std::size_t, std::string>>& failed) {
+    if (Status s = sandbox::readFramed(host_.channel.replyArea(i), copy_, reply_); !s) return s;
+    if (Status s = budgets_[i].take(reply_); !s) return s;
+    if (reply_.state == sandbox::StepReply::State::FailedNow) {
       stopped_[i] = true;
-      failed.emplace_back(i, why);
+      failed.emplace_back(i, reply_.failure);
     }
-    if (!r.count(records)) return false;
-    for (std::uint32_t k = 0; k < records; ++k) {
-      if (!sandbox::read(r, record_) || !mirror(i, record_)) return false;
-    }
-    if (!r.get(hasPicture)) return false;
-    if (hasPicture != 0 && pictures_ && !sandbox::read(r, picture)) return false;
-    if (state != 0 || !isFinite(wheels)) wheels = Wheels{};  // only the controller's own word stops it
-    return r.ok();
-  }
-
-  // Replays a task's start or end on robot i's timeline, which numbers tasks as the host's does.
-  bool mirror(std::uint32_t i, const TaskRecord& t) {
     Timeline& timeline = timelines_[i];
-    if (t.how != TaskEnd::Running) {
-      timeline.end(t.id, t.end, t.how, t.detail);
-      return true;
+    for (TaskRecord& t : reply_.records) {
+      if (t.how == TaskEnd::Running) {
+        timeline.start(t.parent, std::move(t.name), std::move(t.where), t.start);
+      } else {
+        timeline.end(t.id, t.end, t.how, std::move(t.detail));
+      }
     }
-    if (t.id != started_[i]) return false;
-    ++started_[i];
-    timeline.start(t.parent, t.name, t.where, t.start);
-    return true;
+    if (pictures_ && reply_.hasPicture) picture = std::move(reply_.picture);
+    wheels = reply_.state == sandbox::StepReply::State::Running && isFinite(reply_.wheels) ? reply_.wheels
+                                                                                           : Wheels{};  // only the controller's own word stops it
+    return {};
   }
 
   std::shared_ptr<ControllerHost> owner_;
   ControllerHost::Impl& host_;
   const worlds::Simulation& sim_;
   bool pictures_;
-  std::vector<Timeline> timelines_;
-  std::vector<std::int64_t> started_;  // tasks started so far, per robot: the next one's id
+  std::vector<Timeline> timelines_;  // each numbers its tasks as the host's does: the budget checks the order
+  std::vector<sandbox::RunBudget> budgets_;
   std::vector<bool> stopped_;
   Status lost_;  // why the host could not build the controllers, reported at the first step
   bool dead_ = false;
   std::int64_t steps_ = 0;
   std::vector<std::byte> copy_;
-  TaskRecord record_;
+  sandbox::StepReply reply_;
 };
 
 }  // namespace

@@ -38,6 +38,11 @@ Result<Sandboxed> Sandboxed::start(const SandboxedDef& def) {
   if (!kSanitizedBuild) add("--memory", def.limits.memoryBytes);
   add("--file-size", def.limits.fileBytes);
   add("--open-files", def.limits.openFiles);
+  add("--tasks", def.namespaces.tasks);
+  if (!def.namespaces.scratch.empty()) {
+    args.insert(args.end(), {"--scratch", def.namespaces.scratch});
+    add("--scratch-bytes", def.namespaces.scratchBytes);
+  }
   for (const auto& [flag, paths] : {std::pair{"--read", &def.files.read}, {"--write", &def.files.write}, {"--execute", &def.files.execute}}) {
     for (const std::string& p : *paths) args.insert(args.end(), {flag, p});
   }

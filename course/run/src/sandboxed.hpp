@@ -31,6 +31,7 @@ inline constexpr bool kSanitizedBuild = false;
 struct SandboxedDef {
   std::vector<std::string> command;  ///< the program (absolute path) and its arguments
   sandbox::Limits limits;            ///< memoryBytes is dropped in a sanitizer build (kSanitizedBuild)
+  sandbox::Namespaces namespaces;
   sandbox::FileAccess files;
   std::string cwd;               ///< its working folder
   std::vector<std::string> env;  ///< its whole environment, NAME=VALUE

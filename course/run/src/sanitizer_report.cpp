@@ -105,9 +105,9 @@ std::vector<std::vector<SourceFrame>> addr2line(const fs::path& module, const st
   return frames;
 }
 
-// The finding of `report` (what a sanitizer wrote), whose frames in modules under `folder` are
+// The finding of `report` (what a sanitizer wrote), whose frames in the modules in `modules` are
 // symbolized; `output` is what the host printed last. Empty when `report` holds no sanitizer error.
-std::optional<SanitizerFinding> explainReport(std::string_view report, std::string_view output, const fs::path& folder) {
+std::optional<SanitizerFinding> explainReport(std::string_view report, std::string_view output, const fs::path& modules) {
   static const std::regex asanError(R"(ERROR: AddressSanitizer: ([A-Za-z-]+(?: [a-z-]+)?) on)");
   static const std::regex access(R"((READ|WRITE) of size (\d+))");
   static const std::regex ubsanError(R"(([^\s:]+:\d+(?::\d+)?): runtime error: ([^\n]*))");
@@ -139,8 +139,8 @@ std::optional<SanitizerFinding> explainReport(std::string_view report, std::stri
   for (std::string line; std::getline(in, line);) {
     std::smatch f;
     if (std::regex_search(line, f, frame)) {
-      const fs::path module = folder / f[1].str();   // the host names its modules relative to its folder
-      if (module.parent_path() != folder) continue;  // frob's and the system's frames are not the student's business
+      const fs::path module = f[1].str();             // the host names its modules by their whole path
+      if (module.parent_path() != modules) continue;  // frob's and the system's frames are not the student's business
       offsets[module].push_back(f[2]);
       lines.push_back(module.string() + "+" + f[2].str());
     } else if (line.find(" here:") != std::string::npos) {
@@ -183,13 +183,13 @@ std::vector<std::string> sanitizerEnvironment(const fs::path& folder) {
           "UBSAN_OPTIONS=" + common + ":print_stacktrace=1:halt_on_error=1"};
 }
 
-std::optional<SanitizerFinding> readSanitizerReport(const fs::path& folder, std::string_view output) {
+std::optional<SanitizerFinding> readSanitizerReport(const fs::path& folder, std::string_view output, const fs::path& modules) {
   std::error_code ec;
   for (const fs::directory_entry& e : fs::directory_iterator(folder, ec)) {
     if (e.path().filename().string().rfind("sanitizer.", 0) != 0) continue;
     std::ifstream in(e.path(), std::ios::binary);
     const std::string report{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (std::optional<SanitizerFinding> f = explainReport(report, output, folder)) return f;
+    if (std::optional<SanitizerFinding> f = explainReport(report, output, modules)) return f;
   }
   return std::nullopt;
 }

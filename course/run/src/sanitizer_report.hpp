@@ -21,8 +21,10 @@ struct SanitizerFinding {
   std::string stack;   ///< the controller's frames, one per line, innermost first
 };
 
-/// The finding of the reports written into `folder` by a host started with sanitizerEnvironment(); `output` is what the
-/// host printed last (the C++ library's assertion message goes there). Empty when no report holds an error.
-[[nodiscard]] std::optional<SanitizerFinding> readSanitizerReport(const std::filesystem::path& folder, std::string_view output);
+/// The finding of the reports written into `folder` by a host started with sanitizerEnvironment(), whose
+/// frames in the controller modules in `modules` are symbolized; `output` is what the host printed last
+/// (the C++ library's assertion message goes there). Empty when no report holds an error.
+[[nodiscard]] std::optional<SanitizerFinding> readSanitizerReport(const std::filesystem::path& folder, std::string_view output,
+                                                                  const std::filesystem::path& modules);
 
 }  // namespace frob::course

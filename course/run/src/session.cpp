@@ -47,7 +47,9 @@ worlds::DriverFactory driverFor(const RunDef& def, std::shared_ptr<ControllerHos
     modulePerRobot.push_back(static_cast<std::size_t>(known - modules.begin()));
     if (known == modules.end()) modules.push_back(c.module), sources.push_back(c.source);
   }
-  Result<std::shared_ptr<ControllerHost>> started = ControllerHost::start(modules, sources, *def.host);
+  HostDef hostDef = *def.host;
+  hostDef.robots = static_cast<std::uint32_t>(def.world.robots.size());
+  Result<std::shared_ptr<ControllerHost>> started = ControllerHost::start(modules, sources, hostDef);
   if (!started) {
     return [why = started.error()](const worlds::Simulation& sim) -> std::unique_ptr<worlds::ControllerDriver> {
       return std::make_unique<Unstarted>(sim.robotCount(), why);

@@ -64,10 +64,7 @@ struct Driven {
 // Loads every module and writes what each declared (or why it could not) to the setup area.
 std::vector<const ControllerEntry*> load(const Channel& channel, int argc, char** argv, const Layer& seccomp) {
   header->activity = Activity::Loading;
-  Writer w(channel.setup());
-  w.put(std::uint32_t{1});
-  w.put(seccomp.name), w.put(static_cast<std::uint8_t>(seccomp.applied)), w.put(seccomp.note);
-  w.put(static_cast<std::uint32_t>(argc - 1));
+  LoadReply reply{.seccomp = seccomp};
   std::vector<const ControllerEntry*> entries;
   for (int m = 1; m < argc; ++m) {
     header->robot = static_cast<std::uint32_t>(m - 1);
@@ -76,13 +73,15 @@ std::vector<const ControllerEntry*> load(const Channel& channel, int argc, char*
     auto entry = handle == nullptr ? nullptr : reinterpret_cast<Entry>(::dlsym(handle, FROB_STRINGIFY(FROB_CONTROLLER_SYMBOL)));
     const ControllerEntry* e = entry == nullptr ? nullptr : entry();
     entries.push_back(e);
-    w.put(static_cast<std::uint8_t>(e != nullptr));
     if (e == nullptr) {
-      w.put(handle == nullptr ? std::string(::dlerror()) : std::string());  // empty: no FROB_CONTROLLER line
-      continue;
+      reply.modules.push_back({.error = handle == nullptr ? std::string(::dlerror()) : std::string()});  // empty: no FROB_CONTROLLER line
+    } else {
+      reply.modules.push_back(
+          {.loaded = true, .name = e->name, .world = e->options.world, .summary = e->options.summary, .seconds = e->options.seconds});
     }
-    w.put(e->name), w.put(e->options.world), w.put(e->options.seconds), w.put(e->options.summary);
   }
+  Writer w(channel.setup());
+  write(w, reply);
   return entries;
 }
 
@@ -90,47 +89,42 @@ std::vector<const ControllerEntry*> load(const Channel& channel, int argc, char*
 std::vector<Driven> build(const Channel& channel, const std::vector<const ControllerEntry*>& entries) {
   header->activity = Activity::Building;
   Reader r(channel.setup());
-  std::uint32_t robots = 0;
-  r.count(robots, channel.header().robots);
-  std::vector<Driven> driven(robots);
-  for (std::uint32_t i = 0; i < robots; ++i) {
-    std::uint32_t module = 0;
-    RobotSpec spec;
-    if (!r.get(module) || !read(r, spec) || module >= entries.size() || entries[module] == nullptr) std::_Exit(3);
+  BuildRequest request;
+  if (!read(r, request) || request.robots.size() > channel.header().robots) std::_Exit(3);
+  std::vector<Driven> driven(request.robots.size());
+  for (std::uint32_t i = 0; i < driven.size(); ++i) {
+    const BuildRequest::Robot& asked = request.robots[i];
+    if (asked.module >= entries.size() || entries[asked.module] == nullptr) std::_Exit(3);
     header->robot = i;
     Driven& d = driven[i];
-    const Robot robot(spec, std::shared_ptr<const SensorFrame>(d.frame));
+    const Robot robot(asked.spec, std::shared_ptr<const SensorFrame>(d.frame));
     robot.debugChannel()->timeline().observe([&d](const TaskRecord& t) { d.records.push_back(t); });
-    d.controller = std::make_unique<RunningController>(entries[module]->make, robot);
+    d.controller = std::make_unique<RunningController>(entries[asked.module]->make, robot);
   }
   return driven;
 }
 
 // Samples every robot at `now` and writes its reply.
 void step(const Channel& channel, std::vector<Driven>& driven, const Instant& now, bool pictures) {
-  Picture picture;
+  StepReply reply;
   for (std::uint32_t i = 0; i < driven.size(); ++i) {
     Driven& d = driven[i];
     Reader in(channel.frameArea(i));
     if (!read(in, *d.frame)) std::_Exit(3);
     header->robot = i;
     const bool wasFailed = d.controller->failed();
-    const Wheels wheels = d.controller->step(now, pictures ? &picture : nullptr);
-    const std::span<std::byte> area = channel.replyArea(i);
-    Writer w(area.subspan(sizeof(std::uint32_t)));
+    reply.picture = Picture();
+    reply.wheels = d.controller->step(now, pictures ? &reply.picture : nullptr);
     const bool failed = d.controller->failed() && !d.reported;
     d.reported = d.controller->failed();
-    w.put(static_cast<std::uint8_t>(failed ? 1 : wasFailed ? 2 : 0));
-    w.put(wheels.forward), w.put(wheels.turn);
-    if (failed) w.put(d.controller->failure());
-    w.put(static_cast<std::uint32_t>(d.records.size()));
-    for (const TaskRecord& t : d.records) write(w, t);
-    d.records.clear();
-    w.put(static_cast<std::uint8_t>(pictures));
-    if (pictures) write(w, picture);
-    // A reply too large for its area is cut: the trusted side sees a read fail and reports it.
-    const auto length = static_cast<std::uint32_t>(w.size());
-    std::memcpy(area.data(), &length, sizeof length);
+    reply.state = failed ? StepReply::State::FailedNow : wasFailed ? StepReply::State::FailedBefore : StepReply::State::Running;
+    reply.failure = failed ? d.controller->failure() : std::string();
+    // At most a step's worth of records; the rest go with the next reply.
+    const std::size_t sent = std::min<std::size_t>(d.records.size(), kRecordsPerStep);
+    reply.records.assign(d.records.begin(), d.records.begin() + static_cast<std::ptrdiff_t>(sent));
+    d.records.erase(d.records.begin(), d.records.begin() + static_cast<std::ptrdiff_t>(sent));
+    reply.hasPicture = pictures;
+    writeFramed(channel.replyArea(i), reply);  // a reply too large for its area is cut: the trusted side reports it
   }
 }
 
@@ -158,7 +152,6 @@ int main(int argc, char** argv) {
   for (;;) {
     waitFutex(header->request, sequence, header->spinNanoseconds);
     if (header->command == Command::Build) {
-      if (!channel.attach(kChannelFd)) return 3;
       clock = Clock(header->dt);
       driven = build(channel, entries);
     } else {

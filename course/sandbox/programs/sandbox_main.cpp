@@ -1,7 +1,7 @@
 // frob-sandbox: applies the sandbox to itself, then runs a program in its place. The grader runs the compiler and
 // the controller host through it, so that every layer is in force before their first instruction.
 //
-//   frob-sandbox --cpu 60 --memory 2147483648 --read /usr --write /tmp/build.x --cwd /tmp/build.x \
+//   frob-sandbox --cpu 60 --memory 2147483648 --tasks 64 --read /usr --write /tmp/build.x --cwd /tmp/build.x \
 //             --report-fd 5 --keep-fds 3 -- /usr/bin/clang++ ...
 #include "frob/sandbox/fd.hpp"
 #include "frob/sandbox/layers.hpp"
@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
   using namespace frob::sandbox;
   CLI::App cli{"Runs a program in the sandbox: resource limits, an unprivileged user, Landlock, seccomp", "frob-sandbox"};
   Limits limits;
+  Namespaces namespaces;
   FileAccess files;
   std::uint32_t uid = 65534, gid = 65534;
   std::string cwd = ".", seccomp = "none";
@@ -57,6 +58,9 @@ int main(int argc, char** argv) {
   cli.add_option("--memory", limits.memoryBytes, "address space, bytes");
   cli.add_option("--file-size", limits.fileBytes, "largest file written, bytes");
   cli.add_option("--open-files", limits.openFiles, "open file descriptors");
+  cli.add_option("--tasks", namespaces.tasks, "processes and threads at once, in a user namespace of its own");
+  cli.add_option("--scratch", namespaces.scratch, "a folder to cover with a tmpfs of its own");
+  cli.add_option("--scratch-bytes", namespaces.scratchBytes, "the size of that tmpfs");
   cli.add_option("--read", files.read, "a folder or file it may read");
   cli.add_option("--write", files.write, "a folder it may change");
   cli.add_option("--execute", files.execute, "a folder or file it may run");
@@ -91,7 +95,10 @@ int main(int argc, char** argv) {
   files.execute.push_back(command[0]);
   if (std::string loader = interpreterOf(program); !loader.empty()) files.execute.push_back(loader);
   const Layer user = keepUser ? Layer{"unprivileged user", false, false, "not asked for: it runs as the caller"} : dropPrivileges(uid, gid);
-  std::vector<Layer> layers{limitResources(limits), user, noNewPrivileges(), restrictFiles(files)};
+  std::vector<Layer> layers{limitResources(limits), user, enterNamespaces(namespaces)};
+  if (::chdir(cwd.c_str()) != 0) return 127;  // into the tmpfs, if one now covers it
+  layers.push_back(noNewPrivileges());
+  layers.push_back(restrictFiles(files));
   if (seccomp == "no-network") layers.push_back(restrictSyscalls(SyscallPolicy::NoNetwork));
   // Killed with the process that started it; set after the user changed, which clears it.
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);

@@ -8,6 +8,7 @@
 #include <sched.h>
 #include <seccomp.h>
 #include <signal.h>
+#include <sys/mount.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -89,6 +90,54 @@ Layer dropPrivileges(std::uint32_t uid, std::uint32_t gid) {
   }
   layer.applied = true;
   layer.note = "uid " + std::to_string(uid);
+  return layer;
+}
+
+namespace {
+
+// Writes `text` to /proc/self/`file`; false with the reason in `problem` if it cannot.
+bool writeProc(const char* file, const std::string& text, std::string& problem) {
+  const Fd fd(::open((std::string("/proc/self/") + file).c_str(), O_WRONLY | O_CLOEXEC));
+  if (fd.valid() && ::write(fd.get(), text.data(), text.size()) == static_cast<ssize_t>(text.size())) return true;
+  problem = errorText(file);
+  return false;
+}
+
+}  // namespace
+
+Layer enterNamespaces(const Namespaces& ns) {
+  Layer layer{.name = "namespaces"};
+  const uid_t uid = ::geteuid();
+  const gid_t gid = ::getegid();
+  // Its /proc/self files belong to root once a root process changed user, unless it is dumpable again.
+  ::prctl(PR_SET_DUMPABLE, 1, 0, 0, 0);
+  if (::unshare(CLONE_NEWUSER | CLONE_NEWIPC | CLONE_NEWNS) != 0) {
+    layer.note = "not available: " + errorText("unshare") + " (user namespaces are disabled here)";
+    ::prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
+    return layer;
+  }
+  // The same ids inside as outside, so that files it makes have an owner.
+  bool ok = writeProc("setgroups", "deny", layer.note) && writeProc("uid_map", std::to_string(uid) + " " + std::to_string(uid) + " 1", layer.note) &&
+            writeProc("gid_map", std::to_string(gid) + " " + std::to_string(gid) + " 1", layer.note);
+  ::prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
+  // Its mounts stay its own; the scratch folder is a tmpfs of bounded size, whose files never run.
+  if (ok && ::mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) ok = false, layer.note = errorText("making mounts private");
+  if (ok && !ns.scratch.empty()) {
+    const std::string options = "size=" + std::to_string(ns.scratchBytes) + ",nr_inodes=4096,mode=0700";
+    if (::mount("frob-scratch", ns.scratch.c_str(), "tmpfs", MS_NOSUID | MS_NODEV | MS_NOEXEC, options.c_str()) != 0) {
+      ok = false, layer.note = errorText(("mounting a tmpfs on " + ns.scratch).c_str());
+    }
+  }
+  if (ok && ns.tasks != 0) {
+    const rlimit r{ns.tasks, ns.tasks};
+    if (::setrlimit(RLIMIT_NPROC, &r) != 0) ok = false, layer.note = errorText("limiting processes");
+  }
+  layer.applied = ok;
+  if (ok) {
+    const std::string tasks = uid == 0 ? "; root's processes are not counted" : "; " + std::to_string(ns.tasks) + " processes and threads";
+    layer.note = "user, IPC and mount" + (ns.tasks != 0 ? tasks : std::string()) +
+                 (ns.scratch.empty() ? std::string() : "; scratch a " + std::to_string(ns.scratchBytes >> 20) + " MiB tmpfs");
+  }
   return layer;
 }
 

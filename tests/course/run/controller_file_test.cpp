@@ -82,6 +82,42 @@ TEST(ControllerFile, AnIncludeOutsideItsFolderCannotBeReadAndNoLineOfItIsShown) 
   EXPECT_EQ(messages.find("answer"), std::string::npos) << messages;
 }
 
+// A class graded as one folder: each submission compiles alone with the headers beside it, and
+// cannot read a classmate's file that stood there, by #include or by .incbin.
+TEST(ControllerFile, ASubmissionCompilesAloneAndCannotReadAClassmatesFile) {
+  const fs::path dir = freshFolder("class");
+  writeFile(dir / "alice.cpp", std::string(kController) + "// ALICE-WAS-HERE\n");
+  writeFile(dir / "speed.hpp", "constexpr double kSpeed = 0.3;\n");
+  writeFile(dir / "mallory.cpp", "#include \"alice.cpp\"\n");
+  writeFile(dir / "eve.cpp", "asm(\".incbin \\\"" + (dir / "alice.cpp").string() + "\\\"\");\n" + kController);
+  std::string messages;
+  ASSERT_TRUE(compileSubmission(dir / "alice.cpp", setupIn(dir), &messages).ok()) << messages;
+  Result<CompiledController> mallory = compileSubmission(dir / "mallory.cpp", setupIn(dir), &messages);
+  ASSERT_FALSE(mallory.ok());
+  EXPECT_EQ(mallory.error(), "could not compile '" + (dir / "mallory.cpp").string() + "' (the compiler's messages are above)");
+  EXPECT_NE(messages.find("mallory.cpp:1:10: fatal error: 'alice.cpp' file not found"), std::string::npos) << messages;
+  Result<CompiledController> eve = compileSubmission(dir / "eve.cpp", setupIn(dir), &messages);
+  ASSERT_FALSE(eve.ok());
+  EXPECT_NE(messages.find("error: Could not find incbin file '" + (dir / "alice.cpp").string() + "'"), std::string::npos) << messages;
+  EXPECT_EQ(messages.find("ALICE-WAS-HERE"), std::string::npos) << messages;
+  // Nothing is left of the folders the submissions were copied to.
+  for (const fs::directory_entry& e : fs::directory_iterator(dir / "cache"))
+    EXPECT_EQ(e.path().filename().string().find("submission-"), std::string::npos);
+}
+
+// A compiled controller past the size kept in the cache fails to compile, saying why.
+TEST(ControllerFile, AHugeModuleIsRefused) {
+  const fs::path dir = freshFolder("huge");
+  writeFile(
+      dir / "huge.cpp",
+      std::string("extern \"C\" const char huge[80 << 20] = {1};\n") +
+          "#include <frob/frob.hpp>\nfrob::Behavior<frob::Wheels> go(const frob::Robot&) { return frob::Wheels{0.1, 0.0}; }\nFROB_CONTROLLER(go)\n");
+  Result<CompiledController> c = compileControllerFile(dir / "huge.cpp", setupIn(dir));
+  ASSERT_FALSE(c.ok());
+  EXPECT_EQ(c.error(), "could not compile '" + (dir / "huge.cpp").string() +
+                           "': the compiled controller is 80 MB, more than the 64 MB allowed (a huge array, or a file pulled in with .incbin?)");
+}
+
 TEST(ControllerFile, AFileOfTheSystemOutsideTheHeadersCannotBeIncluded) {
   const fs::path dir = freshFolder("passwd");
   writeFile(dir / "passwd.cpp", "#include \"/etc/passwd\"\n");

@@ -89,6 +89,7 @@ struct Outcome {
 Outcome runHostile(const std::vector<std::string>& names, HostDef def = {}) {
   Outcome o;
   def.output = [&o](std::string_view text) { o.output.append(text); };
+  def.robots = static_cast<std::uint32_t>(names.size());
   std::vector<fs::path> modules;
   for (const std::string& n : names) modules.push_back(testing::hostileModule(n));
   Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start(modules, names, std::move(def));
@@ -198,6 +199,49 @@ TEST(Sandbox, PlottedValuesComeBackWithThePictures) {
   EXPECT_EQ(plotted, here.recorder().steps().back().robots[0].picture);
 }
 
+// The channel is sealed: cutting or growing it fails, and the grader reads on as before.
+TEST(Sandbox, AHostCannotCutTheMemoryItSharesWithTheGrader) {
+  const Outcome o = runHostile({"truncates_channel"});
+  EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
+  EXPECT_EQ(o.lastWheels, (Wheels{0.1, 0.0}));
+}
+
+// A host that answers the protocol itself with task records past the caps fails its robot with the
+// cap named, at the first such reply: the trusted side keeps nothing of it.
+TEST(Sandbox, ForgedRecordsPastTheirCapsFailTheRobot) {
+  const Outcome o = runHostile({"forges_records"});
+  ASSERT_EQ(o.failures.size(), 1u);
+  EXPECT_EQ(o.failures[0].message, "ada: its controller host sent a reply that cannot be read: a task's name longer than 256 bytes");
+  EXPECT_DOUBLE_EQ(o.failures[0].time, 0.5);
+}
+
+// A controller that answers each step just inside its deadline falls behind the run's pace and
+// fails within seconds, not after the run's 600 s.
+TEST(Sandbox, AControllerThatSleepsInEveryStepFallsBehindAndFails) {
+  const Outcome o = runHostile({"sleeps_each_step"}, {.paceAllowance = 1.5});
+  ASSERT_EQ(o.failures.size(), 1u);
+  const std::string& why = o.failures[0].message;
+  EXPECT_EQ(why.rfind("ada: fell behind: it took 2.0 s of wall-clock time for 0.52 s of simulated time", 0), 0u) << why;
+  EXPECT_NE(why.find("(at most 1.5 s + 1 s per simulated second; it waited or slept?) at t = 0.52 s"), std::string::npos) << why;
+  // Steps at 0.50 and 0.51 s sleep 0.9 s each; at 0.52 s the wait passes 1.5 s + 0.52 s.
+  EXPECT_DOUBLE_EQ(o.failures[0].time, 0.52);
+}
+
+// Its working folder holds 64 MB in all, whatever the size of each file.
+TEST(Sandbox, TheScratchFolderIsBoundedInTotal) {
+  const Outcome o = runHostile({"fills_scratch"});
+  EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
+  // The 64 MiB tmpfs takes four 15 MB files and 4 MB of the fifth (a megabyte is a whole write).
+  EXPECT_NEAR(o.lastWheels.forward / 0.01, 64.0, 1e-9);
+}
+
+// Processes and threads at once are bounded: 64, the host's own thread among them.
+TEST(Sandbox, ThreadsAreBoundedInNumber) {
+  const Outcome o = runHostile({"starts_many_threads"});
+  EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
+  EXPECT_NEAR(o.lastWheels.forward / 0.001, 63.0, 1e-6);
+}
+
 TEST(Sandbox, ThreadsAreAllowed) {
   const Outcome o = runHostile({"starts_thread"});
   EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
@@ -287,7 +331,7 @@ TEST(Sandbox, EveryLayerSaysWhetherItWasApplied) {
     names.push_back(l.name);
     EXPECT_TRUE(l.applied || !l.note.empty()) << l.name;
   }
-  EXPECT_EQ(names, (std::vector<std::string>{"resource limits", "unprivileged user", "no new privileges", "landlock", "seccomp"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"resource limits", "unprivileged user", "namespaces", "no new privileges", "landlock", "seccomp"}));
 }
 
 }  // namespace

@@ -57,6 +57,12 @@ struct LoadedController {
 /// compile error the error names the file; the compiler's messages go to `messages`, or to stderr.
 [[nodiscard]] Result<CompiledController> compileControllerFile(const std::filesystem::path& source, const CompilerSetup& setup = compilerSetup(),
                                                                std::string* messages = nullptr);
+/// Compiles a submission as compileControllerFile() does, but alone: copied, with the headers (.h,
+/// .hpp) beside it, into a fresh folder of its own, so that its compile reads no other file that
+/// stood there (a classmate's, when a class is one folder of .cpp files). The compiler's messages
+/// name the file by its name only.
+[[nodiscard]] Result<CompiledController> compileSubmission(const std::filesystem::path& source, const CompilerSetup& setup = compilerSetup(),
+                                                           std::string* messages = nullptr);
 /// Loads `compiled` into this process, where its code runs outside the sandbox (trusted code only). Its
 /// module stays loaded for the life of the process.
 [[nodiscard]] Result<LoadedController> loadInProcess(const CompiledController& compiled);

@@ -25,12 +25,17 @@ namespace frob::course {
 
 /// The limits of a controller host and how it waits for its turn.
 struct HostDef {
+  std::uint32_t robots = 1;                      ///< most robots it drives in one run (its channel is sized, then sealed, at start)
   double stepSeconds = 1.0;                      ///< wall-clock time one step of all its robots may take
   double startSeconds = 10.0;                    ///< to load the modules (global constructors run) and answer
   double runSeconds = 600.0;                     ///< wall-clock time of the whole run, and its CPU limit
+  double paceAllowance = 10.0;                   ///< the grader's wait for a run's replies may pass the simulated time
+  double pacePerSecond = 1.0;                    ///< driven by this much wall-clock time per simulated second, plus the allowance
   std::uint64_t memoryBytes = 1ULL << 30;        ///< its address space
   std::uint64_t outputBytes = 1ULL << 20;        ///< of its stdout and stderr passed on; the rest is dropped
   std::uint64_t fileBytes = 16ULL << 20;         ///< largest file it may write in its scratch folder
+  std::uint64_t scratchBytes = 64ULL << 20;      ///< all the files it writes there
+  std::uint64_t tasks = 64;                      ///< its processes and threads at once
   std::uint64_t spinNanoseconds = 50'000;        ///< each side spins this long before it sleeps; 0 when runs share the cores
   std::function<void(std::string_view)> output;  ///< where its output goes; empty: this process's stderr
   bool checked = false;                          ///< its modules were compiled with compilerSetup(true): load the sanitizers' runtime,

@@ -4,6 +4,9 @@
 /// A doorbell is a sequence number in shared memory: the waiter spins on it briefly, then sleeps
 /// (the host on a futex, the trusted side in poll on an eventfd); the ringer wakes it only if it
 /// sleeps, so a step in which both sides spin makes no system call at all.
+/// The trusted side sizes the channel once and seals it against shrinking and growing before the
+/// host starts, so the host cannot pull memory from under it; should a read of it fault anyway
+/// (SIGBUS), the mapping is replaced by zeros and the channel reports that it was cut.
 
 #include "frob/base/result.hpp"
 #include "frob/sandbox/fd.hpp"
@@ -17,7 +20,7 @@
 namespace frob::sandbox {
 
 inline constexpr std::uint32_t kMagic = 0x424f5246;  // "FROB"
-inline constexpr std::uint32_t kVersion = 1;
+inline constexpr std::uint32_t kVersion = 2;
 /// The file descriptors a host finds its channel on.
 inline constexpr int kChannelFd = 3, kWakeFd = 4;
 
@@ -39,7 +42,7 @@ struct Header {
   std::uint32_t version = kVersion;
   // Written by the trusted side before it rings the request.
   Command command = Command::Load;
-  std::uint32_t robots = 0;           ///< robots in the run (Build, Step)
+  std::uint32_t robots = 0;           ///< robot areas in the channel
   std::uint64_t setupBytes = 0;       ///< size of the setup area
   std::uint64_t inBytes = 0;          ///< size of each robot's frame area
   std::uint64_t outBytes = 0;         ///< size of each robot's reply area
@@ -70,25 +73,25 @@ class Channel {
   Channel(Channel&& other) noexcept;
   Channel& operator=(Channel&& other) noexcept;
 
-  /// Trusted side: a new memfd holding a header and a setup area of `setupBytes`.
-  [[nodiscard]] Status create(std::size_t setupBytes);
-  /// Trusted side: room for `robots` robot areas of `inBytes` + `outBytes` each.
-  [[nodiscard]] Status resize(std::uint32_t robots, std::size_t inBytes, std::size_t outBytes);
-  /// Host: maps the channel on `fd`, which it then owns, with the sizes its header gives now.
+  /// Trusted side: a new sealed memfd holding a header, a setup area of `setupBytes`, and `robots`
+  /// robot areas of `inBytes` + `outBytes` each. Pages cost memory only once they are written.
+  [[nodiscard]] Status create(std::size_t setupBytes, std::uint32_t robots, std::size_t inBytes, std::size_t outBytes);
+  /// Host: maps the channel on `fd`, which it then owns, with the sizes its header gives.
   [[nodiscard]] Status attach(int fd);
+  /// Trusted side: whether a read faulted (the memory was cut from under it); it reads zeros since.
+  [[nodiscard]] bool cut() const;
 
   [[nodiscard]] int fd() const { return fd_.get(); }
-  /// The header, at an address that stays put when the channel grows.
-  [[nodiscard]] Header& header() const { return *reinterpret_cast<Header*>(head_); }
+  [[nodiscard]] Header& header() const { return *reinterpret_cast<Header*>(base_); }
   [[nodiscard]] std::span<std::byte> setup() const;
   [[nodiscard]] std::span<std::byte> frameArea(std::uint32_t robot) const;
   [[nodiscard]] std::span<std::byte> replyArea(std::uint32_t robot) const;
 
  private:
   Status map(std::size_t bytes);
-  std::byte* head_ = nullptr;  // the header's page, mapped once
-  std::byte* base_ = nullptr;  // the whole channel, mapped anew as it grows
+  std::byte* base_ = nullptr;
   std::size_t mapped_ = 0;
+  int guard_ = -1;  // this mapping's slot in the SIGBUS handler's list (trusted side)
   Fd fd_;
   // The layout as this side knows it (the trusted side never reads it back from the header).
   std::size_t setupBytes_ = 0, inBytes_ = 0, outBytes_ = 0;

@@ -1,7 +1,7 @@
 #pragma once
 /// The layers of the sandbox around an untrusted process, each applied to the calling process and each
-/// reporting whether it took effect: resource limits, an unprivileged user, no new privileges,
-/// Landlock for files, seccomp for system calls. frob-sandbox applies them before it runs a compiler or
+/// reporting whether it took effect: resource limits, an unprivileged user, namespaces of its own,
+/// no new privileges, Landlock for files, seccomp for system calls. frob-sandbox applies them before it runs a compiler or
 /// a controller host; the host adds its own system-call filter before it loads student code.
 
 #include <cstdint>
@@ -26,6 +26,16 @@ struct Limits {
   std::uint64_t openFiles = 0;    ///< open file descriptors
 };
 
+/// Namespaces of its own: a user namespace (in which `tasks` counts only its own processes and
+/// threads), an IPC namespace (no System V object or POSIX message queue shared with anyone), and
+/// a mount namespace in which `scratch`, when given, is a tmpfs of `scratchBytes`: bounded in total,
+/// and gone with the process.
+struct Namespaces {
+  std::uint64_t tasks = 0;  ///< processes and threads at once (RLIMIT_NPROC); 0: no limit
+  std::string scratch;      ///< a folder to cover with the tmpfs; "": none
+  std::uint64_t scratchBytes = 0;
+};
+
 /// What the files allow: everything else is neither read, written nor run.
 struct FileAccess {
   std::vector<std::string> read;     ///< folders or files it may read (and list)
@@ -43,6 +53,9 @@ enum class SyscallPolicy {
 [[nodiscard]] Layer limitResources(const Limits& limits);
 /// When running as root: drops every group and becomes `uid`/`gid`; otherwise changes nothing.
 [[nodiscard]] Layer dropPrivileges(std::uint32_t uid, std::uint32_t gid);
+/// Enters `ns` (after dropPrivileges: the namespaces belong to the user it became). Not applied
+/// where the kernel or a container forbids user namespaces; then nothing changes.
+[[nodiscard]] Layer enterNamespaces(const Namespaces& ns);
 /// PR_SET_NO_NEW_PRIVS: nothing run from now on gains privileges (set-user-ID programs included).
 [[nodiscard]] Layer noNewPrivileges();
 /// Landlock: only `access` on files, no TCP and (where the kernel has it) no signals or abstract
