@@ -9,7 +9,7 @@ namespace frob::sandbox {
 void Writer::put(std::string_view s, std::size_t cap) {
   s = s.substr(0, cap);
   put(static_cast<std::uint32_t>(s.size()));
-  if (!fits(s.size())) return;
+  if (!fits(s.size()) || s.empty()) return;  // an empty view may hold no pointer at all
   std::memcpy(area_.data() + used_, s.data(), s.size());
   used_ += s.size();
 }
