@@ -1,6 +1,7 @@
 // Issue 12, the controller host: what host costs a step (frames out, wheels back) against the
-// same controllers sampled in this process, for 1 and 4 robots, spinning before sleeping or
-// sleeping at once; and what starting a host costs (spawn, sandbox, exec, dlopen, first answer).
+// same controllers sampled in this process, for 1 and 4 robots in one host or a host per robot,
+// spinning before sleeping or sleeping at once; and what starting a host costs (spawn, sandbox,
+// exec, dlopen, first answer).
 // Run by hand for figures:   build/tests/bench/host_bench --benchmark_min_time=2
 // Each iteration is one step of the run; the overhead per step is Sandboxed/N minus InProcess/N.
 #include "frob/run/host.hpp"
@@ -46,6 +47,16 @@ void Sandboxed(benchmark::State& state) {
   perStep(state, run);
 }
 
+// A host of its own per robot, as frob run and frob grade drive a run.
+void HostPerRobot(benchmark::State& state) {
+  const worlds::WorldDef& w = world(static_cast<int>(state.range(0)));
+  const course::HostDef def{.spinNanoseconds = static_cast<std::uint64_t>(state.range(1)) * 1000};
+  Result<course::RobotHosts> hosts = course::RobotHosts::start({kModule}, {"run_around"}, {0}, w.robots.size(), def);
+  if (!hosts) return state.SkipWithError(hosts.error().c_str());
+  worlds::Run run(w, {}, hosts.value().driver(false), {.keepSteps = false});
+  perStep(state, run);
+}
+
 void HostStart(benchmark::State& state) {
   for (auto _ : state) {
     Result<std::shared_ptr<course::ControllerHost>> host = course::ControllerHost::start({kModule}, {"run_around"});
@@ -56,6 +67,7 @@ void HostStart(benchmark::State& state) {
 BENCHMARK(InProcess)->ArgName("robots")->Arg(1)->Arg(4);
 // Args: robots, microseconds each side spins before it sleeps (0: sleeps at once, for shared cores).
 BENCHMARK(Sandboxed)->ArgNames({"robots", "spin_us"})->Args({1, 50})->Args({4, 50})->Args({1, 0})->Args({4, 0});
+BENCHMARK(HostPerRobot)->ArgNames({"robots", "spin_us"})->Args({1, 50})->Args({4, 50})->Args({4, 0});
 BENCHMARK(HostStart)->Unit(benchmark::kMillisecond);
 
 }  // namespace

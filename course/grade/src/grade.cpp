@@ -180,19 +180,18 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
           r.reason = "the world could not be loaded: " + world.error();
           continue;
         }
-        HostDef hostDef = def.host;
-        hostDef.robots = static_cast<std::uint32_t>(world.value().robots.size());
-        Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start({compiled.value().module}, {compiled.value().source}, hostDef);
-        if (!host) {
-          r.reason = host.error();
+        Result<RobotHosts> hosts =
+            RobotHosts::start({compiled.value().module}, {compiled.value().source}, {0}, world.value().robots.size(), def.host);
+        if (!hosts) {
+          r.reason = hosts.error();
           continue;
         }
-        worlds::Run run(world.value(), {.dt = def.rubric.dt, .seed = r.seed}, host.value()->driver({0}, false), {.keepSteps = false});
+        worlds::Run run(world.value(), {.dt = def.rubric.dt, .seed = r.seed}, hosts.value().driver(false), {.keepSteps = false});
         const Ran ran = drive(run, world.value(), stepsFor(check.seconds, def.rubric.dt));
         judgeRun(check, ran.record, r);
         r.trajectoryHash = ran.trajectoryHash;
         r.hints = ran.hints;
-        for (std::string& n : host.value()->notes()) {
+        for (std::string& n : hosts.value().notes()) {
           if (std::find(g.notes.begin(), g.notes.end(), n) == g.notes.end()) g.notes.push_back(std::move(n));
         }
         if (!def.logs.empty()) {

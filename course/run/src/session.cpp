@@ -32,8 +32,8 @@ class Unstarted final : public worlds::ControllerDriver {
   std::string why_;
 };
 
-// The driver of `def`'s controllers: in this process, or in a sandboxed host.
-worlds::DriverFactory driverFor(const RunDef& def, std::shared_ptr<ControllerHost>& host, bool pictures) {
+// The driver of `def`'s controllers: in this process, or each robot's in a sandboxed host of its own.
+worlds::DriverFactory driverFor(const RunDef& def, std::optional<RobotHosts>& hosts, bool pictures) {
   if (!def.host) {
     std::vector<Controller> controllers;
     for (const LoadedController& c : def.controllers) controllers.push_back(c.entry.make);
@@ -47,16 +47,14 @@ worlds::DriverFactory driverFor(const RunDef& def, std::shared_ptr<ControllerHos
     modulePerRobot.push_back(static_cast<std::size_t>(known - modules.begin()));
     if (known == modules.end()) modules.push_back(c.module), sources.push_back(c.source);
   }
-  HostDef hostDef = *def.host;
-  hostDef.robots = static_cast<std::uint32_t>(def.world.robots.size());
-  Result<std::shared_ptr<ControllerHost>> started = ControllerHost::start(modules, sources, hostDef);
+  Result<RobotHosts> started = RobotHosts::start(modules, sources, modulePerRobot, def.world.robots.size(), *def.host);
   if (!started) {
     return [why = started.error()](const worlds::Simulation& sim) -> std::unique_ptr<worlds::ControllerDriver> {
       return std::make_unique<Unstarted>(sim.robotCount(), why);
     };
   }
-  host = started.value();
-  return host->driver(modulePerRobot, pictures);
+  hosts = std::move(started.value());
+  return hosts->driver(pictures);
 }
 
 // The sonar that looks straight ahead.
@@ -163,9 +161,9 @@ Result<Summary> runSession(const RunDef& def) {
   if (Status s = validate(def); !s) return s;
   const RunOutputs& out = def.outputs;
   const bool drawFrames = !out.video.empty() || !out.frames.empty();
-  std::shared_ptr<ControllerHost> host;
+  std::optional<RobotHosts> hosts;
   // Every step is read as it comes (summary, trace, frames, plots), so only the newest is kept.
-  worlds::Run run(def.world, def.options, driverFor(def, host, drawFrames || !out.plot.empty()), {.window = 1});
+  worlds::Run run(def.world, def.options, driverFor(def, hosts, drawFrames || !out.plot.empty()), {.window = 1});
   const worlds::Simulation& sim = run.simulation();
   const std::size_t n = sim.robotCount();
   const bool checked = def.host && def.host->checked;
@@ -266,7 +264,7 @@ Result<Summary> runSession(const RunDef& def) {
                   .simulatedSeconds = sim.time(),
                   .steps = sim.stepCount(),
                   .trajectoryHash = run.recorder().trajectoryHash()};
-  if (host) summary.notes = host->notes(), summary.sandbox = host->layers();
+  if (hosts) summary.notes = hosts->notes(), summary.sandbox = hosts->layers();
   if (view) {
     for (const std::string& name : def.outputs.plotSignals) {
       const std::vector<std::string>& seen = view->publishedNames();

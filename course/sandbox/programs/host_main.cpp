@@ -104,8 +104,9 @@ std::vector<Driven> build(const Channel& channel, const std::vector<const Contro
   return driven;
 }
 
-// Samples every robot at `now` and writes its reply.
-void step(const Channel& channel, std::vector<Driven>& driven, const Instant& now, bool pictures) {
+// Samples every robot at `now` (its pictures too, in every run, so that a controller cannot tell a
+// filmed run from a graded one) and writes its reply.
+void step(const Channel& channel, std::vector<Driven>& driven, const Instant& now) {
   StepReply reply;
   for (std::uint32_t i = 0; i < driven.size(); ++i) {
     Driven& d = driven[i];
@@ -114,7 +115,7 @@ void step(const Channel& channel, std::vector<Driven>& driven, const Instant& no
     header->robot = i;
     const bool wasFailed = d.controller->failed();
     reply.picture = Picture();
-    reply.wheels = d.controller->step(now, pictures ? &reply.picture : nullptr);
+    reply.wheels = d.controller->step(now, &reply.picture);
     const bool failed = d.controller->failed() && !d.reported;
     d.reported = d.controller->failed();
     reply.state = failed ? StepReply::State::FailedNow : wasFailed ? StepReply::State::FailedBefore : StepReply::State::Running;
@@ -123,7 +124,7 @@ void step(const Channel& channel, std::vector<Driven>& driven, const Instant& no
     const std::size_t sent = std::min<std::size_t>(d.records.size(), kRecordsPerStep);
     reply.records.assign(d.records.begin(), d.records.begin() + static_cast<std::ptrdiff_t>(sent));
     d.records.erase(d.records.begin(), d.records.begin() + static_cast<std::ptrdiff_t>(sent));
-    reply.hasPicture = pictures;
+    reply.hasPicture = true;
     writeFramed(channel.replyArea(i), reply);  // a reply too large for its area is cut: the trusted side reports it
   }
 }
@@ -157,7 +158,7 @@ int main(int argc, char** argv) {
     } else {
       const Instant& now = header->step == 0 ? clock.now() : clock.advance();
       header->activity = Activity::Stepping;
-      step(channel, driven, now, header->pictures != 0);
+      step(channel, driven, now);
     }
     header->activity = Activity::Waiting;
     ring(header->reply, ++sequence, kWakeFd);

@@ -242,6 +242,37 @@ TEST(Sandbox, ThreadsAreBoundedInNumber) {
   EXPECT_NEAR(o.lastWheels.forward / 0.001, 63.0, 1e-6);
 }
 
+// A run gives each robot a host of its own: a global variable of one robot's controller is not
+// another's (in one host, both would see two robots).
+TEST(Sandbox, RobotsOfOneRunShareNoProcess) {
+  const fs::path module = testing::hostileModule("shares_a_global");
+  Result<RobotHosts> hosts = RobotHosts::start({module}, {"shares_a_global"}, {0}, 2);
+  ASSERT_TRUE(hosts.ok()) << hosts.error();
+  worlds::Run run(room(2), {}, hosts.value().driver(false));
+  run.runUntil(0.5);
+  EXPECT_EQ(run.recorder().steps().back().robots[0].wheels, (Wheels{0.1, 0.0}));
+  EXPECT_EQ(run.recorder().steps().back().robots[1].wheels, (Wheels{0.1, 0.0}));
+  EXPECT_EQ(hosts.value().layers().size(), 6u);
+
+  std::shared_ptr<ControllerHost> one = startHost({module}, {.robots = 2});
+  ASSERT_NE(one, nullptr);
+  worlds::Run shared(room(2), {}, one->driver({0}, false));
+  shared.runUntil(0.5);
+  EXPECT_EQ(shared.recorder().steps().back().robots[1].wheels, (Wheels{0.2, 0.0}));
+}
+
+// Pictures are sampled in every run, filmed or not: a controller cannot drive one way for the film
+// and another for the grade.
+TEST(Sandbox, AControllerCannotTellAFilmedRunFromAGradedOne) {
+  for (const bool filmed : {false, true}) {
+    std::shared_ptr<ControllerHost> host = startHost({testing::hostileModule("careful_when_filmed")});
+    ASSERT_NE(host, nullptr);
+    worlds::Run run(room(), {}, host->driver({0}, filmed));
+    run.runUntil(0.5);
+    EXPECT_EQ(run.recorder().steps().back().robots[0].wheels, (Wheels{0.1, 0.0})) << (filmed ? "filmed" : "graded");
+  }
+}
+
 TEST(Sandbox, ThreadsAreAllowed) {
   const Outcome o = runHostile({"starts_thread"});
   EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;

@@ -1,7 +1,8 @@
 #pragma once
 /// Student controllers in a sandboxed process of their own: the controller host. The world, its
 /// seed and every measurement stay here; the host only ever sees each robot's sensor frame and
-/// answers its wheels (and, when a video is made, its picture and task timeline).
+/// answers its wheels (and, when a video is made, its picture and task timeline). A run gives each
+/// robot a host of its own (RobotHosts).
 ///
 ///   Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start({"wander.so"});
 ///   worlds::Run run(world, {}, (*host)->driver({0}, /*pictures=*/false));
@@ -59,7 +60,8 @@ class ControllerHost : public std::enable_shared_from_this<ControllerHost> {
   /// Every layer of the sandbox, and whether it was applied.
   [[nodiscard]] const std::vector<sandbox::Layer>& layers() const;
   /// The driver of a run whose robot i runs module modulePerRobot[i] (one entry: all robots);
-  /// with `pictures`, each reply carries the robot's picture. A host drives one run.
+  /// with `pictures`, each robot's picture is kept in the run's record (the host samples and sends
+  /// it in every run, so that a controller cannot tell a filmed run). A host drives one run.
   [[nodiscard]] worlds::DriverFactory driver(std::vector<std::size_t> modulePerRobot, bool pictures);
   /// The host's process id, for monitoring.
   [[nodiscard]] int processId() const;
@@ -69,8 +71,29 @@ class ControllerHost : public std::enable_shared_from_this<ControllerHost> {
   struct Impl;
 
  private:
+  friend class RobotHosts;
   explicit ControllerHost(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
+};
+
+/// A host of its own for each robot of a run, so that robots share nothing but the world (no global
+/// variable of one is another's). What `frob run` and `frob grade` drive a run with.
+class RobotHosts {
+ public:
+  /// Starts one host per robot of `robots`: robot i runs modules[modulePerRobot[i]] (one entry:
+  /// every robot runs it). Fails as ControllerHost::start() does.
+  [[nodiscard]] static Result<RobotHosts> start(const std::vector<std::filesystem::path>& modules, const std::vector<std::string>& sources,
+                                                const std::vector<std::size_t>& modulePerRobot, std::size_t robots, HostDef def = {});
+  /// The driver of the run: each step every host gets its robot's frame before any answer is
+  /// awaited; with `pictures`, each robot's picture is kept in the run's record.
+  [[nodiscard]] worlds::DriverFactory driver(bool pictures) const;
+  /// The sandbox's layers (each host has the same).
+  [[nodiscard]] const std::vector<sandbox::Layer>& layers() const;
+  /// Every host's notes, each once.
+  [[nodiscard]] std::vector<std::string> notes() const;
+
+ private:
+  std::vector<std::shared_ptr<ControllerHost>> hosts_;
 };
 
 /// The layers that were needed and not applied, one line each ("landlock: NOT applied (...)"); "" when none.

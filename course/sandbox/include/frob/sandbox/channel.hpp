@@ -49,7 +49,6 @@ struct Header {
   std::uint64_t spinNanoseconds = 0;  ///< how long the host spins before it sleeps
   std::int64_t step = 0;              ///< the step to sample (Step)
   double dt = 0.0;                    ///< the run's step, seconds (Build)
-  std::uint32_t pictures = 0;         ///< 1: replies carry each robot's picture
   Doorbell request;
   Doorbell reply;
   // Written by the host: what it was doing, and what it tried that was refused.
