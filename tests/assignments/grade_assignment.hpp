@@ -33,6 +33,19 @@ inline std::string reasons(const course::Grade& g, const std::string& check) {
   return "";
 }
 
+// The worlds of the failed runs of a check, one per line, as the instructor sees them (a student reads
+// "hidden world 2" for a check that is not visible).
+inline std::string failedIn(const course::Grade& g, const std::string& check) {
+  std::string worlds;
+  for (const course::CheckGrade& c : g.checks) {
+    if (c.name != check) continue;
+    for (const course::RunGrade& r : c.runs) worlds += r.passed ? "" : r.world + "\n";
+    return worlds;
+  }
+  ADD_FAILURE() << "no check named '" << check << "'";
+  return "";
+}
+
 inline std::filesystem::path assignmentFile(const std::string& assignment, const std::string& file) {
   return std::filesystem::path(FROB_ASSIGNMENTS_DIR) / assignment / file;
 }

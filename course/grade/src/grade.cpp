@@ -12,6 +12,7 @@
 #include <fstream>
 #include <map>
 #include <optional>
+#include <regex>
 #include <sstream>
 
 namespace frob::course {
@@ -132,12 +133,31 @@ void writeLog(const fs::path& path, const Rubric& rubric, const Check& check, co
 
 }  // namespace
 
+std::string CheckGrade::place(std::size_t k) const {
+  if (visibility != Visibility::Visible) return "hidden world " + std::to_string(k + 1);
+  return runs.at(k).world + ", seed " + std::to_string(runs.at(k).seed);
+}
+
+namespace {
+
+// `text` without the coordinates of the places it names (" at (3.1, 4.5)").
+std::string withoutPlaces(const std::string& text) {
+  static const std::regex coordinates(R"( at \(-?[0-9.]+, -?[0-9.]+\))");
+  return std::regex_replace(text, coordinates, "");
+}
+
+}  // namespace
+
+std::string CheckGrade::reasonShown(std::size_t k) const {
+  return visibility == Visibility::Visible ? runs.at(k).reason : withoutPlaces(runs.at(k).reason);
+}
+
 std::string CheckGrade::output() const {
   std::string out;
-  for (const RunGrade& r : runs) {
-    if (r.passed) continue;
-    out += "in " + r.world + ", seed " + std::to_string(r.seed) + ": " + r.reason + "\n";
-    for (const std::string& h : r.hints) out += "  hint: " + h + "\n";
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    if (runs[k].passed) continue;
+    out += "in " + place(k) + ": " + reasonShown(k) + "\n";
+    for (const std::string& h : runs[k].hints) out += "  hint: " + (visibility == Visibility::Visible ? h : withoutPlaces(h)) + "\n";
   }
   return out;
 }

@@ -34,8 +34,9 @@ Status writeJUnit(const Grade& g, const std::filesystem::path& path) {
       testcase(c.name, outcomeOf(c) == Outcome::Pass ? nullptr : &why, why);
       continue;
     }
-    for (const RunGrade& r : c.runs) {
-      testcase(c.name + " / " + r.world + " seed " + std::to_string(r.seed), r.passed ? nullptr : &r.reason, r.reason);
+    for (std::size_t k = 0; k < c.runs.size(); ++k) {
+      const std::string why = c.reasonShown(k);
+      testcase(c.name + " / " + c.place(k), c.runs[k].passed ? nullptr : &why, why);
     }
   }
   char buf[32];

@@ -30,10 +30,24 @@ TEST(ScoreTable, ExactText) {
             "avoids walls      0.5 / 1  PARTIAL\n"
             "    in maze, seed 3: touched a wall at 41.2 s at (3.1, 4.5)\n"
             "secret worlds       0 / 2  FAIL     [hidden]\n"
-            "    in rooms, seed 7: not within 0.3 m of goal by 60 s\n"
+            "    in hidden world 1: not within 0.3 m of goal by 60 s\n"
             "----------------  -------  -------\n"
             "Total             2.5 / 5\n"
             "Note: the controller printed more than 1 MB; the rest was cut\n");
+}
+
+// A check that is not visible names no world, seed or place: nothing a student could rebuild it from.
+TEST(CheckGrade, AHiddenRunsReasonNamesNoWorldSeedOrPlace) {
+  CheckGrade c{.name = "hidden",
+               .points = 1,
+               .visibility = Visibility::Hidden,
+               .runs = {fail("generated obstacles, hidden world 1", 1234, "touched a wall at 41.2 s at (3.1, -4.5)")}};
+  c.runs[0].hints = {"it pushed against a wall from 23.4 s at (4.8, 6.5)"};
+  EXPECT_EQ(c.output(), "in hidden world 1: touched a wall at 41.2 s\n  hint: it pushed against a wall from 23.4 s\n");
+  c.visibility = Visibility::Visible;
+  EXPECT_EQ(c.output(),
+            "in generated obstacles, hidden world 1, seed 1234: touched a wall at 41.2 s at (3.1, -4.5)\n"
+            "  hint: it pushed against a wall from 23.4 s at (4.8, 6.5)\n");
 }
 
 TEST(ScoreTable, CompileErrorAndControlCharacters) {
@@ -51,8 +65,8 @@ TEST(ScoreTable, CompileErrorAndControlCharacters) {
             "esc?[2J                0 / 2  FAIL\n"
             "    in empty, seed 1: the submission did not compile\n"
             "third of a point  0.3333 / 1  PARTIAL  [after_due_date]\n"
-            "    in maze, seed 2: bad ? bell\n"
-            "    in maze, seed 3: x\n"
+            "    in hidden world 2: bad ? bell\n"
+            "    in hidden world 3: x\n"
             "The submission did not compile:\n"
             "    bob.cpp:3:1: error: expected ';'\n"
             "      int x = 1\n"
@@ -96,9 +110,9 @@ TEST(Gradescope, FieldsAsTheSpecificationNamesThem) {
          {"score", 0},
          {"max_score", 2},
          {"status", "failed"},
-         {"output", "in rooms, seed 7: not within 0.3 m of goal by 60 s\n"},
+         {"output", "in hidden world 1: not within 0.3 m of goal by 60 s\n"},
          {"visibility", "hidden"},
-         {"tags", {"rooms"}}}}},
+         {"tags", json::array()}}}},
   };
   EXPECT_EQ(doc, want) << doc.dump(2);
   EXPECT_TRUE(doc["execution_time"].is_number_integer());
@@ -205,13 +219,13 @@ TEST(JUnit, ReadsBackWithAStrictXmlParser) {
   EXPECT_EQ(one(doc.get(), "/testsuite/@errors"), "0");
   EXPECT_EQ(one(doc.get(), "/testsuite/@time"), "12.600");
   EXPECT_EQ(select(doc.get(), "/testsuite/testcase/@name"),
-            (std::vector<std::string>{"reaches the goal / empty seed 1", "reaches the goal / maze seed 2", "avoids walls / maze seed 3",
-                                      "avoids walls / maze seed 4", "secret worlds / rooms seed 7"}));
+            (std::vector<std::string>{"reaches the goal / empty, seed 1", "reaches the goal / maze, seed 2", "avoids walls / maze, seed 3",
+                                      "avoids walls / maze, seed 4", "secret worlds / hidden world 1"}));
   EXPECT_EQ(select(doc.get(), "/testsuite/testcase/@classname"), std::vector<std::string>(5, g.assignment));
-  EXPECT_EQ(select(doc.get(), "//testcase[@name='avoids walls / maze seed 3']/failure/@message"), std::vector<std::string>{kHostileRead});
-  EXPECT_EQ(select(doc.get(), "//testcase[@name='avoids walls / maze seed 3']/failure"), std::vector<std::string>{kHostileRead});
+  EXPECT_EQ(select(doc.get(), "//testcase[@name='avoids walls / maze, seed 3']/failure/@message"), std::vector<std::string>{kHostileRead});
+  EXPECT_EQ(select(doc.get(), "//testcase[@name='avoids walls / maze, seed 3']/failure"), std::vector<std::string>{kHostileRead});
   // Line breaks and tabs survive in attributes (a parser turns raw ones into spaces).
-  EXPECT_EQ(select(doc.get(), "//testcase[@name='secret worlds / rooms seed 7']/failure/@message"),
+  EXPECT_EQ(select(doc.get(), "//testcase[@name='secret worlds / hidden world 1']/failure/@message"),
             std::vector<std::string>{"two lines,\nkept\tapart\r\n"});
   EXPECT_EQ(select(doc.get(), "//failure").size(), 2u);
   EXPECT_EQ(one(doc.get(), "/testsuite/system-out"), "the controller printed more than 1 MB; the rest was cut\n");
@@ -228,7 +242,7 @@ TEST(JUnit, CompileErrorIsAFailedTestcase) {
   EXPECT_EQ(one(doc.get(), "/testsuite/@time"), "0.400");
   EXPECT_EQ(one(doc.get(), "//testcase[@name='compile']/failure/@message"), "the submission did not compile");
   EXPECT_EQ(one(doc.get(), "//testcase[@name='compile']/failure"), "bob.cpp:3:1: error: expected ';' before '}' & \xEF\xBF\xBD\n");
-  EXPECT_EQ(one(doc.get(), "//testcase[@name='reaches the goal / empty seed 1']/failure/@message"), "the submission did not compile");
+  EXPECT_EQ(one(doc.get(), "//testcase[@name='reaches the goal / empty, seed 1']/failure/@message"), "the submission did not compile");
 }
 
 // ---- Gradebooks ----------------------------------------------------------------------------------

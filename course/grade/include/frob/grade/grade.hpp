@@ -48,8 +48,14 @@ struct CheckGrade {
   double score = 0.0;   ///< points × passed runs / runs
   Visibility visibility = Visibility::Visible;
   std::vector<RunGrade> runs;
-  /// The reasons of the failed runs, one line each ("in maze, seed 3: touched a wall at 41.2 s at (3.1, 4.5)"),
-  /// each followed by its hints ("  hint: ...").
+  /// Where run k took place, as a student may read it: "maze, seed 3"; for a check that is not
+  /// visible, "hidden world 2" (nothing to rebuild the world from).
+  [[nodiscard]] std::string place(std::size_t k) const;
+  /// Why run k failed, as a student may read it: for a check that is not visible, without the
+  /// coordinates of where it happened.
+  [[nodiscard]] std::string reasonShown(std::size_t k) const;
+  /// The reasons of the failed runs, one line each ("in maze, seed 3: touched a wall at 41.2 s at (3.1, 4.5)";
+  /// "in hidden world 2: touched a wall at 41.2 s"), each followed by its hints ("  hint: ...").
   [[nodiscard]] std::string output() const;
 };
 
