@@ -129,7 +129,7 @@ TEST_F(Grading, ACompileErrorScoresZeroAndSaysSo) {
   EXPECT_NE(g.compileError.find("could not compile"), std::string::npos) << g.compileError;
   EXPECT_NE(g.compileError.find("broken.cpp:2:"), std::string::npos) << g.compileError;
   EXPECT_DOUBLE_EQ(g.score(), 0.0);
-  EXPECT_EQ(g.checks[2].output(), "in worlds/field.toml, seed 9: the submission did not compile\n");
+  EXPECT_EQ(g.checks[2].output(), "in hidden world 1: the submission did not compile\n");  // a hidden check names no world
 }
 
 TEST_F(Grading, PartialCreditIsTheShareOfRunsPassed) {
