@@ -6,6 +6,7 @@
 // At the end a table pairs each of our runs with the Enki runs of the same rays and robots, says
 // what each side computes, and gives the fair ratio as the headline.
 #include "cpu_figures.hpp"
+#include "frob/worlds/generate.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/simulation.hpp"
 #include "ray_caster.hpp"  // private header of worlds/, for the ray-cast micro benchmark
@@ -174,6 +175,15 @@ void Construct(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(Simulation(w, {.dt = kDt}));
 }
 BENCHMARK(Construct)->ArgName("world")->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+
+// Generating a hidden world of each kind, its promises checked (target: <= 50 ms); a new seed each time.
+void GenerateWorld(benchmark::State& state) {
+  const auto kind = static_cast<frob::worlds::WorldKind>(state.range(0));
+  std::uint64_t seed = 1;
+  for (auto _ : state) benchmark::DoNotOptimize(frob::worlds::generateWorld(kind, seed++));
+  state.SetLabel(frob::worlds::toString(kind));
+}
+BENCHMARK(GenerateWorld)->ArgName("kind")->DenseRange(0, static_cast<int>(frob::worlds::WorldKind::Crossing))->Unit(benchmark::kMillisecond);
 
 // Enki, the same maze in centimetres, configured as its users would for speed.
 //

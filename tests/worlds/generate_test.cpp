@@ -87,10 +87,17 @@ TEST_P(EveryKind, KeepsItsPromisesForManySeeds) {
     ASSERT_TRUE(w.ok()) << w.error();
     const WorldDef& world = w.value();
     EXPECT_EQ(world.seed, seed);
-    const Point2 start = world.robots.at(0).start.position, goal = *findPoint(world, "goal");
-    EXPECT_GE(nearestWall(withEnclosure(world), start), kRadius + 0.1) << "seed " << seed;
-    EXPECT_GE(nearestWall(withEnclosure(world), goal), kRadius + 0.1) << "seed " << seed;
-    EXPECT_TRUE(reachable(world, start, goal)) << toString(GetParam()) << " seed " << seed;
+    ASSERT_FALSE(world.robots.empty());
+    ASSERT_FALSE(world.points.empty());
+    const Point2 start = world.robots.front().start.position;
+    for (const RobotDef& r : world.robots) {
+      EXPECT_GE(nearestWall(withEnclosure(world), r.start.position), kRadius + 0.1) << "seed " << seed << ": " << r.name;
+      EXPECT_TRUE(reachable(world, start, r.start.position)) << toString(GetParam()) << " seed " << seed << ": " << r.name;
+    }
+    for (const Landmark& p : world.points) {
+      EXPECT_GE(nearestWall(withEnclosure(world), p.position), kRadius + 0.1) << "seed " << seed << ": " << p.name;
+      EXPECT_TRUE(reachable(world, start, p.position)) << toString(GetParam()) << " seed " << seed << ": " << p.name;
+    }
     EXPECT_TRUE(checkWorld(world).ok()) << checkWorld(world).error();
   }
 }
@@ -106,13 +113,23 @@ TEST_P(EveryKind, WritesAFileThatLoadsBackToTheSameWorld) {
     EXPECT_EQ(back->walls[i].radius, made.walls[i].radius) << i;
     EXPECT_EQ(back->walls[i].closed, made.walls[i].closed) << i;
   }
-  EXPECT_EQ(back->points.at(0).position, made.points.at(0).position);
-  EXPECT_EQ(back->robots.at(0).start.position, made.robots.at(0).start.position);
+  ASSERT_EQ(back->points.size(), made.points.size());
+  for (std::size_t i = 0; i < made.points.size(); ++i) EXPECT_EQ(back->points[i].position, made.points[i].position) << made.points[i].name;
+  ASSERT_EQ(back->robots.size(), made.robots.size());
+  for (std::size_t i = 0; i < made.robots.size(); ++i) {
+    EXPECT_EQ(back->robots[i].start.position, made.robots[i].start.position) << i;
+    EXPECT_NEAR(back->robots[i].start.heading, made.robots[i].start.heading, 1e-12) << i;
+  }
+  ASSERT_EQ(back->keys.size(), made.keys.size());
+  for (std::size_t i = 0; i < made.keys.size(); ++i) EXPECT_EQ(back->keys[i].time, made.keys[i].time) << i;
   EXPECT_EQ(back->seed, made.seed);
   EXPECT_EQ(toToml(*back), toToml(made));
 }
 
-INSTANTIATE_TEST_SUITE_P(Generate, EveryKind, ::testing::Values(WorldKind::Obstacles, WorldKind::Maze, WorldKind::Rooms, WorldKind::Loop),
+INSTANTIATE_TEST_SUITE_P(Generate, EveryKind,
+                         ::testing::Values(WorldKind::Obstacles, WorldKind::Maze, WorldKind::Rooms, WorldKind::Loop, WorldKind::FurnishedRoom,
+                                           WorldKind::Outline, WorldKind::Lounge, WorldKind::WarehouseKeys, WorldKind::WarehouseBox,
+                                           WorldKind::Crossing),
                          [](const ::testing::TestParamInfo<WorldKind>& info) { return std::string(toString(info.param)); });
 
 // Room for a wall follower (20 cm each side) between any two obstacles.
@@ -158,10 +175,11 @@ TEST(Generate, AMazeIsPerfect) {
 TEST(Generate, TheSameKindAndSeedGiveTheSameWorld) {
   // Golden hashes of the files, for this generator on every platform (it uses no library
   // randomness and writes millimetres). A change to a generator changes them: say so in its commit.
-  const std::pair<WorldKind, std::uint64_t> golden[] = {{WorldKind::Obstacles, 0x507a6865ae68cffc},
-                                                        {WorldKind::Maze, 0x8d6d1211bd3c238a},
-                                                        {WorldKind::Rooms, 0x6c928bc0cf02103b},
-                                                        {WorldKind::Loop, 0xddba8c29c890a141}};
+  const std::pair<WorldKind, std::uint64_t> golden[] = {
+      {WorldKind::Obstacles, 0x507a6865ae68cffc}, {WorldKind::Maze, 0x8d6d1211bd3c238a},          {WorldKind::Rooms, 0x6c928bc0cf02103b},
+      {WorldKind::Loop, 0xddba8c29c890a141},      {WorldKind::FurnishedRoom, 0x2bca8182ec9938e1}, {WorldKind::Outline, 0xe6392ee7c31b3288},
+      {WorldKind::Lounge, 0x404342d5d8f7eb66},    {WorldKind::WarehouseKeys, 0x6d2d417e0ad8ad6f}, {WorldKind::WarehouseBox, 0xccf5985e0d6ab3eb},
+      {WorldKind::Crossing, 0xa8ed5179b56a8f91}};
   for (const auto& [kind, hash] : golden) {
     const std::string text = toToml(generateWorld(kind, 1).value());
     EXPECT_EQ(text, toToml(generateWorld(kind, 1).value()));
@@ -173,8 +191,110 @@ TEST(Generate, TheSameKindAndSeedGiveTheSameWorld) {
 
 TEST(Generate, KindsByName) {
   EXPECT_EQ(worldKind("maze"), WorldKind::Maze);
+  EXPECT_EQ(worldKind("warehouse_box"), WorldKind::WarehouseBox);
   EXPECT_EQ(worldKind("mazes"), std::nullopt);
-  EXPECT_EQ(worldKindNames(), "obstacles, maze, rooms, loop");
+  EXPECT_EQ(worldKindNames(), "obstacles, maze, rooms, loop, furnished_room, outline, lounge, warehouse_keys, warehouse_box, crossing");
+}
+
+// The assignments' families: each keeps what its handout promises, re-checked here independently.
+
+// wander: every piece of furniture stands clear of the others and of the walls by 0.8 m (room to
+// pass), or against the outer walls; nothing stands in the doorway.
+TEST(Generate, AFurnishedRoomLeavesRoomToPassEverywhere) {
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const WorldDef w = generateWorld(WorldKind::FurnishedRoom, seed).value();
+    ASSERT_GE(w.walls.size(), 4u + 1u) << "seed " << seed;  // the house, two door posts, and furniture
+    const std::vector<WallDef> all = withEnclosure(w);
+    std::vector<std::vector<std::size_t>> pieces;  // furniture: walls that touch each other belong to one piece
+    for (std::size_t i = 4; i < w.walls.size(); ++i) {
+      const bool joins = !pieces.empty() && gap(w.walls[i], w.walls[pieces.back().front()], 0.5) < 0.03;
+      if (joins)
+        pieces.back().push_back(i);
+      else
+        pieces.push_back({i});
+    }
+    for (const auto& piece : pieces) {
+      for (std::size_t j = 0; j < all.size(); ++j) {
+        if (std::find(piece.begin(), piece.end(), j) != piece.end()) continue;
+        double d = INFINITY;
+        for (std::size_t i : piece) d = std::min(d, gap(w.walls[i], all[j], 1.0));
+        const bool outerWall = j >= w.walls.size();
+        EXPECT_TRUE(d > 0.8 - 0.03 || (outerWall && d < 0.03)) << "seed " << seed << ": wall " << piece.front() << " and " << j << ": " << d;
+      }
+    }
+  }
+}
+
+// wall_follow: a closed outline with corners of both kinds (a left turn round the room is concave
+// for a robot with the wall on its right, a right turn convex).
+TEST(Generate, AnOutlineHasConcaveAndConvexCorners) {
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    const WorldDef w = generateWorld(WorldKind::Outline, seed).value();
+    ASSERT_EQ(w.walls.size(), 1u);
+    const std::vector<Point2>& v = w.walls[0].points;
+    ASSERT_TRUE(w.walls[0].closed);
+    int left = 0, right = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const Vec2 a = v[(i + 1) % v.size()] - v[i], b = v[(i + 2) % v.size()] - v[(i + 1) % v.size()];
+      (a.x() * b.y() - a.y() * b.x() > 0 ? left : right) += 1;
+    }
+    EXPECT_EQ(left - right, 4) << "seed " << seed;  // counter-clockwise, the way a right-wall follower goes round
+    EXPECT_GE(right, 2) << "seed " << seed;
+  }
+}
+
+// go_to_goal: the handout's waypoints, and something on the straight line of every leg between them.
+TEST(Generate, ALoungeBlocksEveryLegBetweenTheWaypoints) {
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    const WorldDef w = generateWorld(WorldKind::Lounge, seed).value();
+    const Point2 wp[] = {*findPoint(w, "wp1"), *findPoint(w, "wp2"), *findPoint(w, "wp3"), *findPoint(w, "wp4")};
+    EXPECT_EQ(wp[0], Point2(3.0, 2.5));
+    for (int k = 0; k < 3; ++k) {
+      double nearest = INFINITY;
+      for (int i = 0; i <= 200; ++i) nearest = std::min(nearest, nearestWall(w.walls, wp[k] + (wp[k + 1] - wp[k]) * (i / 200.0)));
+      EXPECT_LT(nearest, 0.03) << "seed " << seed << ": leg " << k + 1;
+    }
+  }
+}
+
+// parallel: other keys, then s, last, between 16 and 24 s; or a box across the patrol's way.
+TEST(Generate, AWarehouseHasTheEventsItsChecksWaitFor) {
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    const WorldDef keys = generateWorld(WorldKind::WarehouseKeys, seed).value();
+    ASSERT_GE(keys.keys.size(), 2u);
+    EXPECT_EQ(keys.keys.back().key, 's');
+    EXPECT_GE(keys.keys.back().time, 16.0);
+    EXPECT_LE(keys.keys.back().time, 24.0);
+    for (std::size_t i = 0; i + 1 < keys.keys.size(); ++i) {
+      EXPECT_NE(keys.keys[i].key, 's') << "seed " << seed;
+      EXPECT_LT(keys.keys[i].time, keys.keys.back().time) << "seed " << seed;
+    }
+    const WorldDef box = generateWorld(WorldKind::WarehouseBox, seed).value();
+    ASSERT_EQ(box.walls.size(), 3u) << "seed " << seed;  // the block, the shelf and the box
+    const Point2 route[] = {{1.5, 1.5}, {6.5, 1.5}, {6.5, 4.5}, {1.5, 4.5}};
+    double nearest = INFINITY;  // from the way of the robot's centre to the box: less than its radius, so it bumps
+    for (int k = 0; k < 3; ++k) {
+      for (int i = 0; i <= 200; ++i) nearest = std::min(nearest, distanceToWall(route[k] + (route[k + 1] - route[k]) * (i / 200.0), box.walls[2]));
+    }
+    EXPECT_LT(nearest, kRadius) << "seed " << seed;
+  }
+}
+
+// multi_robot: 2 to 4 robots, each goal opposite its start through the centre, goals 2 m apart.
+TEST(Generate, ACrossingSendsEveryRobotThroughTheCentre) {
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    const WorldDef w = generateWorld(WorldKind::Crossing, seed).value();
+    ASSERT_GE(w.robots.size(), 2u);
+    ASSERT_LE(w.robots.size(), 4u);
+    std::vector<Point2> goals;
+    for (const RobotDef& r : w.robots) {
+      const std::optional<Point2> goal = findPoint(w, "goal_" + r.name);
+      ASSERT_TRUE(goal) << r.name;
+      EXPECT_LT((*goal + r.start.position - Point2(10, 10)).norm(), 1e-9) << "seed " << seed << ": " << r.name;
+      for (const Point2& g : goals) EXPECT_GT((g - *goal).norm(), 2.0) << "seed " << seed;
+      goals.push_back(*goal);
+    }
+  }
 }
 
 }  // namespace

@@ -1,59 +1,26 @@
 #include "frob/worlds/generate.hpp"
 
 #include "frob/worlds/free_space.hpp"
+#include "generate_kit.hpp"
 
+#include <algorithm>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <optional>
 
 namespace frob::worlds {
 
-namespace {
+namespace kit {
 
-constexpr double kRadius = 0.23;        // the Nomad's body, which the promises are kept for
-constexpr double kClearance = 0.1;      // around the body at the start and the goal
-constexpr double kTrapClearance = 1.5;  // round an obstacle field's L trap: more than a wall follower's reach
-
-// SplitMix64, with reals from the top 53 bits: the same numbers from every standard library.
-class Random {
- public:
-  explicit Random(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-  double uniform(double lo, double hi) { return lo + (hi - lo) * static_cast<double>(next() >> 11) * 0x1p-53; }
-  int integer(int lo, int hi) { return lo + static_cast<int>(next() % static_cast<std::uint64_t>(hi - lo + 1)); }
-
- private:
-  std::uint64_t state_;
-};
-
-// A length or coordinate to the millimetre, so that the world file reads back exactly.
 double mm(double v) { return std::round(v * 1000.0) / 1000.0; }
-void snap(Point2& p) { p = {mm(p.x()), mm(p.y())}; }
-void snap(WorldDef& w) {
-  snap(w.size);
-  for (Landmark& p : w.points) snap(p.position);
-  for (RobotDef& r : w.robots) snap(r.start.position);
-  for (WallDef& wall : w.walls) {
-    for (Point2& p : wall.points) snap(p);
-    wall.radius = mm(wall.radius);
-  }
-}
 
-WorldDef base(const char* what, const Vec2& size, std::uint64_t seed, const Point2& start, double headingDeg, const Point2& goal) {
+WorldDef base(const char* what, const Vec2& size, std::uint64_t seed, const Point2& start, double headingDeg) {
   WorldDef w{.description = what, .size = size, .seed = seed};
-  w.points.push_back({"goal", goal});
   w.robots.push_back({.name = "nomad", .start = {.position = start, .heading = headingDeg * pi / 180.0}});
   return w;
 }
 
-// The walls of `w` with its enclosure, as the simulator builds them.
 std::vector<WallDef> allWalls(const WorldDef& w) {
   std::vector<WallDef> all = w.walls;
   if (w.enclosed) {
@@ -63,17 +30,6 @@ std::vector<WallDef> allWalls(const WorldDef& w) {
   return all;
 }
 
-// The promises of every kind: clearance at the start and the goal, and a way between them.
-bool keepsPromises(const WorldDef& w) {
-  const std::vector<WallDef> walls = allWalls(w);
-  const WallIndex index(walls, w.size, 1.0);
-  const Point2 start = w.robots.front().start.position, goal = w.points.front().position;
-  if (index.distance(start) < kRadius + kClearance || index.distance(goal) < kRadius + kClearance) return false;
-  const FreeGrid grid(walls, w.size, kRadius, 0.05);
-  return grid.reachable(grid.cellOf(start))[grid.cellOf(goal)];
-}
-
-// Nearest distance between two walls (0 when they touch or overlap), sampled along the edges of `a`.
 double gapBetween(const WallDef& a, const WallDef& b) {
   if (a.shape == WallShape::Circle) return std::max(0.0, distanceToWall(a.points[0], b) - a.radius);
   double d = INFINITY;
@@ -87,8 +43,61 @@ double gapBetween(const WallDef& a, const WallDef& b) {
     if (distanceToWall(b.points[0], a) == 0) d = 0;  // b inside a
   } else {
     for (std::size_t i = 0; i + 1 < v.size(); ++i) edge(v[i], v[i + 1]);
+    if (a.closed && v.size() > 2) edge(v.back(), v.front());
   }
   return d;
+}
+
+double gap(const WallDef& a, const WallDef& b) { return std::min(gapBetween(a, b), gapBetween(b, a)); }
+
+}  // namespace kit
+
+namespace {
+
+using namespace kit;
+
+constexpr double kTrapClearance = 1.5;  // round an obstacle field's L trap: more than a wall follower's reach
+
+void snap(Point2& p) { p = {mm(p.x()), mm(p.y())}; }
+void snap(WorldDef& w) {
+  snap(w.size);
+  for (Landmark& p : w.points) snap(p.position);
+  for (RobotDef& r : w.robots) {
+    snap(r.start.position);
+    r.start.heading = mm(r.start.heading * 180.0 / pi) * pi / 180.0;
+  }
+  for (WallDef& wall : w.walls) {
+    for (Point2& p : wall.points) snap(p);
+    wall.radius = mm(wall.radius);
+  }
+  for (KeyEventDef& k : w.keys) k.time = mm(k.time);
+}
+
+// A world of one of the first kinds: one robot, and the point "goal".
+WorldDef base(const char* what, const Vec2& size, std::uint64_t seed, const Point2& start, double headingDeg, const Point2& goal) {
+  WorldDef w = kit::base(what, size, seed, start, headingDeg);
+  w.points.push_back({"goal", goal});
+  return w;
+}
+
+// The promises of every kind: clearance round every start and named point, robots apart, and a
+// way from the first robot's start to every point.
+bool keepsPromises(const WorldDef& w) {
+  const std::vector<WallDef> walls = allWalls(w);
+  if (w.robots.empty()) return false;
+  const WallIndex index(walls, w.size, 1.0);
+  const FreeGrid grid(walls, w.size, kRadius, 0.05);
+  const Point2 start = w.robots.front().start.position;
+  const std::vector<bool> reachable = grid.reachable(grid.cellOf(start));
+  for (std::size_t i = 0; i < w.robots.size(); ++i) {
+    const Point2 p = w.robots[i].start.position;
+    if (index.distance(p) < kRadius + kClearance || !reachable[grid.cellOf(p)]) return false;
+    for (std::size_t j = 0; j < i; ++j) {
+      if ((w.robots[j].start.position - p).norm() < 2 * (kRadius + kClearance)) return false;
+    }
+  }
+  return std::all_of(w.points.begin(), w.points.end(),
+                     [&](const Landmark& p) { return index.distance(p.position) >= kRadius + kClearance && reachable[grid.cellOf(p.position)]; });
 }
 
 WorldDef obstacles(Random& r, std::uint64_t seed) {
@@ -214,35 +223,37 @@ std::string point(const Point2& p) { return "[" + number(p.x()) + ", " + number(
 
 }  // namespace
 
+namespace {
+
+constexpr WorldKind kKinds[] = {WorldKind::Obstacles, WorldKind::Maze,   WorldKind::Rooms,         WorldKind::Loop,         WorldKind::FurnishedRoom,
+                                WorldKind::Outline,   WorldKind::Lounge, WorldKind::WarehouseKeys, WorldKind::WarehouseBox, WorldKind::Crossing};
+constexpr const char* kNames[] = {"obstacles", "maze",   "rooms",          "loop",          "furnished_room",
+                                  "outline",   "lounge", "warehouse_keys", "warehouse_box", "crossing"};
+WorldDef (*const kMakers[])(Random&, std::uint64_t) = {obstacles, maze,   rooms,         loop,         furnishedRoom,
+                                                       outline,   lounge, warehouseKeys, warehouseBox, crossing};
+
+}  // namespace
+
 std::optional<WorldKind> worldKind(std::string_view name) {
-  for (WorldKind k : {WorldKind::Obstacles, WorldKind::Maze, WorldKind::Rooms, WorldKind::Loop}) {
+  for (WorldKind k : kKinds) {
     if (name == toString(k)) return k;
   }
   return std::nullopt;
 }
 
-const char* toString(WorldKind kind) {
-  switch (kind) {
-    case WorldKind::Obstacles:
-      return "obstacles";
-    case WorldKind::Maze:
-      return "maze";
-    case WorldKind::Rooms:
-      return "rooms";
-    case WorldKind::Loop:
-      return "loop";
-  }
-  return "?";
+const char* toString(WorldKind kind) { return kNames[static_cast<int>(kind)]; }
+
+std::string worldKindNames() {
+  std::string all;
+  for (const char* name : kNames) all += (all.empty() ? "" : ", ") + std::string(name);
+  return all;
 }
 
-std::string worldKindNames() { return "obstacles, maze, rooms, loop"; }
-
 Result<WorldDef> generateWorld(WorldKind kind, std::uint64_t seed) {
-  const std::function<WorldDef(Random&, std::uint64_t)> make[] = {obstacles, maze, rooms, loop};
   // Each attempt its own stream; the first world that keeps the promises is the one.
   for (std::uint64_t attempt = 0; attempt < 100; ++attempt) {
     Random random(seed * 0x100000001b3ULL + attempt);
-    WorldDef w = make[static_cast<int>(kind)](random, seed);
+    WorldDef w = kMakers[static_cast<int>(kind)](random, seed);
     snap(w);
     if (keepsPromises(w) && checkWorld(w).ok()) return w;
   }
@@ -258,6 +269,7 @@ std::string toToml(const WorldDef& w) {
     t += "\n[[robot]]\nname = \"" + r.name + "\"\nstart = " + point(r.start.position) + "\nheading_deg = " + number(r.start.heading * 180.0 / pi) +
          "\n";
   }
+  for (const KeyEventDef& k : w.keys) t += "\n[[key]]\ntime = " + number(k.time) + "\nkey = \"" + std::string(1, k.key) + "\"\n";
   for (const WallDef& wall : w.walls) {
     t += "\n[[wall]]\n";
     switch (wall.shape) {

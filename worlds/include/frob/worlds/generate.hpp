@@ -17,16 +17,25 @@
 
 namespace frob::worlds {
 
-/// What a generated world is. Every kind promises: the robot's start and the point "goal" have at
-/// least 0.1 m of clearance around the body, and the goal can be reached from the start by the body.
+/// What a generated world is. Every kind promises: each robot's start and every named point have at
+/// least 0.1 m of clearance around the body, and the body can reach every point from the first start.
+/// The kinds after Loop are the assignments' hidden families: each keeps what its handout promises.
 enum class WorldKind {
   Obstacles,  ///< 15 x 15 m, start (1.5, 1.5), goal (13.5, 13.5); blocks, pillars and an L-shaped trap, each two more than the robot's diameter apart
+              ///< (bug)
   Maze,       ///< a perfect maze of 1.6 m cells; start and goal in opposite corner cells
   Rooms,      ///< a floor of rooms joined by doorways at least 1.2 m wide, with furniture; the goal in the room farthest away
   Loop,       ///< a corridor round a block, 1.2 to 2 m wide, with convex and concave corners; the goal halfway round
+  FurnishedRoom,  ///< a 6-8 x 5-7 m room entered from a hall; point "room" 1 m inside; furniture with every gap closed or 0.8 m wide (wander)
+  Outline,        ///< a closed room with alcoves and pillars (concave and convex corners); points a-f on the path 40 cm from the wall on the right
+                  ///< (wall_follow)
+  Lounge,         ///< 12 x 10 m, the handout's waypoints wp1-wp4; one piece of furniture across each leg, more off the lines (go_to_goal)
+  WarehouseKeys,  ///< the warehouse patrol p1-p4; other keys pressed, then "s" between 14 and 24 s (parallel)
+  WarehouseBox,   ///< the warehouse patrol p1-p4; a box across one of its legs (parallel)
+  Crossing,       ///< 10 x 10 m, 2-4 robots ada, bob, cy, dee; goal_<name> opposite each start through "centre" (5, 5) (multi_robot)
 };
 
-/// The kinds by name: "obstacles", "maze", "rooms", "loop".
+/// The kinds by name: "obstacles", "maze", "rooms", "loop", "furnished_room", ...
 [[nodiscard]] std::optional<WorldKind> worldKind(std::string_view name);
 [[nodiscard]] const char* toString(WorldKind kind);
 /// Every kind's name, for messages and --help.
