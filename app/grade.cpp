@@ -113,7 +113,11 @@ int gradeCommand(const GradeArgs& a) {
   if (!rubricFile) return fail(rubricFile.error(), 2);
   Result<course::Rubric> rubric = course::loadRubric(rubricFile.value());
   if (!rubric) return fail(rubric.error(), 2);
-  Result<std::string> secret = readSecret(a.secret);
+  if (a.practice > 0) {
+    rubric = course::practiceRubric(rubric.value(), a.practice, a.practiceSeed);
+    if (rubric.value().checks.empty()) return fail("this assignment's hidden checks draw no worlds to practise on", 2);
+  }
+  Result<std::string> secret = a.practice > 0 ? Result<std::string>(std::string()) : readSecret(a.secret);
   if (!secret) return fail(secret.error(), 2);
   if (rubric.value().needsSecret() && secret.value().empty() && !a.visibleOnly) {
     return fail(
@@ -138,6 +142,11 @@ int gradeCommand(const GradeArgs& a) {
                        .visibleOnly = a.visibleOnly,
                        .logs = a.logs};
   if (def.assignment == "rubric.toml") def.assignment = fs::path(a.assignment).parent_path().filename().string();
+  if (!def.visibleOnly) {  // no student meets a hidden world the reference solution fails
+    Result<course::KeptWorlds> fair = course::fairHiddenWorlds(def);
+    if (!fair) return fail(fair.error(), 2);
+    def.kept = fair.value();
+  }
 
   if (!fs::is_directory(a.submission)) {
     if (!fs::exists(a.submission)) return fail("no submission '" + a.submission + "'", 2);

@@ -11,6 +11,8 @@ struct GradeArgs {
   std::vector<std::string> merge;
   bool visibleOnly = false;
   int jobs = 1;
+  int practice = 0;                // grade the hidden checks' criteria in this many worlds of their families instead
+  std::uint64_t practiceSeed = 1;  // the student's own seed for them
 };
 
 // Runs `frob grade`; 0 whenever it graded, whatever the score.

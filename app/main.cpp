@@ -280,6 +280,7 @@ int main(int argc, char** argv) {
   CLI::App* gradeCmd = cli.add_subcommand("grade", "Grade a submission, or a folder of them, against an assignment's rubric");
   gradeCmd->footer(R"(Examples:
   frob grade go_to_goal my.cpp --visible-only --report r.html   check your work as students may
+  frob grade go_to_goal my.cpp --practice 5 --seed 7           practise the hidden checks on their family
   frob grade go_to_goal sub.cpp --results results.json --junit r.xml --logs logs/
   frob grade go_to_goal class/ --jobs 2 --shard 1/4 --gradebook shard1.csv
   frob grade --merge shard1.csv shard2.csv shard3.csv shard4.csv --gradebook grades.csv
@@ -296,6 +297,9 @@ The rubric format and the instructors' guide: course/grading.md)");
   gradeCmd->add_option("--videos", grade.videos, "Keep the first failing run's video and plot in this folder");
   gradeCmd->add_option("--logs", grade.logs, "Keep each run's wheel log in this folder (for --replay)");
   gradeCmd->add_flag("--visible-only", grade.visibleOnly, "Grade only the checks students see");
+  gradeCmd->add_option("--practice", grade.practice, "Grade the hidden checks' criteria in N worlds of their families, drawn from --seed")
+      ->check(CLI::Range(1, 100));
+  gradeCmd->add_option("--seed", grade.practiceSeed, "Your own seed for --practice (never the instructor's secret)")->capture_default_str();
   gradeCmd->add_option("--secret", grade.secret, "The instructor's secret for hidden seeds (default: $FROB_GRADE_SECRET)");
   gradeCmd->add_option("--jobs", grade.jobs, "Submissions graded at once (a class)")->capture_default_str()->check(CLI::Range(1, 256));
   gradeCmd->add_option("--shard", grade.shard, "Grade only shard I of N of the class, e.g. 2/8 (the same split on every machine)");
@@ -309,7 +313,7 @@ The rubric format and the instructors' guide: course/grading.md)");
   CLI::App* worldCmd = cli.add_subcommand("world", "Make worlds");
   worldCmd->require_subcommand(1);
   CLI::App* generateCmd = worldCmd->add_subcommand("generate", "Make a world of a kind from a seed, checked for what its kind promises");
-  generateCmd->add_option("kind", kind, "obstacles, maze, rooms or loop")->required();
+  generateCmd->add_option("kind", kind, frob::worlds::worldKindNames())->required();
   generateCmd->add_option("--seed", worldSeed, "The seed: the same kind and seed make the same world everywhere")->capture_default_str();
   generateCmd->add_option("--out", worldOut, "The world file to write (TOML)")->required();
 

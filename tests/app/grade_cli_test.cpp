@@ -102,7 +102,32 @@ TEST(WorldGenerate, WritesAWorldThatRuns) {
   EXPECT_EQ(made.out, "wrote m.toml: Generated perfect maze of 1.6 m cells\n");
   EXPECT_EQ(runFrob(dir, {"run", "bug", "--world", "m.toml", "--seconds", "1", "--quiet"}).status, 0);
   EXPECT_EQ(runFrob(dir, {"world", "generate", "forest", "--out", "f.toml"}).err,
-            "frob: unknown kind of world 'forest': one of obstacles, maze, rooms, loop\n");
+            "frob: unknown kind of world 'forest': one of obstacles, maze, rooms, loop, furnished_room, outline, lounge, warehouse_keys, "
+            "warehouse_box, crossing\n");
+}
+
+// A student practises the hidden checks on worlds of their family drawn from a seed of their own:
+// the same seed, the same worlds, each one a world frob world generate rebuilds; no secret needed,
+// and none used when one is set.
+TEST(GradeCli, PractiseTheHiddenChecksOnTheirFamily) {
+  const fs::path dir = assignment("grade_cli_practice");
+  std::ofstream(dir / "forward" / "rubric.toml")
+      << std::string(kRubric) +
+             "[[check]]\nname = \"unseen warehouses\"\nvisibility = \"hidden\"\n"
+             "generated = { kind = \"warehouse_box\", secret = 2 }\ngoal = { point = \"p3\", within = 0.1 }\n";
+  std::ofstream(dir / "sub.cpp") << driver("0.0");
+  const FrobResult r = runFrob(dir, {"grade", "forward", "sub.cpp", "--practice", "2", "--seed", "5"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("unseen warehouses"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("goes forward"), std::string::npos) << r.out;          // only the hidden checks are practised
+  EXPECT_NE(r.out.find("0 / 1"), std::string::npos) << r.out;                 // standing still gets nowhere near p3 ...
+  const std::size_t first = r.out.find("in generated warehouse_box, seed ");  // ... in two worlds named for frob world generate
+  ASSERT_NE(first, std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("in generated warehouse_box, seed ", first + 1), std::string::npos) << r.out;
+  const FrobResult withSecret = runFrob(dir, {"grade", "forward", "sub.cpp", "--practice", "2", "--seed", "5", "--secret", "/no/such/file"});
+  EXPECT_EQ(withSecret.out, r.out);
+  const FrobResult other = runFrob(dir, {"grade", "forward", "sub.cpp", "--practice", "2", "--seed", "6"});
+  EXPECT_NE(other.out, r.out);
 }
 
 TEST(FrobList, NamesEveryAssignmentWithItsTitle) {

@@ -30,17 +30,25 @@ TEST(WallFollowAssignment, RubricHasTheChecksTheHandoutDescribes) {
   for (const course::Check& c : rubric.value().checks) {
     points[c.name] = c.points;
     EXPECT_EQ(c.visibility == course::Visibility::Hidden, c.name == kUnseenRound || c.name == kUnseenKeeps) << c.name;
-    if (c.visibility == course::Visibility::Hidden) EXPECT_GT(c.secretSeeds, 0) << c.name;
+    if (c.visibility == course::Visibility::Hidden) {
+      ASSERT_TRUE(c.generated.has_value()) << c.name;
+      EXPECT_EQ(c.generated->kind, worlds::WorldKind::Outline) << c.name;
+      EXPECT_EQ(c.generated->secret, 2) << c.name;
+    }
   }
   EXPECT_EQ(points, (Scores{{kRound, 4}, {kKeeps, 4}, {kUnseenRound, 2}, {kUnseenKeeps, 2}}));
 }
 
-// The waypoints a to f of every world lie on the path of a robot that keeps 40 cm between its rim
-// and the wall: its centre 63 cm from the nearest wall. The robot starts 60 or 90 cm from the wall
-// on its right.
+// The waypoints a to f of every world, visible or of the hidden family, lie on the path of a robot
+// that keeps 40 cm between its rim and the wall: its centre 63 cm from the nearest wall. The robot
+// starts 60 or 90 cm from the wall on its right (55 to 65 cm from its rim in the family).
 TEST(WallFollowAssignment, WaypointsLieOnTheFollowersPath) {
-  for (const char* file : {"worlds/l_room.toml", "worlds/notched_block.toml", "hidden_worlds/z_corridor.toml", "hidden_worlds/alcove_room.toml"}) {
-    Result<worlds::WorldDef> world = worlds::loadWorld(assignmentFile(kAssignment, file));
+  std::vector<std::pair<std::string, Result<worlds::WorldDef>>> all;
+  for (const char* file : {"worlds/l_room.toml", "worlds/notched_block.toml"})
+    all.emplace_back(file, worlds::loadWorld(assignmentFile(kAssignment, file)));
+  for (std::uint64_t seed = 1; seed <= 20; ++seed)
+    all.emplace_back("outline " + std::to_string(seed), worlds::generateWorld(worlds::WorldKind::Outline, seed));
+  for (const auto& [file, world] : all) {
     ASSERT_TRUE(world) << world.error();
     auto nearestWall = [&](const Point2& p) {
       double d = 1e9;
@@ -57,7 +65,11 @@ TEST(WallFollowAssignment, WaypointsLieOnTheFollowersPath) {
     const worlds::RobotDef& robot = world->robots[0];
     const Vec2 right(std::sin(robot.start.heading), -std::cos(robot.start.heading));
     auto onAWall = [&](double gap) { return nearestWall(robot.start.position + (robot.radius + gap) * right) < 1e-9; };
-    EXPECT_TRUE(onAWall(0.6) || onAWall(0.9)) << file;
+    if (file.starts_with("worlds/")) {
+      EXPECT_TRUE(onAWall(0.6) || onAWall(0.9)) << file;
+    } else {
+      EXPECT_NEAR(nearestWall(robot.start.position) - robot.radius, 0.60, 0.05) << file;
+    }
   }
 }
 
@@ -79,26 +91,26 @@ TEST(WallFollowAssignment, StarterScoresNothing) {
 
 // The reference follower mirrored: 40 cm from the wall on its LEFT. It keeps its distance all the
 // way, but goes round the L-shaped room the other way (past a, then never b) and round the outer
-// wall instead of the block.
+// wall instead of the block. (It keeps 40 cm in one unseen room too: "keeps 40 cm" does not yet ask
+// which side the wall is on.)
 TEST(WallFollowAssignment, FollowingTheLeftWallKeepsItsDistanceTheWrongWayRound) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "left_wall.cpp"));
-  EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 4}, {kUnseenRound, 0}, {kUnseenKeeps, 2}}));
+  EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 4}, {kUnseenRound, 0}, {kUnseenKeeps, 1}}));
   EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/l_room.toml, seed 1: reached a at 48.1 s, never came within 0.30 m of b after that"));
   EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/notched_block.toml, seed 1: never came within 0.30 m of a (closest 1.86 m"));
-  EXPECT_THAT(failedIn(g, kUnseenRound), HasSubstr("hidden_worlds/alcove_room.toml"));
-  EXPECT_THAT(reasons(g, kUnseenRound), HasSubstr("reached a at 45.9 s, never came within 0.30 m of b after that"));
+  EXPECT_EQ(failedIn(g, kUnseenRound), "generated outline, hidden world 1\ngenerated outline, hidden world 2\n");
+  EXPECT_THAT(reasons(g, kUnseenRound), HasSubstr("in hidden world 2: reached a at 56.8 s, never came within 0.30 m of b after that"));
 }
 
 // The reference follower with example 6's setpoint, 25 cm: never at 40 cm. It goes round the
-// L-shaped room and the alcove room, but so close to the wall it loses its way in the notch and in
-// the Z-shaped corridor.
+// L-shaped room and the unseen rooms (their waypoints allow 30 cm), but so close to the wall it
+// loses its way in the notch.
 TEST(WallFollowAssignment, TooCloseGoesRoundButNeverAtTheSetpoint) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "too_close.cpp"));
-  EXPECT_EQ(scores(g), (Scores{{kRound, 2}, {kKeeps, 0}, {kUnseenRound, 1}, {kUnseenKeeps, 0}}));
+  EXPECT_EQ(scores(g), (Scores{{kRound, 2}, {kKeeps, 0}, {kUnseenRound, 2}, {kUnseenKeeps, 0}}));
   EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/l_room.toml, seed 1: kept 0.40 ± 0.06 m from the wall for 0% of the time after 10.0 s"));
   EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/notched_block.toml, seed 1: reached a at 13.1 s, never came within 0.30 m of b after that"));
-  EXPECT_THAT(failedIn(g, kUnseenRound), HasSubstr("hidden_worlds/z_corridor.toml"));
-  EXPECT_THAT(failedIn(g, kUnseenKeeps), HasSubstr("hidden_worlds/alcove_room.toml"));
+  EXPECT_EQ(failedIn(g, kUnseenKeeps), "generated outline, hidden world 1\ngenerated outline, hidden world 2\n");
 }
 
 // A bang-bang follower: full turn left when the right sonar reads under 40 cm, full turn right
@@ -126,7 +138,8 @@ TEST(WallFollowAssignment, StoppingAtTheEndOfTheWallDoesNotGoRound) {
   EXPECT_THAT(reasons(g, kKeeps),
               HasSubstr("in worlds/l_room.toml, seed 1: covered 12% of the floor it could reach (20 of 168 cells of 0.50 m); 15% required"));
   EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/notched_block.toml, seed 1: covered 2% of the floor it could reach"));
-  EXPECT_THAT(reasons(g, kUnseenKeeps), HasSubstr("covered 7% of the floor it could reach"));
+  EXPECT_THAT(reasons(g, kUnseenKeeps),
+              HasSubstr("in hidden world 2: covered 8% of the floor it could reach (14 of 180 cells of 0.50 m); 15% required"));
 }
 
 // Example 2 copied as it is follows the wall on its LEFT, 50 cm away, and stops when that wall

@@ -2,6 +2,7 @@
 
 #include "frob/grade/judge.hpp"
 #include "frob/run/diagnose.hpp"
+#include "frob/worlds/fnv.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/world_file.hpp"
 
@@ -33,7 +34,12 @@ struct Ran {
 // contacts and reported result.
 Ran drive(worlds::Run& run, const worlds::WorldDef& world, std::int64_t steps) {
   const worlds::Simulation& sim = run.simulation();
-  Ran ran{.record = {.size = world.size, .walls = sim.walls(), .enclosureWalls = world.enclosed ? 4u : 0u, .points = world.points, .dt = sim.dt()}};
+  Ran ran{.record = {.size = world.size,
+                     .walls = sim.walls(),
+                     .enclosureWalls = world.enclosed ? 4u : 0u,
+                     .points = world.points,
+                     .keys = world.keys,
+                     .dt = sim.dt()}};
   for (std::size_t i = 0; i < sim.robotCount(); ++i) {
     ran.record.robots.push_back({.name = sim.robotName(i), .radius = sim.robot(i).radius, .path = {sim.truePose(i).position}});
   }
@@ -51,7 +57,7 @@ Ran drive(worlds::Run& run, const worlds::WorldDef& world, std::int64_t steps) {
       diagnosis.observe(i, sim.time(), sim.truePose(i), run.commands()[i], front, sim.spec(i).sonarMaxRange);
       for (const TaskRecord& ended : run.timeline(i).drainEnded()) {
         diagnosis.taskEnded(i, ended);
-        if (ended.parent < 0 && ended.how == TaskEnd::Returned) t.returned = ended.detail;
+        if (ended.parent < 0 && ended.how == TaskEnd::Returned) t.returned = ended.detail, t.returnedAt = sim.time();
       }
     }
   }
@@ -119,7 +125,7 @@ void writeLog(const fs::path& path, const Rubric& rubric, const Check& check, co
   for (std::size_t i = 0; i < ran.record.robots.size(); ++i) {
     const Track& t = ran.record.robots[i];
     if (!t.failure.empty()) std::fprintf(f, "failure %zu %s\n", i, t.failure.c_str());
-    if (t.returned) std::fprintf(f, "returned %zu %s\n", i, t.returned->c_str());
+    if (t.returned) std::fprintf(f, "returned_at %zu %a\nreturned %zu %s\n", i, t.returnedAt, i, t.returned->c_str());
   }
   std::fprintf(f, "wheels\n");
   for (const std::vector<Wheels>& step : ran.wheels) {
@@ -174,9 +180,128 @@ double Grade::maxScore() const {
   return s;
 }
 
+namespace {
+
+// Run `r` (its world and seed set) of `check` by the compiled controller, judged; the host's notes added to `notes`.
+void runCheck(const GradeDef& def, const CompiledController& compiled, const Check& check, const WorldRef& ref, const worlds::WorldDef& world,
+              RunGrade& r, std::vector<std::string>& notes) {
+  Result<RobotHosts> hosts = RobotHosts::start({compiled.module}, {compiled.source}, {0}, world.robots.size(), def.host);
+  if (!hosts) {
+    r.reason = hosts.error();
+    return;
+  }
+  worlds::Run run(world, {.dt = def.rubric.dt, .seed = r.seed}, hosts.value().driver(false), {.keepSteps = false});
+  const Ran ran = drive(run, world, stepsFor(check.seconds, def.rubric.dt));
+  judgeRun(check, ran.record, r);
+  r.trajectoryHash = ran.trajectoryHash;
+  r.hints = ran.hints;
+  for (std::string& n : hosts.value().notes()) {
+    if (std::find(notes.begin(), notes.end(), n) == notes.end()) notes.push_back(std::move(n));
+  }
+  if (!def.logs.empty()) {
+    std::error_code ec;
+    fs::create_directories(def.logs, ec);
+    r.log = def.logs / logName(check.name, ref.name, r.seed);
+    writeLog(r.log, def.rubric, check, ref, r.seed, ran);
+  }
+}
+
+std::string fileText(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The cache of fairHiddenWorlds: "reference <hash of its source>", then "<draw> <check>" lines.
+std::optional<KeptWorlds> readKept(const fs::path& file, const std::string& reference) {
+  std::ifstream in(file);
+  std::string line;
+  if (!std::getline(in, line) || (!reference.empty() && line != "reference " + reference)) return std::nullopt;
+  KeptWorlds kept;
+  while (std::getline(in, line)) {
+    const std::size_t gap = line.find(' ');
+    if (gap == std::string::npos) return std::nullopt;
+    kept[line.substr(gap + 1)].push_back(std::atoi(line.c_str()));
+  }
+  return kept;
+}
+
+void writeKept(const fs::path& file, const std::string& reference, const KeptWorlds& kept) {
+  std::error_code ec;
+  fs::create_directories(file.parent_path(), ec);
+  const fs::path partial = file.string() + ".partial";
+  {
+    std::ofstream out(partial);
+    out << "reference " << reference << "\n";
+    for (const auto& [check, draws] : kept) {
+      for (int k : draws) out << k << ' ' << check << "\n";
+    }
+  }
+  fs::rename(partial, file, ec);
+}
+
+std::string hex(std::uint64_t v) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016" PRIx64, v);
+  return buf;
+}
+
+}  // namespace
+
+Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
+  const Rubric& rubric = def.rubric;
+  if (def.secret.empty() || rubric.reference.empty() || !rubric.needsSecret()) return KeptWorlds{};
+  const fs::path cache = def.compiler.cacheDir / "hidden-worlds" /
+                         (hex(worlds::Fnv1a().add(std::string_view(fileText(rubric.file) + "\n" + def.secret)).value()) + ".txt");
+  if (!fs::is_regular_file(rubric.reference)) return readKept(cache, "").value_or(KeptWorlds{});
+  const std::string reference = hex(worlds::Fnv1a().add(std::string_view(fileText(rubric.reference))).value());
+  if (std::optional<KeptWorlds> known = readKept(cache, reference)) return *known;
+
+  std::string messages;
+  Result<CompiledController> compiled = compileSubmission(rubric.reference, def.compiler, &messages);
+  if (!compiled)
+    return Status::failure("the reference solution " + rubric.reference.string() + " does not compile: " + compiled.error() + "\n" + messages);
+  KeptWorlds kept;
+  std::vector<std::string> notes;
+  GradeDef quiet = def;  // the reference's runs leave no logs
+  quiet.logs.clear();
+  for (const Check& check : rubric.checks) {
+    if (!check.generated || check.generated->secret == 0) continue;
+    const int wanted = check.generated->secret, tries = 10 * wanted;
+    std::vector<int>& mine = kept[check.name];
+    for (int k = 0; static_cast<int>(mine.size()) < wanted && k < tries; ++k) {
+      const WorldRef ref{.name = "draw " + std::to_string(k), .generated = check.generated->kind, .worldSeed = drawnWorldSeed(check, def.secret, k)};
+      const Result<worlds::WorldDef> world = loadWorldRef(ref);
+      bool passes = world.ok();
+      const std::vector<std::uint64_t> seeds = seedsOf(check, def.secret);
+      for (std::size_t s = 0; passes && s < std::max<std::size_t>(seeds.size(), 1); ++s) {
+        RunGrade r{.world = ref.name, .seed = !seeds.empty() ? seeds[s] : world.value().seed};
+        runCheck(quiet, compiled.value(), check, ref, world.value(), r, notes);
+        passes = r.passed;
+      }
+      if (passes) mine.push_back(k);
+    }
+    if (static_cast<int>(mine.size()) < wanted) {
+      return Status::failure("the reference solution passes only " + std::to_string(mine.size()) + " of the " + std::to_string(tries) +
+                             " worlds drawn for check '" + check.name + "' from this secret: choose another secret");
+    }
+  }
+  writeKept(cache, reference, kept);
+  return kept;
+}
+
 Grade grade(const GradeDef& def, const fs::path& submission) {
   const auto start = std::chrono::steady_clock::now();
   Grade g{.assignment = def.assignment, .submission = submission.string()};
+  KeptWorlds kept;
+  if (def.kept) {
+    kept = *def.kept;
+  } else if (Result<KeptWorlds> fair = fairHiddenWorlds(def)) {
+    kept = fair.value();
+  } else {
+    g.notes.push_back("the hidden worlds were not checked against the reference solution: " + fair.error());
+  }
   std::string messages;
   Result<CompiledController> compiled = compileSubmission(submission, def.compiler, &messages);
   if (!compiled) g.compileError = compiled.error() + (messages.empty() ? "" : "\n" + messages);
@@ -185,7 +310,7 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
     if (def.visibleOnly && check.visibility != Visibility::Visible) continue;
     CheckGrade cg{.name = check.name, .points = check.points, .visibility = check.visibility};
     const std::vector<std::uint64_t> seeds = seedsOf(check, def.secret);
-    for (const WorldRef& w : worldsOf(check, def.secret)) {
+    for (const WorldRef& w : worldsOf(check, def.secret, kept)) {
       auto known = worldsByName.find(w.name);
       if (known == worldsByName.end()) known = worldsByName.emplace(w.name, loadWorldRef(w)).first;
       const Result<worlds::WorldDef>& world = known->second;
@@ -194,31 +319,10 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
         r.seed = !seeds.empty() ? seeds[s] : world ? world.value().seed : 0;
         if (!compiled) {
           r.reason = "the submission did not compile";
-          continue;
-        }
-        if (!world) {
+        } else if (!world) {
           r.reason = "the world could not be loaded: " + world.error();
-          continue;
-        }
-        Result<RobotHosts> hosts =
-            RobotHosts::start({compiled.value().module}, {compiled.value().source}, {0}, world.value().robots.size(), def.host);
-        if (!hosts) {
-          r.reason = hosts.error();
-          continue;
-        }
-        worlds::Run run(world.value(), {.dt = def.rubric.dt, .seed = r.seed}, hosts.value().driver(false), {.keepSteps = false});
-        const Ran ran = drive(run, world.value(), stepsFor(check.seconds, def.rubric.dt));
-        judgeRun(check, ran.record, r);
-        r.trajectoryHash = ran.trajectoryHash;
-        r.hints = ran.hints;
-        for (std::string& n : hosts.value().notes()) {
-          if (std::find(g.notes.begin(), g.notes.end(), n) == g.notes.end()) g.notes.push_back(std::move(n));
-        }
-        if (!def.logs.empty()) {
-          std::error_code ec;
-          fs::create_directories(def.logs, ec);
-          r.log = def.logs / logName(check.name, w.name, r.seed);
-          writeLog(r.log, def.rubric, check, w, r.seed, ran);
+        } else {
+          runCheck(def, compiled.value(), check, w, world.value(), r, g.notes);
         }
       }
     }
@@ -239,6 +343,7 @@ Result<Replay> replay(const fs::path& log) {
   std::uint64_t seed = 0;
   std::size_t steps = 0, robots = 0;
   std::vector<std::pair<std::size_t, std::string>> failures, returned;
+  std::vector<std::pair<std::size_t, double>> returnedAt;
   if (!std::getline(in, line) || line != "frob-replay 1") return bad("its first line");
   while (std::getline(in, line) && line != "wheels") {
     const std::size_t space = line.find(' ');
@@ -260,6 +365,9 @@ Result<Replay> replay(const fs::path& log) {
       const std::optional<worlds::WorldKind> kind = worlds::worldKind(value.substr(0, gap));
       if (!kind || gap == std::string::npos) return bad("line '" + line + "'");
       generated = WorldRef{.generated = kind, .worldSeed = std::stoull(value.substr(gap + 1))};
+    } else if (key == "returned_at") {
+      const std::size_t gap = value.find(' ');
+      returnedAt.emplace_back(std::stoull(value.substr(0, gap)), std::strtod(value.c_str() + std::min(gap, value.size()), nullptr));
     } else if (key == "failure" || key == "returned") {
       const std::size_t gap = value.find(' ');
       (key == "failure" ? failures : returned).emplace_back(std::stoull(value.substr(0, gap)), value.substr(gap + 1));
@@ -300,6 +408,7 @@ Result<Replay> replay(const fs::path& log) {
   Ran ran = drive(run, world.value(), static_cast<std::int64_t>(steps));
   for (const auto& [i, why] : failures) ran.record.robots.at(i).failure = why;
   for (const auto& [i, value] : returned) ran.record.robots.at(i).returned = value;
+  for (const auto& [i, at] : returnedAt) ran.record.robots.at(i).returnedAt = at;
   Replay r{.check = checkName, .run = {.world = worldName, .seed = seed, .trajectoryHash = ran.trajectoryHash, .log = log}};
   judgeRun(*check, ran.record, r.run);
   return r;

@@ -20,6 +20,9 @@ std::vector<Grade> gradeAll(GradeDef def, const std::vector<fs::path>& submissio
   // Each run is two processes that take turns; spinning pays only while each has a core of its own.
   if (2 * jobs > static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))) def.host.spinNanoseconds = 0;
   std::vector<Grade> grades(submissions.size());
+  if (!def.kept) {  // the hidden worlds are checked once for the class; where that fails, each grade says why
+    if (Result<KeptWorlds> fair = fairHiddenWorlds(def)) def.kept = fair.value();
+  }
   std::atomic<std::size_t> next{0};
   std::size_t done = 0;
   std::mutex told;
@@ -81,7 +84,7 @@ Result<fs::path> findRubric(const std::string& name) {
 Status filmRun(const GradeDef& def, const fs::path& submission, const std::string& checkName, const RunGrade& run, const RunOutputs& outputs) {
   const auto check = std::find_if(def.rubric.checks.begin(), def.rubric.checks.end(), [&](const Check& c) { return c.name == checkName; });
   if (check == def.rubric.checks.end()) return Status::failure("no check '" + checkName + "'");
-  const std::vector<WorldRef> all = worldsOf(*check, def.secret);
+  const std::vector<WorldRef> all = worldsOf(*check, def.secret, def.kept.value_or(KeptWorlds{}));
   const auto ref = std::find_if(all.begin(), all.end(), [&](const WorldRef& w) { return w.name == run.world; });
   if (ref == all.end()) return Status::failure("no world '" + run.world + "' in check '" + checkName + "'");
   Result<worlds::WorldDef> world = loadWorldRef(*ref);

@@ -101,11 +101,8 @@ class Judge {
         return goal(t);
       case Kind::Waypoints:
         return waypoints(t);
-      case Kind::Stopped: {
-        const std::size_t n = t.path.size();
-        const double speed = n < 2 ? 0.0 : (t.path[n - 1] - t.path[n - 2]).norm() / run_.dt;
-        return speed < c_.speed ? "" : format("was still moving at %.2f m/s at the end; it should stop (below %.2f m/s)", speed, c_.speed);
-      }
+      case Kind::Stopped:
+        return stopped(t);
       case Kind::Collisions:
         return collisions(t);
       case Kind::Clearance:
@@ -118,12 +115,70 @@ class Judge {
       case Kind::Bug1Bound:
         return pathLength(t);
       case Kind::Returns:
-        if (!t.returned) return "its task never returned a value (reported by the controller)";
-        if (*t.returned == c_.value) return "";
-        return "its task returned " + (t.returned->empty() ? std::string("no value") : *t.returned) + ", not " + c_.value +
-               " (reported by the controller)";
+        return returns(t);
       case Kind::RobotsApart:
         break;
+    }
+    return "";
+  }
+
+  // The event the criterion follows, as the simulator saw it: when it happened, or why it did not.
+  struct Event {
+    std::optional<double> at;
+    std::string what, never;
+  };
+  Event event(const Track& t) const {
+    const double end = timeOf(t.path.size() - 1);
+    if (c_.afterKey != 0) {
+      Event e{.what = format("the key %c was pressed", c_.afterKey), .never = format("the key %c was never pressed", c_.afterKey)};
+      for (const worlds::KeyEventDef& k : run_.keys) {
+        if (k.key == c_.afterKey && k.time <= end + 1e-9) return e.at = k.time, e;
+      }
+      return e;
+    }
+    if (c_.afterContact) {
+      Event e{.what = "it touched something", .never = "it never touched anything"};
+      if (!t.contacts.empty()) e.at = t.contacts.front().first;
+      return e;
+    }
+    if (c_.afterDistance > 0) {
+      Event e{.what = format("it had driven %.1f m", c_.afterDistance), .never = format("it never drove %.1f m", c_.afterDistance)};
+      double driven = 0;
+      for (std::size_t k = 1; k < t.path.size() && !e.at; ++k) {
+        driven += (t.path[k] - t.path[k - 1]).norm();
+        if (driven >= c_.afterDistance) e.at = timeOf(k);
+      }
+      return e;
+    }
+    return {.at = 0.0};
+  }
+
+  std::string stopped(const Track& t) {
+    const Event e = event(t);
+    if (!e.at) return e.never + ", so it had nothing to stop for";
+    const std::size_t n = t.path.size();
+    const std::size_t after = static_cast<std::size_t>(std::ceil((*e.at + c_.within) / run_.dt - 1e-9));
+    const std::size_t from = c_.afterKey != 0 || c_.afterContact ? std::min(after, n - 1) : n - 1;
+    for (std::size_t k = std::max<std::size_t>(from, 1); k < n; ++k) {
+      const double speed = (t.path[k] - t.path[k - 1]).norm() / run_.dt;
+      if (speed < c_.speed) continue;
+      if (k == n - 1 && from >= n - 1) return format("was still moving at %.2f m/s at the end; it should stop (below %.2f m/s)", speed, c_.speed);
+      return format("was moving at %.2f m/s at %s, %.1f s after %s; it should stop within %g s (below %.2f m/s)", speed,
+                    secondsText(timeOf(k)).c_str(), timeOf(k) - *e.at, e.what.c_str(), c_.within, c_.speed);
+    }
+    return "";
+  }
+
+  std::string returns(const Track& t) {
+    if (!t.returned) return "its task never returned a value (reported by the controller)";
+    if (*t.returned != c_.value) {
+      return "its task returned " + (t.returned->empty() ? std::string("no value") : *t.returned) + ", not " + c_.value +
+             " (reported by the controller)";
+    }
+    const Event e = event(t);
+    if (!e.at) return "its task returned " + c_.value + ", but " + e.never;
+    if (t.returnedAt + run_.dt < *e.at - 1e-9) {  // a step's grace: an event is seen in the frame after it
+      return "its task returned " + c_.value + " at " + secondsText(t.returnedAt) + ", before " + e.what + " (at " + secondsText(*e.at) + ")";
     }
     return "";
   }

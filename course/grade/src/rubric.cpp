@@ -25,7 +25,7 @@ struct CriterionSpec {
 const CriterionSpec kCriteria[] = {
     {"goal", Kind::Goal, {"within", "by", "point"}},
     {"waypoints", Kind::Waypoints, {"points", "within", "by"}},
-    {"stopped", Kind::Stopped, {"speed"}},
+    {"stopped", Kind::Stopped, {"speed", "after_key", "after_contact", "within"}},
     {"collisions", Kind::Collisions, {"max"}},
     {"clearance", Kind::Clearance, {"min"}},
     {"wall_distance", Kind::WallDistance, {"target", "tolerance", "fraction", "after"}},
@@ -33,7 +33,7 @@ const CriterionSpec kCriteria[] = {
     {"robots_apart", Kind::RobotsApart, {"min"}},
     {"path_ratio", Kind::PathRatio, {"max", "point", "within"}},
     {"bug1_bound", Kind::Bug1Bound, {"point", "within"}},
-    {"returns", Kind::Returns, {"value"}},
+    {"returns", Kind::Returns, {"value", "after_key", "after_contact", "after_distance"}},
 };
 
 class RubricReader : worlds::TomlReader {
@@ -48,12 +48,14 @@ class RubricReader : worlds::TomlReader {
 
  private:
   bool readRubric(const toml::table& root) {
-    if (!onlyKeys(root, "", {"title", "dt", "seconds", "check"})) return false;
+    if (!onlyKeys(root, "", {"title", "reference", "dt", "seconds", "check"})) return false;
     double seconds = 60.0;
+    std::string reference;
     if (!optString(root, "title", "title", rubric_.title) || !optNumber(root, "dt", "dt", rubric_.dt) ||
-        !optNumber(root, "seconds", "seconds", seconds)) {
+        !optNumber(root, "seconds", "seconds", seconds) || !optString(root, "reference", "reference", reference)) {
       return false;
     }
+    if (!reference.empty()) rubric_.reference = dir_ / reference;  // may be missing: a Gradescope zip carries none
     if (!(rubric_.dt > 0 && rubric_.dt <= 0.1)) return fail(*root.get("dt"), "dt", "must lie in (0, 0.1] seconds");
     if (!(seconds > 0)) return fail(*root.get("seconds"), "seconds", "must be positive");
     const toml::array* checks = root.get("check") ? root.get("check")->as_array() : nullptr;
@@ -202,7 +204,7 @@ class RubricReader : worlds::TomlReader {
         return need(t, "within", field, c.distance) && optNumber(t, "by", field + "by", c.seconds);
       }
       case Kind::Stopped:
-        return optNumber(t, "speed", field + "speed", c.speed);
+        return optNumber(t, "speed", field + "speed", c.speed) && readEvent(t, field, c) && optNumber(t, "within", field + "within", c.within);
       case Kind::Collisions:
         return optInteger(t, "max", field + "max", 0, 1'000'000, c.count);
       case Kind::Clearance:
@@ -222,10 +224,26 @@ class RubricReader : worlds::TomlReader {
       case Kind::Returns: {
         const toml::node* n = t.get("value");
         if (n == nullptr) return fail(c.line, field + "value", "missing");
+        if (!readEvent(t, field, c) || !optNumber(t, "after_distance", field + "after_distance", c.afterDistance)) return false;
         if (const auto* b = n->as_boolean()) return c.value = b->get() ? "true" : "false", true;
         if (const auto* i = n->as_integer()) return c.value = std::to_string(i->get()), true;
         return string(*n, field + "value", c.value);
       }
+    }
+    return true;
+  }
+
+  // The event a criterion follows: a key's first press or the robot's first contact (at most one).
+  bool readEvent(const toml::table& t, const std::string& field, Criterion& c) {
+    std::string key;
+    if (!optString(t, "after_key", field + "after_key", key)) return false;
+    if (t.get("after_key") != nullptr && key.size() != 1) return fail(*t.get("after_key"), field + "after_key", "expected one key, e.g. \"s\"");
+    c.afterKey = key.empty() ? 0 : key[0];
+    if (const toml::node* n = t.get("after_contact")) {
+      const auto* b = n->as_boolean();
+      if (b == nullptr) return fail(*n, field + "after_contact", "expected true or false");
+      c.afterContact = b->get();
+      if (c.afterContact && c.afterKey != 0) return fail(*n, field + "after_contact", "give after_key or after_contact, not both");
     }
     return true;
   }
@@ -272,19 +290,39 @@ std::vector<std::uint64_t> seedsOf(const Check& check, const std::string& secret
   return seeds;
 }
 
-std::vector<WorldRef> worldsOf(const Check& check, const std::string& secret) {
+std::uint64_t drawnWorldSeed(const Check& check, const std::string& secret, int k) { return secretSeed(secret, "world\n", check, k); }
+
+std::vector<WorldRef> worldsOf(const Check& check, const std::string& secret, const KeptWorlds& kept) {
   std::vector<WorldRef> all = check.worlds;
   if (!check.generated) return all;
   const GeneratedWorlds& g = *check.generated;
   const std::string kind = toString(g.kind);
   for (std::uint64_t seed : g.seeds)
     all.push_back({.name = "generated " + kind + ", seed " + std::to_string(seed), .generated = g.kind, .worldSeed = seed});
-  for (int k = 0; k < g.secret; ++k) {
+  std::vector<int> draws(static_cast<std::size_t>(g.secret));
+  for (int k = 0; k < g.secret; ++k) draws[static_cast<std::size_t>(k)] = k;
+  if (const auto it = kept.find(check.name); it != kept.end()) draws = it->second;
+  for (std::size_t k = 0; k < draws.size(); ++k) {
     all.push_back({.name = "generated " + kind + ", hidden world " + std::to_string(k + 1),
                    .generated = g.kind,
-                   .worldSeed = secretSeed(secret, "world\n", check, k)});
+                   .worldSeed = drawnWorldSeed(check, secret, draws[k])});
   }
   return all;
+}
+
+Rubric practiceRubric(const Rubric& rubric, int worlds, std::uint64_t seed) {
+  Rubric practice = rubric;
+  practice.checks.clear();
+  for (Check c : rubric.checks) {
+    if (!c.generated || c.generated->secret == 0) continue;
+    c.visibility = Visibility::Visible;
+    c.generated->seeds.clear();
+    c.generated->secret = 0;
+    c.secretSeeds = 0;
+    for (int k = 0; k < worlds; ++k) c.generated->seeds.push_back(secretSeed("practice " + std::to_string(seed), "world\n", c, k) % 1000000000);
+    practice.checks.push_back(std::move(c));
+  }
+  return practice;
 }
 
 Result<worlds::WorldDef> loadWorldRef(const WorldRef& w) {

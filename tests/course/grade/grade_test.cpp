@@ -195,6 +195,47 @@ TEST_F(Grading, EveryRunsLogReplaysToTheSameVerdictBitForBit) {
   EXPECT_EQ(failed, 8);  // the good one late in both seeds; the crash in all six runs
 }
 
+// No student meets a hidden world the reference solution fails: the hidden worlds are the first
+// draws from the secret in which it meets every criterion, found once and kept in the cache. Here
+// the reference stands still and the criterion asks for the room point within 2.35 m of the start,
+// which the furnished rooms' drawn starts meet only now and then.
+TEST_F(Grading, HiddenWorldsAreTheFirstDrawsTheReferencePasses) {
+  std::ofstream(dir_ / "assignment" / "still.cpp") << "#include <frob/frob.hpp>\nusing namespace frob;\nBehavior<Wheels> still(const Robot&) { "
+                                                      "return wheels(0.0, 0.0); }\nFROB_CONTROLLER(still)\n";
+  const auto rubricWith = [&](double within) {
+    std::ofstream(dir_ / "assignment" / "fair.toml")
+        << "title = \"Fair\"\nreference = \"still.cpp\"\nseconds = 0.5\n[[check]]\nname = \"near the room\"\n"
+           "visibility = \"hidden\"\ngenerated = { kind = \"furnished_room\", secret = 3 }\n"
+           "goal = { point = \"room\", within = "
+        << within << " }\n";
+    return loadRubric(dir_ / "assignment" / "fair.toml").value();
+  };
+  GradeDef def = def_;
+  def.rubric = rubricWith(2.35);
+  def.compiler.cacheDir = dir_ / "cache";
+  std::vector<int> expected, skipped;
+  for (int k = 0; expected.size() < 3; ++k) {
+    const worlds::WorldDef w = worlds::generateWorld(worlds::WorldKind::FurnishedRoom, drawnWorldSeed(def.rubric.checks[0], def.secret, k)).value();
+    ((*worlds::findPoint(w, "room") - w.robots[0].start.position).norm() <= 2.35 ? expected : skipped).push_back(k);
+  }
+  ASSERT_FALSE(skipped.empty()) << "this secret draws no world the reference fails: nothing is tested";
+  Result<KeptWorlds> kept = fairHiddenWorlds(def);
+  ASSERT_TRUE(kept.ok()) << kept.error();
+  EXPECT_EQ(kept.value(), (KeptWorlds{{"near the room", expected}}));
+  const Grade g = grade(def, dir_ / "assignment" / "still.cpp");
+  EXPECT_EQ(g.score(), g.maxScore()) << g.checks[0].output();
+
+  // Kept in the cache: used as it is where the reference is absent (a Gradescope zip).
+  fs::rename(dir_ / "assignment" / "still.cpp", dir_ / "still.cpp");
+  EXPECT_EQ(fairHiddenWorlds(def).value(), kept.value());
+
+  // A secret whose draws the reference cannot pass is refused, naming the check.
+  fs::rename(dir_ / "still.cpp", dir_ / "assignment" / "still.cpp");
+  def.rubric = rubricWith(0.01);
+  EXPECT_EQ(fairHiddenWorlds(def).error(),
+            "the reference solution passes only 0 of the 30 worlds drawn for check 'near the room' from this secret: choose another secret");
+}
+
 TEST(Replay, ALogThatIsNotOneSaysSo) {
   const fs::path log = fs::path(::testing::TempDir()) / "not_a_log.txt";
   std::ofstream(log) << "hello\n";

@@ -55,6 +55,61 @@ TEST(Judge, StoppedAtTheEnd) {
   EXPECT_EQ(run(stopped, straight(1, 1.5, 0.3, 2)).reason, "was still moving at 0.30 m/s at the end; it should stop (below 0.05 m/s)");
 }
 
+// A robot driving along +x at 0.3 m/s until `stop` s, then standing, sampled every 0.1 s for `seconds`.
+Track stopsAt(double stop, double seconds) {
+  Track t{.name = "ada"};
+  for (int k = 0; k <= static_cast<int>(std::lround(seconds * 10)); ++k) t.path.emplace_back(1 + 0.3 * std::min(0.1 * k, stop), 1.5);
+  return t;
+}
+
+TEST(Judge, StoppedWithinItsTimeOfAKeyAndStillAtTheEnd) {
+  RunRecord r = room();
+  r.keys = {{.time = 1.0, .key = 'x'}, {.time = 2.0, .key = 's'}};
+  const Criterion c{.kind = Kind::Stopped, .speed = 0.05, .afterKey = 's', .within = 1.0};
+  EXPECT_TRUE(run(c, stopsAt(2.8, 6), r).passed);
+  EXPECT_EQ(run(c, stopsAt(3.5, 6), r).reason,
+            "was moving at 0.30 m/s at 3.0 s, 1.0 s after the key s was pressed; it should stop within 1 s (below 0.05 m/s)");
+  Track pauses = stopsAt(2.5, 6);  // stands at a corner, then drives on
+  for (std::size_t k = 40; k < pauses.path.size(); ++k) pauses.path[k].x() += 0.03 * static_cast<double>(k - 39);
+  EXPECT_EQ(run(c, pauses, r).reason,
+            "was moving at 0.30 m/s at 4.0 s, 2.0 s after the key s was pressed; it should stop within 1 s (below 0.05 m/s)");
+  r.keys = {{.time = 1.0, .key = 'x'}, {.time = 9.0, .key = 's'}};  // after the run
+  EXPECT_EQ(run(c, stopsAt(2.8, 6), r).reason, "the key s was never pressed, so it had nothing to stop for");
+}
+
+TEST(Judge, StoppedWithinItsTimeOfTheFirstContact) {
+  const Criterion c{.kind = Kind::Stopped, .speed = 0.05, .afterContact = true, .within = 0.5};
+  Track t = stopsAt(2.0, 4);
+  EXPECT_EQ(run(c, t).reason, "it never touched anything, so it had nothing to stop for");
+  t.contacts = {{1.6, {1.5, 1.5}}, {1.7, {1.5, 1.5}}};
+  EXPECT_TRUE(run(c, t).passed);
+  t.contacts = {{1.4, {1.5, 1.5}}};
+  EXPECT_EQ(run(c, t).reason, "was moving at 0.30 m/s at 1.9 s, 0.5 s after it touched something; it should stop within 0.5 s (below 0.05 m/s)");
+}
+
+// A reported event counts only once the simulator saw it happen (a step's grace: it is sensed a step later).
+TEST(Judge, AReportedEventMustHaveHappenedFirst) {
+  RunRecord r = room();
+  r.keys = {{.time = 2.0, .key = 's'}};
+  Track t = stopsAt(3.0, 5);
+  t.returned = "key";
+  const Criterion key{.kind = Kind::Returns, .value = "key", .afterKey = 's'};
+  t.returnedAt = 1.0;
+  EXPECT_EQ(run(key, t, r).reason, "its task returned key at 1.0 s, before the key s was pressed (at 2.0 s)");
+  t.returnedAt = 1.9;
+  EXPECT_TRUE(run(key, t, r).passed);
+  EXPECT_EQ(run(key, t).reason, "its task returned key, but the key s was never pressed");
+  t.returned = "bumped";
+  const Criterion bumped{.kind = Kind::Returns, .value = "bumped", .afterContact = true};
+  t.contacts = {{2.5, {1.5, 1.5}}};
+  EXPECT_EQ(run(bumped, t).reason, "its task returned bumped at 1.9 s, before it touched something (at 2.5 s)");
+  t.returned = "budget";
+  const Criterion budget{.kind = Kind::Returns, .value = "budget", .afterDistance = 0.5};  // 0.3 m/s: 0.5 m at 1.7 s
+  EXPECT_TRUE(run(budget, t).passed);
+  t.returnedAt = 1.5;
+  EXPECT_EQ(run(budget, t).reason, "its task returned budget at 1.5 s, before it had driven 0.5 m (at 1.7 s)");
+}
+
 TEST(Judge, CollisionsNameTheFirstOneOverTheLimit) {
   Track t = straight(1, 1.5, 0.5, 2);
   t.contacts = {{41.2, {3.1, 2.75}}, {50.0, {4.0, 2.75}}};

@@ -144,7 +144,67 @@ goal = { within = 0.5 }
   EXPECT_EQ(worlds::toToml(w.value()), worlds::toToml(worlds::generateWorld(worlds::WorldKind::Obstacles, 4).value()));
 
   const fs::path bad = rubricFile("generated_bad", "[[check]]\nname = \"x\"\ngenerated = { kind = \"forest\", seeds = [1] }\nstopped = {}\n");
-  EXPECT_EQ(loadRubric(bad).error(), bad.string() + ":3: check[0].generated.kind: unknown kind 'forest' (one of obstacles, maze, rooms, loop)");
+  EXPECT_EQ(loadRubric(bad).error(), bad.string() + ":3: check[0].generated.kind: unknown kind 'forest' (one of " + worlds::worldKindNames() + ")");
+}
+
+// A reference solution beside the rubric; the events a stopped or returns criterion follows.
+TEST(Rubric, ReadsTheReferenceAndTheEventsCriteriaFollow) {
+  const fs::path file = rubricFile("events", R"(title = "Patrol"
+reference = "solution.cpp"
+[[check]]
+name = "stops on s"
+generated = { kind = "warehouse_keys", secret = 2 }
+stopped = { speed = 0.02, after_key = "s", within = 2 }
+returns = { value = "key", after_key = "s" }
+[[check]]
+name = "stops at the box"
+generated = { kind = "warehouse_box", secret = 1 }
+stopped = { after_contact = true, within = 1.5 }
+returns = { value = "budget", after_distance = 20 }
+)");
+  Result<Rubric> r = loadRubric(file);
+  ASSERT_TRUE(r.ok()) << r.error();
+  EXPECT_EQ(r.value().reference, file.parent_path() / "solution.cpp");
+  const Criterion& stopped = r.value().checks[0].criteria[0];
+  EXPECT_EQ(stopped.afterKey, 's');
+  EXPECT_EQ(stopped.within, 2.0);
+  EXPECT_EQ(r.value().checks[0].criteria[1].afterKey, 's');
+  EXPECT_TRUE(r.value().checks[1].criteria[0].afterContact);
+  EXPECT_EQ(r.value().checks[1].criteria[0].within, 1.5);
+  EXPECT_EQ(r.value().checks[1].criteria[1].afterDistance, 20.0);
+
+  const fs::path twoKeys = rubricFile("events_bad", "[[check]]\nname = \"x\"\nworlds = [\"empty\"]\nstopped = { after_key = \"sx\" }\n");
+  EXPECT_EQ(loadRubric(twoKeys).error(), twoKeys.string() + ":4: check[0].stopped.after_key: expected one key, e.g. \"s\"");
+  const fs::path both =
+      rubricFile("events_both", "[[check]]\nname = \"x\"\nworlds = [\"empty\"]\nstopped = { after_key = \"s\", after_contact = true }\n");
+  EXPECT_EQ(loadRubric(both).error(), both.string() + ":4: check[0].stopped.after_contact: give after_key or after_contact, not both");
+}
+
+// Practice: the checks that draw worlds from the secret, visible, in worlds of their kind drawn
+// from the student's seed; nothing of the secret in them.
+TEST(Rubric, PracticeDrawsTheHiddenChecksWorldsFromTheStudentsSeed) {
+  const fs::path file = rubricFile("practice", std::string(kGood) + R"(
+[[check]]
+name = "unseen rooms"
+visibility = "hidden"
+generated = { kind = "furnished_room", secret = 2 }
+collisions = { max = 0 }
+)");
+  Result<Rubric> r = loadRubric(file);
+  ASSERT_TRUE(r.ok()) << r.error();
+  const Rubric practice = practiceRubric(r.value(), 3, 7);
+  ASSERT_EQ(practice.checks.size(), 1u);  // the named-world checks are left out
+  const Check& c = practice.checks[0];
+  EXPECT_EQ(c.name, "unseen rooms");
+  EXPECT_EQ(c.visibility, Visibility::Visible);
+  EXPECT_FALSE(practice.needsSecret());
+  const std::vector<WorldRef> worlds = worldsOf(c, "");
+  ASSERT_EQ(worlds.size(), 3u);
+  EXPECT_EQ(worlds[0].generated, worlds::WorldKind::FurnishedRoom);
+  EXPECT_EQ(worlds[0].name, "generated furnished_room, seed " + std::to_string(worlds[0].worldSeed));    // rebuilt with frob world generate
+  EXPECT_EQ(worldsOf(practiceRubric(r.value(), 3, 7).checks[0], "")[2].worldSeed, worlds[2].worldSeed);  // the same seed, the same worlds
+  EXPECT_NE(worldsOf(practiceRubric(r.value(), 3, 8).checks[0], "")[0].worldSeed, worlds[0].worldSeed);
+  for (const WorldRef& w : worldsOf(r.value().checks.back(), "any secret")) EXPECT_NE(w.worldSeed, worlds[0].worldSeed);
 }
 
 TEST(Rubric, AMissingFileIsNamed) {

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,15 @@ struct GradeDef {
   HostDef host;                ///< the controller host's limits
   std::filesystem::path logs;  ///< a folder for each run's wheel log (for --replay); empty: none
   CompilerSetup compiler = compilerSetup();
+  std::optional<KeptWorlds> kept;  ///< the secret's hidden worlds to grade in; unset: those of fairHiddenWorlds()
 };
+
+/// The hidden worlds no student can find unfair: for each check that draws worlds from the secret,
+/// the first `GeneratedWorlds::secret` draws in which the rubric's reference solution meets every
+/// criterion (at most ten times as many are tried). Computed once per rubric, secret and reference
+/// source, and kept in the controller cache (where a reference solution is absent, as in a
+/// Gradescope zip, what the cache holds is used). None without a secret, a reference, or a cache.
+[[nodiscard]] Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def);
 
 /// One run of a check: a world with a seed.
 struct RunGrade {

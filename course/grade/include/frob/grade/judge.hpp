@@ -20,14 +20,16 @@ struct Track {
   std::vector<std::pair<double, Point2>> contacts;  ///< bumper contacts: when (s) and where the robot was
   std::string failure;                              ///< why its controller failed; "" when it did not
   std::optional<std::string> returned;              ///< its top task's returned value, as its controller reports it
+  double returnedAt = 0.0;                          ///< when the grader heard of it (trusted time), s
 };
 
 /// A finished run, as the grader judges it.
 struct RunRecord {
-  Vec2 size{10.0, 10.0};                 ///< the world's extent
-  std::vector<worlds::WallDef> walls;    ///< every wall, the enclosure's too
-  std::size_t enclosureWalls = 0;        ///< how many of `walls`, at the end, enclose the world
-  std::vector<worlds::Landmark> points;  ///< the world's named points
+  Vec2 size{10.0, 10.0};                  ///< the world's extent
+  std::vector<worlds::WallDef> walls;     ///< every wall, the enclosure's too
+  std::size_t enclosureWalls = 0;         ///< how many of `walls`, at the end, enclose the world
+  std::vector<worlds::Landmark> points;   ///< the world's named points
+  std::vector<worlds::KeyEventDef> keys;  ///< the world's key presses
   double dt = 0.01;
   std::vector<Track> robots;
 };

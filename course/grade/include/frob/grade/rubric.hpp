@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,7 +25,7 @@ struct Criterion {
   enum class Kind {
     Goal,          ///< within `distance` of point `point` by `seconds`
     Waypoints,     ///< within `distance` of each of `points`, in order, by `seconds`
-    Stopped,       ///< moving slower than `speed` at the end
+    Stopped,       ///< moving slower than `speed` at the end; with an event, at every step from `within` s after it to the end
     Collisions,    ///< at most `count` bumper contacts with walls
     Clearance,     ///< the body never nearer a wall than `distance`
     WallDistance,  ///< the body `distance` ± `tolerance` from the nearest wall for `fraction` of the run after `after` s
@@ -32,7 +33,7 @@ struct Criterion {
     RobotsApart,   ///< robots' bodies never nearer each other than `distance`
     PathRatio,     ///< path until within `distance` of `point` at most `ratio` times the shortest collision-free path
     Bug1Bound,     ///< path until within `distance` of `point` at most the direct distance + 1.5 × the perimeters of obstacles met
-    Returns,       ///< the top task returned `value` (reported by the controller)
+    Returns,       ///< the top task returned `value` (reported by the controller), and no sooner than the event it names happened
   };
   Kind kind = Kind::Goal;
   std::string point = "goal";
@@ -47,7 +48,12 @@ struct Criterion {
   double cell = 0.5;
   double ratio = 1.0;
   std::string value;
-  int line = 0;  ///< where the rubric gives it
+  // The event a Stopped or Returns criterion follows, as the simulator saw it happen:
+  char afterKey = 0;           ///< the first press of this key
+  bool afterContact = false;   ///< the robot's first contact
+  double afterDistance = 0.0;  ///< the robot's true path reaching this length, m (Returns only)
+  double within = 0.0;         ///< Stopped: seconds allowed after the event
+  int line = 0;                ///< where the rubric gives it
 };
 
 /// A world a check runs in: a reference world, a file beside the rubric, or a generated world.
@@ -82,8 +88,9 @@ struct Check {
 /// An assignment's rubric.
 struct Rubric {
   std::string title;
-  std::filesystem::path file;  ///< the rubric file
-  double dt = 0.01;            ///< the simulation step of every run
+  std::filesystem::path file;       ///< the rubric file
+  std::filesystem::path reference;  ///< the reference solution, which every hidden world must let pass; empty: none
+  double dt = 0.01;                 ///< the simulation step of every run
   std::vector<Check> checks;
   /// Total points.
   [[nodiscard]] double points() const;
@@ -95,10 +102,21 @@ struct Rubric {
 /// naming the file, the line and the field, before anything runs.
 [[nodiscard]] Result<Rubric> loadRubric(const std::filesystem::path& file);
 
+/// Which of the worlds each check draws from the secret it keeps, by check name: the indices of the
+/// draws (0, 1, 2, ...) in order. A check without an entry keeps the first `GeneratedWorlds::secret`.
+using KeptWorlds = std::map<std::string, std::vector<int>>;
+
 /// The seeds a check runs with: its own, then `secretSeeds` derived from `secret` and the check's name.
 [[nodiscard]] std::vector<std::uint64_t> seedsOf(const Check& check, const std::string& secret);
-/// The worlds a check runs in: those it names, then those it generates (the secret's from `secret`).
-[[nodiscard]] std::vector<WorldRef> worldsOf(const Check& check, const std::string& secret);
+/// The generator's seed of a check's draw `k` from the secret.
+[[nodiscard]] std::uint64_t drawnWorldSeed(const Check& check, const std::string& secret, int k);
+/// The worlds a check runs in: those it names, then those it generates (the secret's draws from
+/// `secret`, those `kept` names when it names them for this check).
+[[nodiscard]] std::vector<WorldRef> worldsOf(const Check& check, const std::string& secret, const KeptWorlds& kept = {});
+/// The rubric a student practises the hidden checks with: each check that draws worlds from the
+/// secret, made visible and run instead in `worlds` worlds of its kind drawn from `seed` (never from
+/// an instructor's secret); the other checks left out.
+[[nodiscard]] Rubric practiceRubric(const Rubric& rubric, int worlds, std::uint64_t seed);
 /// A world of a check, loaded or generated.
 [[nodiscard]] Result<worlds::WorldDef> loadWorldRef(const WorldRef& world);
 
