@@ -48,6 +48,12 @@ const course::RunGrade* firstFailure(const course::Grade& g, std::string& check)
   return nullptr;
 }
 
+std::string hex(std::uint64_t v) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+  return buf;
+}
+
 // Writes each file asked for; the first that cannot be written is the error.
 Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const course::Grade& g) {
   if (!a.results.empty()) {
@@ -69,10 +75,12 @@ Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const cours
     const std::string stem = (dir / fs::path(run->log.empty() ? "first_failure" : run->log.stem().string())).string();
     course::RunOutputs out{.video = stem + ".mp4", .plot = stem + ".png"};
     media.caption = "The first failing run: " + check + ", in " + run->world + " with seed " + std::to_string(run->seed) + ": " + run->reason;
-    if (Status s = course::filmRun(def, a.submission, check, *run, out); s) {
+    if (Result<std::uint64_t> film = course::filmRun(def, a.submission, check, *run, out)) {
       media.video = out.video, media.plot = out.plot;
+      media.caption +=
+          " The film is the graded run: its trajectory hash, " + hex(film.value()) + ", is the graded run's, " + hex(run->trajectoryHash) + ".";
     } else {
-      media.caption += " (" + s.error() + ")";
+      media.caption += " (" + film.error() + ")";
     }
     if (!a.report.empty()) {
       Status s = course::writeHtmlReport(g, media, a.report);
@@ -84,8 +92,10 @@ Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const cours
   return a.report.empty() ? Status() : course::writeHtmlReport(g, media, a.report);
 }
 
-int replayCommand(const std::string& log) {
-  Result<course::Replay> r = course::replay(log);
+int replayCommand(const std::string& log, const std::string& secretFile) {
+  Result<std::string> secret = readSecret(secretFile);
+  if (!secret) return fail(secret.error(), 2);
+  Result<course::Replay> r = course::replay(log, secret.value());
   if (!r) return fail(r.error());
   const course::RunGrade& run = r.value().run;
   std::printf("check %s, world %s, seed %llu: %s%s\ntrajectory %016llx\n", r.value().check.c_str(), run.world.c_str(),
@@ -106,7 +116,7 @@ int mergeCommand(const GradeArgs& a) {
 }  // namespace
 
 int gradeCommand(const GradeArgs& a) {
-  if (!a.replay.empty()) return replayCommand(a.replay);
+  if (!a.replay.empty()) return replayCommand(a.replay, a.secret);
   if (!a.merge.empty()) return mergeCommand(a);
   if (a.assignment.empty()) return fail("which assignment? frob grade ASSIGNMENT SUBMISSION (see frob grade --help)", 2);
   Result<fs::path> rubricFile = course::findRubric(a.assignment);

@@ -284,7 +284,7 @@ int main(int argc, char** argv) {
   frob grade go_to_goal sub.cpp --results results.json --junit r.xml --logs logs/
   frob grade go_to_goal class/ --jobs 2 --shard 1/4 --gradebook shard1.csv
   frob grade --merge shard1.csv shard2.csv shard3.csv shard4.csv --gradebook grades.csv
-  frob grade --replay logs/reaches_the_goal__maze__3.log        a disputed run, judged again
+  frob grade --replay logs/reaches_the_goal__maze__3.log --secret secret.txt   a disputed run, judged again
   frob grade go_to_goal --gradescope-zip autograder.zip --secret secret.txt
 Hidden seeds come from --secret FILE or $FROB_GRADE_SECRET. Exit status 0 whenever it graded.
 The rubric format and the instructors' guide: course/grading.md)");

@@ -12,6 +12,7 @@ find_package(Threads REQUIRED)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
 pkg_check_modules(LIBAV REQUIRED IMPORTED_TARGET libavcodec libavformat libavutil libswscale)
 pkg_check_modules(LIBZIP REQUIRED IMPORTED_TARGET libzip)  # the Gradescope autograder zip
+find_package(OpenSSL 3 REQUIRED COMPONENTS Crypto)           # the signatures of graded runs' wheel logs
 
 # The font the renderer draws text with (Debian: fonts-dejavu-core).
 find_file(FROB_FONT_FILE DejaVuSans.ttf PATHS /usr/share/fonts/truetype/dejavu REQUIRED)

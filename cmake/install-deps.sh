@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev libbox2d-dev libassimp-dev         # maths, physics, meshes
   libseccomp-dev                                   # the controller host's system-call filter
   libzip-dev                                       # the Gradescope autograder zip
+  libssl-dev                                       # HMAC signatures of graded runs' wheel logs
   libosmesa6-dev libpng-dev libfreetype-dev fonts-dejavu-core   # offscreen rendering and text
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev   # video encoding
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev           # world files, command line, JSON

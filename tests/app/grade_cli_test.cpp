@@ -88,8 +88,10 @@ TEST(GradeCli, AClassInShardsMergesToTheWholeClassesGradebook) {
 TEST(GradeCli, AReplayFromTheCommandLineGivesTheVerdictAndHashAgain) {
   const fs::path dir = assignment("grade_cli_replay");
   std::ofstream(dir / "slow.cpp") << driver("0.1");
-  ASSERT_EQ(runFrob(dir, {"grade", "forward", "slow.cpp", "--logs", "logs"}).status, 0);
-  const FrobResult r = runFrob(dir, {"grade", "--replay", "logs/goes_forward__room__1.log"});
+  std::ofstream(dir / "secret.txt") << "course secret\n";
+  ASSERT_EQ(runFrob(dir, {"grade", "forward", "slow.cpp", "--logs", "logs", "--secret", "secret.txt"}).status, 0);
+  EXPECT_EQ(runFrob(dir, {"grade", "--replay", "logs/goes_forward__room__1.log"}).status, 1);  // the secret checks its signature
+  const FrobResult r = runFrob(dir, {"grade", "--replay", "logs/goes_forward__room__1.log", "--secret", "secret.txt"});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out.rfind("check goes forward, world room.toml, seed 1: FAILED: never came within 0.40 m of goal", 0), 0u) << r.out;
   EXPECT_NE(r.out.find("trajectory "), std::string::npos);

@@ -12,7 +12,7 @@ contains "$work/info.txt" "Package: frob-sandbox"
 contains "$work/info.txt" "Version: $version"
 # Depends: what the programs load, and what a controller is compiled with; each a package Debian knows.
 depends=$(sed -n 's/^ Depends: //p' "$work/info.txt")
-for needed in libc6 libstdc++6 libbox2d2 libassimp5 libtomlplusplus3 libosmesa6 libavcodec59 libswscale6 libzip4 libseccomp2 \
+for needed in libc6 libstdc++6 libbox2d2 libassimp5 libtomlplusplus3 libosmesa6 libavcodec59 libswscale6 libzip4 libseccomp2 libssl3 \
               fonts-dejavu-core clang-16 libeigen3-dev libclang-rt-16-dev binutils; do
   [[ ", $depends," == *", $needed,"* ]] || fail "Depends lacks $needed: $depends"
 done

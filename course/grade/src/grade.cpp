@@ -2,9 +2,14 @@
 
 #include "frob/grade/judge.hpp"
 #include "frob/run/diagnose.hpp"
+#include "frob/run/format.hpp"
 #include "frob/worlds/fnv.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/world_file.hpp"
+
+#include <openssl/crypto.h>
+#include <openssl/evp.h>
+#include <openssl/hmac.h>
 
 #include <algorithm>
 #include <chrono>
@@ -113,28 +118,40 @@ std::string logName(const std::string& check, const std::string& world, std::uin
   return name + ".log";
 }
 
-// The log of a run: what to rebuild it from, what the controller said, and the wheels, as hex
-// floating point so that they read back bit for bit.
-void writeLog(const fs::path& path, const Rubric& rubric, const Check& check, const WorldRef& world, std::uint64_t seed, const Ran& ran) {
-  const fs::path partial = path.string() + ".partial";
-  std::FILE* f = std::fopen(partial.c_str(), "w");
-  if (f == nullptr) return;
-  std::fprintf(f, "frob-replay 1\nrubric %s\ncheck %s\nworld %s\nseed %" PRIu64 "\nsteps %zu\nrobots %zu\n", fs::absolute(rubric.file).c_str(),
-               check.name.c_str(), world.name.c_str(), seed, ran.wheels.size(), ran.record.robots.size());
-  if (world.generated) std::fprintf(f, "generated %s %" PRIu64 "\n", toString(*world.generated), world.worldSeed);
+// HMAC-SHA256 of `text` keyed by the instructor's secret, in hex: what a log is signed with.
+std::string signature(const std::string& secret, std::string_view text) {
+  unsigned char mac[EVP_MAX_MD_SIZE];
+  unsigned int length = 0;
+  HMAC(EVP_sha256(), secret.data(), static_cast<int>(secret.size()), reinterpret_cast<const unsigned char*>(text.data()), text.size(), mac, &length);
+  std::string hex;
+  for (unsigned int i = 0; i < length; ++i) hex += format("%02x", mac[i]);
+  return hex;
+}
+
+// The log of a run: what to rebuild it from, what the controller said, the graded trajectory's
+// hash, and the wheels, as hex floating point so that they read back bit for bit; signed with the
+// secret when there is one.
+void writeLog(const fs::path& path, const Rubric& rubric, const Check& check, const WorldRef& world, std::uint64_t seed, const Ran& ran,
+              const std::string& secret) {
+  std::string text = format("frob-replay 2\nrubric %s\ncheck %s\nworld %s\nseed %" PRIu64 "\nsteps %zu\nrobots %zu\ntrajectory %016" PRIx64 "\n",
+                            fs::absolute(rubric.file).c_str(), check.name.c_str(), world.name.c_str(), seed, ran.wheels.size(),
+                            ran.record.robots.size(), ran.trajectoryHash);
+  if (world.generated) text += format("generated %s %" PRIu64 "\n", toString(*world.generated), world.worldSeed);
   for (std::size_t i = 0; i < ran.record.robots.size(); ++i) {
     const Track& t = ran.record.robots[i];
-    if (!t.failure.empty()) std::fprintf(f, "failure %zu %s\n", i, t.failure.c_str());
-    if (t.returned) std::fprintf(f, "returned_at %zu %a\nreturned %zu %s\n", i, t.returnedAt, i, t.returned->c_str());
+    if (!t.failure.empty()) text += format("failure %zu %s\n", i, t.failure.c_str());
+    if (t.returned) text += format("returned_at %zu %a\nreturned %zu %s\n", i, t.returnedAt, i, t.returned->c_str());
   }
-  std::fprintf(f, "wheels\n");
+  text += "wheels\n";
   for (const std::vector<Wheels>& step : ran.wheels) {
-    for (std::size_t i = 0; i < step.size(); ++i) std::fprintf(f, "%s%a %a", i == 0 ? "" : " ", step[i].forward, step[i].turn);
-    std::fputc('\n', f);
+    for (std::size_t i = 0; i < step.size(); ++i) text += format("%s%a %a", i == 0 ? "" : " ", step[i].forward, step[i].turn);
+    text += '\n';
   }
-  const bool ok = std::fclose(f) == 0;
+  if (!secret.empty()) text += "hmac " + signature(secret, text) + "\n";
+  const fs::path partial = path.string() + ".partial";
+  std::ofstream(partial, std::ios::binary) << text;
   std::error_code ec;
-  if (ok) fs::rename(partial, path, ec);
+  if (fs::file_size(partial, ec) == text.size()) fs::rename(partial, path, ec);
 }
 
 }  // namespace
@@ -202,7 +219,7 @@ void runCheck(const GradeDef& def, const CompiledController& compiled, const Che
     std::error_code ec;
     fs::create_directories(def.logs, ec);
     r.log = def.logs / logName(check.name, ref.name, r.seed);
-    writeLog(r.log, def.rubric, check, ref, r.seed, ran);
+    writeLog(r.log, def.rubric, check, ref, r.seed, ran, def.secret);
   }
 }
 
@@ -334,17 +351,32 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
   return g;
 }
 
-Result<Replay> replay(const fs::path& log) {
-  std::ifstream in(log);
-  if (!in) return Status::failure(log.string() + ": cannot open the log");
+Result<Replay> replay(const fs::path& log, const std::string& secret) {
+  if (!fs::is_regular_file(log)) return Status::failure(log.string() + ": cannot open the log");
+  const std::string whole = fileText(log);
   const auto bad = [&](const std::string& what) { return Status::failure(log.string() + ": not a wheel log of frob grade (" + what + ")"); };
+  // Only a log signed with the secret is replayed: anything else could have been edited.
+  const std::size_t signedAt = whole.rfind("\nhmac ");
+  if (signedAt == std::string::npos) {
+    return Status::failure(log.string() +
+                           ": the log is not signed (graded without the instructor's secret, or cut short), so nothing vouches for it");
+  }
+  if (secret.empty())
+    return Status::failure(log.string() + ": give the secret it was graded with (--secret FILE or $FROB_GRADE_SECRET) to check its signature");
+  const std::string body = whole.substr(0, signedAt + 1), given = whole.substr(signedAt + 6);
+  const std::string expected = signature(secret, body) + "\n";
+  if (given.size() != expected.size() || CRYPTO_memcmp(given.data(), expected.data(), given.size()) != 0) {
+    return Status::failure(log.string() + ": the log was changed after grading, or signed with another secret: its signature does not match");
+  }
+  std::istringstream in(body);
   std::string line, rubricFile, checkName, worldName;
   std::optional<WorldRef> generated;
   std::uint64_t seed = 0;
   std::size_t steps = 0, robots = 0;
   std::vector<std::pair<std::size_t, std::string>> failures, returned;
   std::vector<std::pair<std::size_t, double>> returnedAt;
-  if (!std::getline(in, line) || line != "frob-replay 1") return bad("its first line");
+  std::uint64_t graded = 0;
+  if (!std::getline(in, line) || line != "frob-replay 2") return bad("its first line");
   while (std::getline(in, line) && line != "wheels") {
     const std::size_t space = line.find(' ');
     const std::string key = line.substr(0, space), value = space == std::string::npos ? "" : line.substr(space + 1);
@@ -360,6 +392,8 @@ Result<Replay> replay(const fs::path& log) {
       steps = std::stoull(value);
     else if (key == "robots")
       robots = std::stoull(value);
+    else if (key == "trajectory")
+      graded = std::stoull(value, nullptr, 16);
     else if (key == "generated") {
       const std::size_t gap = value.find(' ');
       const std::optional<worlds::WorldKind> kind = worlds::worldKind(value.substr(0, gap));
@@ -409,6 +443,11 @@ Result<Replay> replay(const fs::path& log) {
   for (const auto& [i, why] : failures) ran.record.robots.at(i).failure = why;
   for (const auto& [i, value] : returned) ran.record.robots.at(i).returned = value;
   for (const auto& [i, at] : returnedAt) ran.record.robots.at(i).returnedAt = at;
+  if (ran.trajectoryHash != graded) {
+    return Status::failure(log.string() + format(": replaying it gives the trajectory %016" PRIx64 ", not the graded run's %016" PRIx64
+                                                 " (the simulator has changed since)",
+                                                 ran.trajectoryHash, graded));
+  }
   Replay r{.check = checkName, .run = {.world = worldName, .seed = seed, .trajectoryHash = ran.trajectoryHash, .log = log}};
   judgeRun(*check, ran.record, r.run);
   return r;

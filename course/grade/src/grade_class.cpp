@@ -2,11 +2,13 @@
 // report needs around one grade (its assignment's rubric, a film of a run).
 #include "frob/base/layout.hpp"
 #include "frob/grade/grade.hpp"
+#include "frob/run/format.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/world_file.hpp"
 
 #include <algorithm>
 #include <atomic>
+#include <cinttypes>
 #include <mutex>
 #include <thread>
 
@@ -81,7 +83,8 @@ Result<fs::path> findRubric(const std::string& name) {
   return Status::failure("unknown assignment '" + name + "': not a folder of assignments/ (see frob list), and no rubric.toml there");
 }
 
-Status filmRun(const GradeDef& def, const fs::path& submission, const std::string& checkName, const RunGrade& run, const RunOutputs& outputs) {
+Result<std::uint64_t> filmRun(const GradeDef& def, const fs::path& submission, const std::string& checkName, const RunGrade& run,
+                              const RunOutputs& outputs) {
   const auto check = std::find_if(def.rubric.checks.begin(), def.rubric.checks.end(), [&](const Check& c) { return c.name == checkName; });
   if (check == def.rubric.checks.end()) return Status::failure("no check '" + checkName + "'");
   const std::vector<WorldRef> all = worldsOf(*check, def.secret, def.kept.value_or(KeptWorlds{}));
@@ -99,10 +102,15 @@ Status filmRun(const GradeDef& def, const fs::path& submission, const std::strin
                                   .controllers = {controller.value()},
                                   .host = def.host,
                                   .seconds = check->seconds,
+                                  .wholeTime = true,
                                   .outputs = outputs});
   if (!s) return s.status();
   if (s.value().failed()) return Status::failure("the run failed, so it has no video: " + s.value().robots.front().failure);
-  return {};
+  if (s.value().trajectoryHash != run.trajectoryHash) {
+    return Status::failure(format("the film's run (trajectory %016" PRIx64 ") is not the graded run (trajectory %016" PRIx64 "), so it is not shown",
+                                  s.value().trajectoryHash, run.trajectoryHash));
+  }
+  return s.value().trajectoryHash;
 }
 
 }  // namespace frob::course

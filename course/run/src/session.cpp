@@ -255,7 +255,7 @@ Result<Summary> runSession(const RunDef& def) {
       }
     }
     if (def.progress) def.progress(std::min(1.0, sim.time() / def.seconds));
-    if (allFinished) break;
+    if (allFinished && !def.wholeTime) break;
   }
 
   Summary summary{.world = def.worldName,

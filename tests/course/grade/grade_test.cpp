@@ -2,10 +2,13 @@
 // trajectory; the same grade twice; each run's wheel log replayed to the same verdict bit for bit.
 #include "frob/grade/grade.hpp"
 
+#include "frob/run/format.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace frob::course {
 namespace {
@@ -181,7 +184,7 @@ TEST_F(Grading, EveryRunsLogReplaysToTheSameVerdictBitForBit) {
     for (const CheckGrade& c : g.checks) {
       for (const RunGrade& r : c.runs) {
         ASSERT_TRUE(fs::exists(r.log)) << r.log;
-        Result<Replay> again = replay(r.log);
+        Result<Replay> again = replay(r.log, def_.secret);
         ASSERT_TRUE(again.ok()) << again.error();
         EXPECT_EQ(again.value().check, c.name);
         EXPECT_EQ(again.value().run.seed, r.seed);
@@ -236,12 +239,60 @@ TEST_F(Grading, HiddenWorldsAreTheFirstDrawsTheReferencePasses) {
             "the reference solution passes only 0 of the 30 worlds drawn for check 'near the room' from this secret: choose another secret");
 }
 
+// A log is signed with the secret: a student who edits a failing log (to stop early and report what
+// the check wants) gets a refusal, not a replay; so does an unsigned log, or the wrong secret.
+TEST_F(Grading, AnEditedOrUnsignedLogIsRefused) {
+  def_.logs = dir_ / "logs";
+  const Grade g = grade(def_, dir_ / "crash.cpp");
+  const fs::path log = g.checks.at(2).runs.at(0).log;  // "reports success": the crash never reports
+  ASSERT_TRUE(replay(log, def_.secret).ok());
+  std::string text;
+  {
+    std::ifstream in(log);
+    std::ostringstream all;
+    all << in.rdbuf();
+    text = all.str();
+  }
+  const auto written = [&](const std::string& as) {
+    const fs::path edited = dir_ / "edited.log";
+    std::ofstream(edited) << as;
+    return edited;
+  };
+  std::string forged = text;
+  forged.replace(forged.find("wheels\n"), 7, "returned_at 0 0x1p+0\nreturned 0 true\nwheels\n");
+  EXPECT_EQ(replay(written(forged), def_.secret).error(),
+            (dir_ / "edited.log").string() + ": the log was changed after grading, or signed with another secret: its signature does not match");
+  EXPECT_EQ(replay(log, "another secret").error(),
+            log.string() + ": the log was changed after grading, or signed with another secret: its signature does not match");
+  const std::string unsigned_ = text.substr(0, text.rfind("hmac "));
+  EXPECT_EQ(
+      replay(written(unsigned_), def_.secret).error(),
+      (dir_ / "edited.log").string() + ": the log is not signed (graded without the instructor's secret, or cut short), so nothing vouches for it");
+  EXPECT_EQ(replay(log, "").error(),
+            log.string() + ": give the secret it was graded with (--secret FILE or $FROB_GRADE_SECRET) to check its signature");
+}
+
+// The report's film is the graded run run again: its trajectory hash is the graded one's, and a film
+// that strays from the graded run (here, a graded hash that is not the film's) is refused.
+TEST_F(Grading, TheFilmIsTheGradedRun) {
+  const Grade g = grade(def_, dir_ / "good.cpp");
+  const RunGrade& run = g.checks.at(0).runs.at(1);
+  Result<std::uint64_t> film = filmRun(def_, dir_ / "good.cpp", g.checks[0].name, run, {.plot = (dir_ / "film.png").string()});
+  ASSERT_TRUE(film.ok()) << film.error();
+  EXPECT_EQ(film.value(), run.trajectoryHash);
+  EXPECT_TRUE(fs::exists(dir_ / "film.png"));
+  RunGrade other = run;
+  other.trajectoryHash ^= 1;
+  EXPECT_EQ(filmRun(def_, dir_ / "good.cpp", g.checks[0].name, other, {}).error(),
+            format("the film's run (trajectory %016llx) is not the graded run (trajectory %016llx), so it is not shown",
+                   static_cast<unsigned long long>(run.trajectoryHash), static_cast<unsigned long long>(other.trajectoryHash)));
+}
+
 TEST(Replay, ALogThatIsNotOneSaysSo) {
   const fs::path log = fs::path(::testing::TempDir()) / "not_a_log.txt";
-  std::ofstream(log) << "hello\n";
-  Result<Replay> r = replay(log);
-  ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.error(), log.string() + ": not a wheel log of frob grade (its first line)");
+  std::ofstream(log) << "hello\nhmac 00\n";
+  EXPECT_EQ(replay(log, "s").error(),
+            log.string() + ": the log was changed after grading, or signed with another secret: its signature does not match");
 }
 
 }  // namespace

@@ -107,9 +107,11 @@ struct Assignment {
 /// rubric.toml, or a rubric file.
 [[nodiscard]] Result<std::filesystem::path> findRubric(const std::string& name);
 
-/// Runs `run` of check `check` again with a video and plots of it (`outputs`), for a report.
-[[nodiscard]] Status filmRun(const GradeDef& def, const std::filesystem::path& submission, const std::string& check, const RunGrade& run,
-                             const RunOutputs& outputs);
+/// Runs `run` of check `check` again with a video and plots of it (`outputs`), for a report, and
+/// gives the film's trajectory hash. The controller sees the same in a filmed run as in a graded one,
+/// so the film is the graded run again; one whose trajectory differs from the graded run's is refused.
+[[nodiscard]] Result<std::uint64_t> filmRun(const GradeDef& def, const std::filesystem::path& submission, const std::string& check,
+                                            const RunGrade& run, const RunOutputs& outputs);
 
 /// What replaying a wheel log gives: the run's verdict and trajectory, recomputed.
 struct Replay {
@@ -118,7 +120,10 @@ struct Replay {
 };
 
 /// Replays `log` (written by a grading with GradeDef::logs) in the trusted simulator and judges it
-/// again; the verdict, reason and trajectory hash are those of the original run, bit for bit.
-[[nodiscard]] Result<Replay> replay(const std::filesystem::path& log);
+/// again; the verdict, reason and trajectory hash are those of the original run, bit for bit. A log
+/// is signed with the secret it was graded with (HMAC-SHA256 over its text); one that is unsigned,
+/// edited, or signed with another secret is refused, and so is one whose replay strays from the
+/// graded trajectory.
+[[nodiscard]] Result<Replay> replay(const std::filesystem::path& log, const std::string& secret);
 
 }  // namespace frob::course

@@ -43,6 +43,7 @@ struct RunDef {
   std::vector<LoadedController> controllers;  ///< one per robot, or one for all robots
   std::optional<HostDef> host;                ///< set: the controllers run in a sandboxed host (each needs its module)
   double seconds = 60.0;                      ///< simulated seconds at most; ends sooner once every controller's task returned
+  bool wholeTime = false;                     ///< run all `seconds` even after every task returned, as a graded run does
   RunOutputs outputs;                         ///< files to write
   int fps = 30;                               ///< frames per second of the video and frames
   double speed = 1.0;                         ///< the video plays this many times faster than simulated time
