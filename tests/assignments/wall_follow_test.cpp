@@ -86,16 +86,16 @@ TEST(WallFollowAssignment, StarterScoresNothing) {
   course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "starter.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 0}, {kUnseenRound, 0}, {kUnseenKeeps, 0}}));
   EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/l_room.toml, seed 1: never came within 0.30 m of a (closest 3.54 m"));
-  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("kept 0.40 ± 0.06 m from the wall for 8% of the time after 10.0 s; 80% required"));
+  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("kept 0.40 ± 0.06 m from the wall on its right for 0% of the time after 10.0 s; 80% required"));
 }
 
 // The reference follower mirrored: 40 cm from the wall on its LEFT. It keeps its distance all the
-// way, but goes round the L-shaped room the other way (past a, then never b) and round the outer
-// wall instead of the block. (It keeps 40 cm in one unseen room too: "keeps 40 cm" does not yet ask
-// which side the wall is on.)
+// way, but from the wrong wall: it goes round the L-shaped room the other way (past a, then never
+// b) and round the outer wall instead of the block, and "keeps 40 cm" asks for the wall on the right.
 TEST(WallFollowAssignment, FollowingTheLeftWallKeepsItsDistanceTheWrongWayRound) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "left_wall.cpp"));
-  EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 4}, {kUnseenRound, 0}, {kUnseenKeeps, 1}}));
+  EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 0}, {kUnseenRound, 0}, {kUnseenKeeps, 0}}));
+  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/l_room.toml, seed 1: kept 0.40 ± 0.06 m from the wall on its right for "));
   EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/l_room.toml, seed 1: reached a at 48.1 s, never came within 0.30 m of b after that"));
   EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/notched_block.toml, seed 1: never came within 0.30 m of a (closest 1.86 m"));
   EXPECT_EQ(failedIn(g, kUnseenRound), "generated outline, hidden world 1\ngenerated outline, hidden world 2\n");
@@ -108,7 +108,8 @@ TEST(WallFollowAssignment, FollowingTheLeftWallKeepsItsDistanceTheWrongWayRound)
 TEST(WallFollowAssignment, TooCloseGoesRoundButNeverAtTheSetpoint) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "too_close.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kRound, 2}, {kKeeps, 0}, {kUnseenRound, 2}, {kUnseenKeeps, 0}}));
-  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/l_room.toml, seed 1: kept 0.40 ± 0.06 m from the wall for 0% of the time after 10.0 s"));
+  EXPECT_THAT(reasons(g, kKeeps),
+              HasSubstr("in worlds/l_room.toml, seed 1: kept 0.40 ± 0.06 m from the wall on its right for 0% of the time after 10.0 s"));
   EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/notched_block.toml, seed 1: reached a at 13.1 s, never came within 0.30 m of b after that"));
   EXPECT_EQ(failedIn(g, kUnseenKeeps), "generated outline, hidden world 1\ngenerated outline, hidden world 2\n");
 }
@@ -120,8 +121,9 @@ TEST(WallFollowAssignment, BangBangOscillatesAndBumpsAtCorners) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "oscillates.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 0}, {kUnseenRound, 0}, {kUnseenKeeps, 0}}));
   EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/l_room.toml, seed 1: touched a wall at 15.5 s at (6.8, 0.9)"));
-  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/l_room.toml, seed 1: kept 0.40 ± 0.06 m from the wall for 21% of the time"));
-  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/notched_block.toml, seed 1: kept 0.40 ± 0.06 m from the wall for 17% of the time"));
+  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/l_room.toml, seed 1: kept 0.40 ± 0.06 m from the wall on its right for 20% of the time"));
+  EXPECT_THAT(reasons(g, kKeeps),
+              HasSubstr("in worlds/notched_block.toml, seed 1: kept 0.40 ± 0.06 m from the wall on its right for 17% of the time"));
   EXPECT_THAT(reasons(g, kUnseenRound), HasSubstr("touched a wall at 14.7 s"));
 }
 
@@ -150,8 +152,10 @@ TEST(WallFollowAssignment, Example2AsItIsFollowsTheWrongWall) {
   EXPECT_EQ(scores(g), (Scores{{kRound, 0}, {kKeeps, 0}, {kUnseenRound, 0}, {kUnseenKeeps, 0}}));
   EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/l_room.toml, seed 1: never came within 0.30 m of a (closest 4.03 m, at 0.0 s)"));
   EXPECT_THAT(reasons(g, kRound), HasSubstr("in worlds/notched_block.toml, seed 1: never came within 0.30 m of a (closest 1.75 m"));
-  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/l_room.toml, seed 1: kept 0.40 ± 0.06 m from the wall for 0% of the time after 10.0 s"));
-  EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/notched_block.toml, seed 1: kept 0.40 ± 0.06 m from the wall for 9% of the time"));
+  EXPECT_THAT(reasons(g, kKeeps),
+              HasSubstr("in worlds/l_room.toml, seed 1: kept 0.40 ± 0.06 m from the wall on its right for 0% of the time after 10.0 s"));
+  EXPECT_THAT(reasons(g, kKeeps),
+              HasSubstr("in worlds/notched_block.toml, seed 1: kept 0.40 ± 0.06 m from the wall on its right for 0% of the time"));
 }
 
 }  // namespace

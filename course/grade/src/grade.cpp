@@ -46,7 +46,8 @@ Ran drive(worlds::Run& run, const worlds::WorldDef& world, std::int64_t steps) {
                      .keys = world.keys,
                      .dt = sim.dt()}};
   for (std::size_t i = 0; i < sim.robotCount(); ++i) {
-    ran.record.robots.push_back({.name = sim.robotName(i), .radius = sim.robot(i).radius, .path = {sim.truePose(i).position}});
+    ran.record.robots.push_back(
+        {.name = sim.robotName(i), .radius = sim.robot(i).radius, .path = {sim.truePose(i).position}, .heading = {sim.truePose(i).heading}});
   }
   Diagnosis diagnosis(sim.walls(), world.size, sim.dt());
   for (std::int64_t k = 0; k < steps && run.failures().empty(); ++k) {
@@ -58,6 +59,7 @@ Ran drive(worlds::Run& run, const worlds::WorldDef& world, std::int64_t steps) {
       const SensorFrame& frame = sim.frame(i);
       for (std::size_t b = 0; b < frame.bumps.size(); ++b) t.contacts.emplace_back(sensedAt, t.path.back());
       t.path.push_back(sim.truePose(i).position);
+      t.heading.push_back(sim.truePose(i).heading);
       const double front = frame.sonar.empty() ? sim.spec(i).sonarMaxRange : frame.sonar[0];  // sonar 0 looks ahead
       diagnosis.observe(i, sim.time(), sim.truePose(i), run.commands()[i], front, sim.spec(i).sonarMaxRange);
       for (const TaskRecord& ended : run.timeline(i).drainEnded()) {

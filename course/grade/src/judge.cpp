@@ -75,6 +75,26 @@ std::optional<Point2> pointNamed(const RunRecord& run, const std::string& name) 
   return std::nullopt;
 }
 
+// How far along the ray from `p` in direction `u` (a unit vector) the first wall of `walls` is; INFINITY when none.
+double alongRay(const Point2& p, const Vec2& u, const std::vector<WallDef>& walls) {
+  double best = INFINITY;
+  const auto edge = [&](const Point2& a, const Point2& b) {
+    const Vec2 e = b - a, w = a - p;
+    const double cross = u.x() * e.y() - u.y() * e.x();
+    if (std::abs(cross) < 1e-12) return;
+    const double t = (w.x() * e.y() - w.y() * e.x()) / cross, s = (w.x() * u.y() - w.y() * u.x()) / cross;
+    if (t >= 0 && s >= 0 && s <= 1) best = std::min(best, t);
+  };
+  const auto disc = [&](const Point2& c, double r) {
+    const double along = (c - p).dot(u), off2 = (c - p).squaredNorm() - along * along;
+    if (off2 <= r * r && along >= 0) best = std::min(best, along - std::sqrt(r * r - off2));
+  };
+  for (const WallDef& w : walls)
+    forEachEdge(
+        w, edge, [&](const Point2& lo, const Point2& hi) { worlds::forEachSide(lo, hi, edge); }, disc);
+  return best;
+}
+
 class Judge {
  public:
   Judge(const Criterion& c, const RunRecord& run) : c_(c), run_(run) {}
@@ -238,22 +258,36 @@ class Judge {
     return "";
   }
 
+  // The centre's distance to the nearest wall, or, with a side, to the nearest wall that side: the
+  // least along rays from 60 to 120 degrees off the heading.
+  double wallDistanceAt(const Track& t, std::size_t k, const worlds::WallIndex& walls) const {
+    if (c_.side.empty() || k >= t.heading.size()) return walls.distance(t.path[k]);
+    const double toSide = c_.side == "right" ? -pi / 2 : pi / 2;
+    double d = INFINITY;
+    for (int ray = -3; ray <= 3; ++ray) {
+      const double a = t.heading[k] + toSide + ray * (pi / 18);
+      d = std::min(d, alongRay(t.path[k], Vec2(std::cos(a), std::sin(a)), run_.walls));
+    }
+    return std::min(d, run_.size.norm());  // no wall that side: as far as the world is wide
+  }
+
   std::string wallDistance(const Track& t) {
     const worlds::WallIndex walls(run_.walls, run_.size, t.radius + c_.distance + c_.tolerance + 1.0);
     std::size_t counted = 0, within = 0, worst = 0;
     double worstOff = -1;
     for (std::size_t k = 0; k < t.path.size(); ++k) {
       if (timeOf(k) < c_.after - 1e-9) continue;
-      const double off = std::abs(walls.distance(t.path[k]) - t.radius - c_.distance);
+      const double off = std::abs(wallDistanceAt(t, k, walls) - t.radius - c_.distance);
       ++counted;
       if (off <= c_.tolerance + 1e-9) ++within;  // a value on the boundary is within it
       if (off > worstOff) worstOff = off, worst = k;
     }
     const double share = counted == 0 ? 0.0 : static_cast<double>(within) / static_cast<double>(counted);
     if (share >= c_.fraction) return "";
-    return format("kept %.2f ± %.2f m from the wall for %.0f%% of the time after %s; %.0f%% required (furthest off: %.2f m at %s at %s)", c_.distance,
-                  c_.tolerance, 100 * share, secondsText(c_.after).c_str(), 100 * c_.fraction, worstOff, secondsText(timeOf(worst)).c_str(),
-                  at(t.path[worst]).c_str());
+    const std::string wall = c_.side.empty() ? "the wall" : "the wall on its " + c_.side;
+    return format("kept %.2f ± %.2f m from %s for %.0f%% of the time after %s; %.0f%% required (furthest off: %.2f m at %s at %s)", c_.distance,
+                  c_.tolerance, wall.c_str(), 100 * share, secondsText(c_.after).c_str(), 100 * c_.fraction, worstOff,
+                  secondsText(timeOf(worst)).c_str(), at(t.path[worst]).c_str());
   }
 
   std::string coverage(const Track& t) {

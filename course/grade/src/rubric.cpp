@@ -28,7 +28,7 @@ const CriterionSpec kCriteria[] = {
     {"stopped", Kind::Stopped, {"speed", "after_key", "after_contact", "within"}},
     {"collisions", Kind::Collisions, {"max"}},
     {"clearance", Kind::Clearance, {"min"}},
-    {"wall_distance", Kind::WallDistance, {"target", "tolerance", "fraction", "after"}},
+    {"wall_distance", Kind::WallDistance, {"target", "tolerance", "fraction", "after", "side"}},
     {"coverage", Kind::Coverage, {"fraction", "cell"}},
     {"robots_apart", Kind::RobotsApart, {"min"}},
     {"path_ratio", Kind::PathRatio, {"max", "point", "within"}},
@@ -210,6 +210,8 @@ class RubricReader : worlds::TomlReader {
       case Kind::Clearance:
         return need(t, "min", field, c.distance, true);
       case Kind::WallDistance:
+        if (!optString(t, "side", field + "side", c.side)) return false;
+        if (!c.side.empty() && c.side != "right" && c.side != "left") return fail(*t.get("side"), field + "side", "expected \"right\" or \"left\"");
         return need(t, "target", field, c.distance) && need(t, "tolerance", field, c.tolerance) && fraction(c.fraction) &&
                optNumber(t, "after", field + "after", c.after);
       case Kind::Coverage:

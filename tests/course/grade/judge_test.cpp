@@ -138,6 +138,28 @@ TEST(Judge, WallDistanceHeldForAFractionAfterSettling) {
             "kept 0.50 ± 0.05 m from the wall for 18% of the time after 1.0 s; 80% required (furthest off: 0.20 m at 10.0 s at (4.0, 0.9))");
 }
 
+// With a side, only the wall on that side counts: in the 6 x 3 m room, 0.73 m from the south wall,
+// a robot heading east has it on its right; heading west, on its left (and the north wall, 2.27 m
+// away, on its right).
+TEST(Judge, WallDistanceOnTheSideTheHandoutNames) {
+  const Criterion right{.kind = Kind::WallDistance, .distance = 0.5, .tolerance = 0.05, .fraction = 0.8, .side = "right"};
+  Track east = straight(1, 0.73, 0.3, 10);
+  east.heading.assign(east.path.size(), 0.0);
+  EXPECT_TRUE(run(right, east).passed);
+  Track west = east;
+  west.heading.assign(west.path.size(), pi);
+  EXPECT_EQ(
+      run(right, west).reason,
+      "kept 0.50 ± 0.05 m from the wall on its right for 0% of the time after 0.0 s; 80% required (furthest off: 1.54 m at 0.5 s at (1.1, 0.7))");
+  Criterion left = right;
+  left.side = "left";
+  EXPECT_TRUE(run(left, west).passed);
+  // Turned 20 degrees off the wall, the ray square to the heading is long, the one 20 degrees back is square to the wall.
+  Track slanted = east;
+  slanted.heading.assign(slanted.path.size(), 20 * pi / 180);
+  EXPECT_TRUE(run(right, slanted).passed);
+}
+
 TEST(Judge, CoverageCountsTheFreeCellsItsCentreVisited) {
   // Cells of 0.5 m: the centre fits in cells whose centre is 0.23 m clear of the walls, every cell
   // of the 12 x 6 grid. A pass along y = 1.25 from x = 0.25 to 5.75 visits one row: 12 of 72.

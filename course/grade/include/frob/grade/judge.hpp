@@ -17,6 +17,7 @@ struct Track {
   std::string name;                                 ///< the robot's name for people
   double radius = 0.23;                             ///< body radius, metres
   std::vector<Point2> path;                         ///< true position at t = k × dt, k = 0, 1, ...
+  std::vector<double> heading;                      ///< true heading at the same instants, radians (may be empty: then unknown)
   std::vector<std::pair<double, Point2>> contacts;  ///< bumper contacts: when (s) and where the robot was
   std::string failure;                              ///< why its controller failed; "" when it did not
   std::optional<std::string> returned;              ///< its top task's returned value, as its controller reports it

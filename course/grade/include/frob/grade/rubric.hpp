@@ -28,7 +28,7 @@ struct Criterion {
     Stopped,       ///< moving slower than `speed` at the end; with an event, at every step from `within` s after it to the end
     Collisions,    ///< at most `count` bumper contacts with walls
     Clearance,     ///< the body never nearer a wall than `distance`
-    WallDistance,  ///< the body `distance` ± `tolerance` from the nearest wall for `fraction` of the run after `after` s
+    WallDistance,  ///< the body `distance` ± `tolerance` from the nearest wall (on `side`, when given) for `fraction` of the run after `after` s
     Coverage,      ///< the robot's centre visited `fraction` of the free cells of size `cell`
     RobotsApart,   ///< robots' bodies never nearer each other than `distance`
     PathRatio,     ///< path until within `distance` of `point` at most `ratio` times the shortest collision-free path
@@ -53,6 +53,7 @@ struct Criterion {
   bool afterContact = false;   ///< the robot's first contact
   double afterDistance = 0.0;  ///< the robot's true path reaching this length, m (Returns only)
   double within = 0.0;         ///< Stopped: seconds allowed after the event
+  std::string side;            ///< WallDistance: "right" or "left" of the robot's heading; "": any wall
   int line = 0;                ///< where the rubric gives it
 };
 
