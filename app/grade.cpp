@@ -136,9 +136,15 @@ int gradeCommand(const GradeArgs& a) {
         2);
   }
   if (!a.gradescopeZip.empty()) {
-    if (Status s = course::writeGradescopeZip(
-            {.rubric = rubricFile.value(), .assignment = fs::path(rubricFile.value()).parent_path().filename().string(), .secret = secret.value()},
-            a.gradescopeZip);
+    // The hidden worlds are checked against the reference solution here, once, and shipped found.
+    const course::GradeDef check{.rubric = rubric.value(), .secret = secret.value()};
+    if (Result<course::KeptWorlds> fair = course::fairHiddenWorlds(check); !fair) return fail(fair.error(), 2);
+    if (Status s = course::writeGradescopeZip({.rubric = rubricFile.value(),
+                                               .assignment = fs::path(rubricFile.value()).parent_path().filename().string(),
+                                               .secret = secret.value(),
+                                               .reference = rubric.value().reference,
+                                               .keptWorlds = course::keptWorldsFile(check)},
+                                              a.gradescopeZip);
         !s) {
       return fail(s.error());
     }

@@ -40,6 +40,7 @@ std::vector<std::string> unzip(const fs::path& zipFile, const fs::path& dir) {
 }
 
 constexpr const char* kRubric = R"(title = "Drive"
+reference = "solution.cpp"
 seconds = 12
 [[check]]
 name = "reaches the goal"
@@ -53,6 +54,12 @@ visibility = "hidden"
 worlds = ["field.toml"]
 secret_seeds = 1
 collisions = { max = 0 }
+[[check]]
+name = "unseen rooms"
+points = 1
+visibility = "hidden"
+generated = { kind = "rooms", secret = 1 }
+collisions = { max = 1000 }
 )";
 
 constexpr const char* kWorld = "size = [6.0, 4.0]\n[points]\ngoal = [5.0, 2.0]\n[[robot]]\nname = \"nomad\"\nstart = [1.0, 2.0]\n";
@@ -98,6 +105,7 @@ TEST(GradescopeZip, HoldsTheSourcesTheAssignmentAndTheScripts) {
   fs::create_directories(dir / "drive");
   std::ofstream(dir / "drive" / "rubric.toml") << kRubric;
   std::ofstream(dir / "drive" / "field.toml") << kWorld;
+  std::ofstream(dir / "drive" / "solution.cpp") << kGood;
   std::ofstream(dir / "secret.txt") << "course-secret\n";
   const FrobResult r = runFrob(dir, {"grade", "drive", "--gradescope-zip", "autograder.zip", "--secret", "secret.txt"});
   ASSERT_EQ(r.status, 0) << r.err;
@@ -108,13 +116,18 @@ TEST(GradescopeZip, HoldsTheSourcesTheAssignmentAndTheScripts) {
     EXPECT_NE(std::find(names.begin(), names.end(), needed), names.end()) << needed;
   }
   for (const std::string& n : names) EXPECT_NE(n.rfind("tests/", 0), 0u) << n;  // the autograder builds no tests
+  // No reference solution, but the hidden worlds it was found to pass, in the autograder's cache.
+  EXPECT_EQ(std::find(names.begin(), names.end(), "assignments/drive/solution.cpp"), names.end());
+  const auto kept = std::find_if(names.begin(), names.end(), [](const std::string& n) { return n.rfind("cache/hidden-worlds/", 0) == 0; });
+  ASSERT_NE(kept, names.end());
+  EXPECT_NE(readFile(unpacked / *kept).find("0 unseen rooms\n"), std::string::npos) << readFile(unpacked / *kept);
   EXPECT_EQ(fs::status(unpacked / "run_autograder").permissions() & fs::perms::owner_exec, fs::perms::owner_exec);
   EXPECT_EQ(fs::status(unpacked / "setup.sh").permissions() & fs::perms::owner_exec, fs::perms::owner_exec);
 
   // The reference solution: full marks, the hidden check graded with the secret in the zip.
   const nlohmann::json good = runAutograder(dir / "autograder.zip", "good", kGood);
-  EXPECT_EQ(good["score"], 4.0) << good.dump(1);
-  ASSERT_EQ(good["tests"].size(), 2u);
+  EXPECT_EQ(good["score"], 5.0) << good.dump(1);
+  ASSERT_EQ(good["tests"].size(), 3u);
   EXPECT_EQ(good["tests"][1]["visibility"], "hidden");
   // A hostile one that tries to write a perfect result and leave: 0, and the reason.
   const nlohmann::json forged = runAutograder(dir / "autograder.zip", "forged", kForged);

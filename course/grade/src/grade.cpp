@@ -268,11 +268,15 @@ std::string hex(std::uint64_t v) {
 
 }  // namespace
 
+fs::path keptWorldsFile(const GradeDef& def) {
+  return def.compiler.cacheDir / "hidden-worlds" /
+         (hex(worlds::Fnv1a().add(std::string_view(fileText(def.rubric.file) + "\n" + def.secret)).value()) + ".txt");
+}
+
 Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
   const Rubric& rubric = def.rubric;
   if (def.secret.empty() || rubric.reference.empty() || !rubric.needsSecret()) return KeptWorlds{};
-  const fs::path cache = def.compiler.cacheDir / "hidden-worlds" /
-                         (hex(worlds::Fnv1a().add(std::string_view(fileText(rubric.file) + "\n" + def.secret)).value()) + ".txt");
+  const fs::path cache = keptWorldsFile(def);
   if (!fs::is_regular_file(rubric.reference)) return readKept(cache, "").value_or(KeptWorlds{});
   const std::string reference = hex(worlds::Fnv1a().add(std::string_view(fileText(rubric.reference))).value());
   if (std::optional<KeptWorlds> known = readKept(cache, reference)) return *known;

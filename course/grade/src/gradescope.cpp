@@ -48,6 +48,7 @@ if [ -z "$submission" ]; then
   exit 0
 fi
 export FROB_CACHE_DIR="$root/cache"
+if [ -d "$root/source/cache" ]; then mkdir -p "$root/cache" && cp -r "$root/source/cache/." "$root/cache/"; fi  # the fair hidden worlds
 if [ -f "$root/source/secret.txt" ]; then export FROB_GRADE_SECRET="$(head -n 1 "$root/source/secret.txt")"; fi
 cd "$(dirname "$submission")"
 "$frob" grade "$root/source/assignments/ASSIGNMENT" "$submission" --results "$root/results/results.json" --logs "$root/results/logs"
@@ -112,6 +113,9 @@ Status writeGradescopeZip(const GradescopeZipDef& def, const fs::path& out) {
   run.replace(run.find("ASSIGNMENT"), 10, def.assignment);
   bool ok = zip.addText("setup.sh", kSetup, true) && zip.addText("run_autograder", run, true);
   if (!def.secret.empty()) ok = ok && zip.addText("secret.txt", def.secret + "\n", false);
+  if (!def.keptWorlds.empty() && fs::is_regular_file(def.keptWorlds)) {
+    ok = ok && zip.addFile("cache/hidden-worlds/" + def.keptWorlds.filename().string(), def.keptWorlds);
+  }
   std::error_code ec;
   for (auto it = fs::recursive_directory_iterator(source, ec); ok && it != fs::recursive_directory_iterator(); it.increment(ec)) {
     const fs::path relative = fs::relative(it->path(), source);
@@ -120,7 +124,8 @@ Status writeGradescopeZip(const GradescopeZipDef& def, const fs::path& out) {
   }
   const fs::path assignment = def.rubric.parent_path();
   for (auto it = fs::recursive_directory_iterator(assignment, ec); ok && it != fs::recursive_directory_iterator(); it.increment(ec)) {
-    if (it->is_regular_file())
+    const bool reference = !def.reference.empty() && fs::equivalent(it->path(), def.reference, ec);
+    if (it->is_regular_file() && !reference)
       ok = zip.addFile("assignments/" + def.assignment + "/" + fs::relative(it->path(), assignment).generic_string(), it->path());
   }
   std::string error;

@@ -38,6 +38,8 @@ struct GradeDef {
 /// source, and kept in the controller cache (where a reference solution is absent, as in a
 /// Gradescope zip, what the cache holds is used). None without a secret, a reference, or a cache.
 [[nodiscard]] Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def);
+/// Where fairHiddenWorlds keeps what it found for `def`'s rubric and secret, under the controller cache.
+[[nodiscard]] std::filesystem::path keptWorldsFile(const GradeDef& def);
 
 /// One run of a check: a world with a seed.
 struct RunGrade {
