@@ -1,6 +1,5 @@
 // The assignments' families of hidden worlds: each keeps what its handout promises (the layout a
 // controller may rely on) and draws the rest (furniture, corners, keys, boxes, starts).
-#include "frob/worlds/free_space.hpp"
 #include "generate_kit.hpp"
 
 #include <algorithm>

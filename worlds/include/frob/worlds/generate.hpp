@@ -26,7 +26,8 @@ enum class WorldKind {
   Maze,       ///< a perfect maze of 1.6 m cells; start and goal in opposite corner cells
   Rooms,      ///< a floor of rooms joined by doorways at least 1.2 m wide, with furniture; the goal in the room farthest away
   Loop,       ///< a corridor round a block, 1.2 to 2 m wide, with convex and concave corners; the goal halfway round
-  FurnishedRoom,  ///< a 6-8 x 5-7 m room entered from a hall; point "room" 1 m inside; furniture with every gap closed or 0.8 m wide (wander)
+  FurnishedRoom,  ///< a 5.5-7.5 x 4.5-6.5 m room entered from a hall; point "room" 1 m inside; furniture 0.8 m from everything, or against the walls
+                  ///< (wander)
   Outline,        ///< a closed room with alcoves and pillars (concave and convex corners); points a-f on the path 40 cm from the wall on the right
                   ///< (wall_follow)
   Lounge,         ///< 12 x 10 m, the handout's waypoints wp1-wp4; one piece of furniture across each leg, more off the lines (go_to_goal)
