@@ -5,10 +5,12 @@
 #include "frob/grade/grade.hpp"
 #include "frob/grade/grade_report.hpp"
 #include "frob/grade/gradescope.hpp"
+#include "frob/run/format.hpp"
 #include "progress.hpp"
 
 #include <unistd.h>
 
+#include <cinttypes>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -48,12 +50,6 @@ const course::RunGrade* firstFailure(const course::Grade& g, std::string& check)
   return nullptr;
 }
 
-std::string hex(std::uint64_t v) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
-  return buf;
-}
-
 // Writes each file asked for; the first that cannot be written is the error.
 Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const course::Grade& g) {
   if (!a.results.empty()) {
@@ -77,8 +73,8 @@ Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const cours
     media.caption = "The first failing run: " + check + ", in " + run->world + " with seed " + std::to_string(run->seed) + ": " + run->reason;
     if (Result<std::uint64_t> film = course::filmRun(def, a.submission, check, *run, out)) {
       media.video = out.video, media.plot = out.plot;
-      media.caption +=
-          " The film is the graded run: its trajectory hash, " + hex(film.value()) + ", is the graded run's, " + hex(run->trajectoryHash) + ".";
+      media.caption += course::format(" The film is the graded run: its trajectory hash, %016" PRIx64 ", is the graded run's, %016" PRIx64 ".",
+                                      film.value(), run->trajectoryHash);
     } else {
       media.caption += " (" + film.error() + ")";
     }

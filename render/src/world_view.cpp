@@ -1,5 +1,6 @@
 // The top-down world: floor, grid, walls, robots, sensors, paths and the Pictures tasks publish.
 #include "draw.hpp"
+#include "frob/worlds/world_def.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -72,13 +73,7 @@ void drawGrid(Canvas& c, const FontAtlas& fonts, const Bounds& b, const Mapping&
 // of `scene`, at most `limit` metres.
 double firstHit(const FrameScene& scene, const Point2& o, const Vec2& d, double limit) {
   double best = limit;
-  const auto segment = [&](const Point2& a, const Point2& b) {
-    const Vec2 e = b - a, w = a - o;
-    const double den = d.x() * e.y() - d.y() * e.x();
-    if (std::abs(den) < 1e-12) return;
-    const double t = (w.x() * e.y() - w.y() * e.x()) / den, u = (w.x() * d.y() - w.y() * d.x()) / den;
-    if (t >= 0.0 && u >= 0.0 && u <= 1.0) best = std::min(best, t);
-  };
+  const auto segment = [&](const Point2& a, const Point2& b) { best = std::min(best, worlds::rayToSegment(o, d, a, b)); };
   for (const Wall& w : scene.walls) segment(w.a, w.b);
   for (const Block& b : scene.blocks) {
     const Vec2 u(std::cos(b.angle), std::sin(b.angle)), v(-u.y(), u.x());
@@ -86,11 +81,7 @@ double firstHit(const FrameScene& scene, const Point2& o, const Vec2& d, double 
     const Point2 corners[] = {b.center - hx - hy, b.center + hx - hy, b.center + hx + hy, b.center - hx + hy};
     for (int k = 0; k < 4; ++k) segment(corners[k], corners[(k + 1) % 4]);
   }
-  for (const Pillar& p : scene.pillars) {
-    const Vec2 w = o - p.center;
-    const double b = w.dot(d), disc = b * b - (w.squaredNorm() - p.radius * p.radius);
-    if (disc >= 0.0 && -b + std::sqrt(disc) >= 0.0) best = std::min(best, std::max(0.0, -b - std::sqrt(disc)));
-  }
+  for (const Pillar& p : scene.pillars) best = std::min(best, worlds::rayToDisc(o, d, p.center, p.radius));
   return best;
 }
 

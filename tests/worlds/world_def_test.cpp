@@ -22,6 +22,20 @@ TEST(WorldDef, BuildsInCodeWithDesignatedInitializers) {
   EXPECT_EQ(findPoint(w, "start"), std::nullopt);
 }
 
+// A ray meets the first surface of a wall ahead of it, of any shape, and misses what is behind or beside it.
+TEST(WorldDef, ARayMeetsTheFirstSurfaceAhead) {
+  const Point2 o(0, 0);
+  const Vec2 east(1, 0);
+  EXPECT_DOUBLE_EQ(rayToWall(o, east, segmentWall({2, -1}, {2, 1})), 2.0);
+  EXPECT_EQ(rayToWall(o, east, segmentWall({-2, -1}, {-2, 1})), INFINITY);  // behind
+  EXPECT_EQ(rayToWall(o, east, segmentWall({2, 0.5}, {2, 1})), INFINITY);   // beside
+  EXPECT_DOUBLE_EQ(rayToWall(o, east, rectangleWall({3, -1}, {5, 1})), 3.0);
+  EXPECT_DOUBLE_EQ(rayToWall(o, east, polylineWall({{4, 2}, {4, -2}, {1.5, -2}}, true)), 2.75);  // the closing edge, nearest
+  EXPECT_DOUBLE_EQ(rayToWall(o, east, circleWall({5, 0}, 1)), 4.0);
+  EXPECT_EQ(rayToWall(o, east, circleWall({5, 2}, 1)), INFINITY);
+  EXPECT_EQ(rayToWall(o, east, circleWall({0, 0.5}, 1)), 0.0);  // from inside
+}
+
 TEST(WorldDef, ChecksNameTheFieldWithoutAFile) {
   WorldDef w{.size = {5.0, 5.0}, .walls = {circleWall({2, 2}, 1.0)}, .robots = {{.start = {.position = {2.5, 2.5}}}}};
   EXPECT_EQ(checkWorld(w).error(), "world: robot[0].start: the robot (radius 0.23 m) is inside or touching wall[0]");

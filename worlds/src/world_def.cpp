@@ -57,6 +57,30 @@ double distanceToWall(const Point2& p, const WallDef& wall) {
   return d;
 }
 
+double rayToSegment(const Point2& o, const Vec2& d, const Point2& a, const Point2& b) {
+  const Vec2 e = b - a, w = a - o;
+  const double den = d.x() * e.y() - d.y() * e.x();
+  if (std::abs(den) < 1e-12) return INFINITY;
+  const double t = (w.x() * e.y() - w.y() * e.x()) / den, u = (w.x() * d.y() - w.y() * d.x()) / den;
+  return t >= 0.0 && u >= 0.0 && u <= 1.0 ? t : INFINITY;
+}
+
+double rayToDisc(const Point2& o, const Vec2& d, const Point2& centre, double radius) {
+  const Vec2 w = o - centre;
+  const double b = w.dot(d), disc = b * b - (w.squaredNorm() - radius * radius);
+  if (disc < 0.0 || -b + std::sqrt(disc) < 0.0) return INFINITY;
+  return std::max(0.0, -b - std::sqrt(disc));
+}
+
+double rayToWall(const Point2& o, const Vec2& d, const WallDef& wall) {
+  double best = INFINITY;
+  const auto edge = [&](const Point2& a, const Point2& b) { best = std::min(best, rayToSegment(o, d, a, b)); };
+  forEachEdge(
+      wall, edge, [&](const Point2& lo, const Point2& hi) { forEachSide(lo, hi, edge); },
+      [&](const Point2& centre, double radius) { best = std::min(best, rayToDisc(o, d, centre, radius)); });
+  return best;
+}
+
 namespace detail {
 
 std::string where(const SourceLines& at, int line) { return line > 0 ? at.file + ":" + std::to_string(line) + ": " : at.file + ": "; }

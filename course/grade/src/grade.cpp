@@ -260,17 +260,11 @@ void writeKept(const fs::path& file, const std::string& reference, const KeptWor
   fs::rename(partial, file, ec);
 }
 
-std::string hex(std::uint64_t v) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016" PRIx64, v);
-  return buf;
-}
-
 }  // namespace
 
 fs::path keptWorldsFile(const GradeDef& def) {
   return def.compiler.cacheDir / "hidden-worlds" /
-         (hex(worlds::Fnv1a().add(std::string_view(fileText(def.rubric.file) + "\n" + def.secret)).value()) + ".txt");
+         (format("%016" PRIx64, worlds::Fnv1a().add(std::string_view(fileText(def.rubric.file) + "\n" + def.secret)).value()) + ".txt");
 }
 
 Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
@@ -278,7 +272,7 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
   if (def.secret.empty() || rubric.reference.empty() || !rubric.needsSecret()) return KeptWorlds{};
   const fs::path cache = keptWorldsFile(def);
   if (!fs::is_regular_file(rubric.reference)) return readKept(cache, "").value_or(KeptWorlds{});
-  const std::string reference = hex(worlds::Fnv1a().add(std::string_view(fileText(rubric.reference))).value());
+  const std::string reference = format("%016" PRIx64, worlds::Fnv1a().add(std::string_view(fileText(rubric.reference))).value());
   if (std::optional<KeptWorlds> known = readKept(cache, reference)) return *known;
 
   std::string messages;

@@ -75,26 +75,6 @@ std::optional<Point2> pointNamed(const RunRecord& run, const std::string& name) 
   return std::nullopt;
 }
 
-// How far along the ray from `p` in direction `u` (a unit vector) the first wall of `walls` is; INFINITY when none.
-double alongRay(const Point2& p, const Vec2& u, const std::vector<WallDef>& walls) {
-  double best = INFINITY;
-  const auto edge = [&](const Point2& a, const Point2& b) {
-    const Vec2 e = b - a, w = a - p;
-    const double cross = u.x() * e.y() - u.y() * e.x();
-    if (std::abs(cross) < 1e-12) return;
-    const double t = (w.x() * e.y() - w.y() * e.x()) / cross, s = (w.x() * u.y() - w.y() * u.x()) / cross;
-    if (t >= 0 && s >= 0 && s <= 1) best = std::min(best, t);
-  };
-  const auto disc = [&](const Point2& c, double r) {
-    const double along = (c - p).dot(u), off2 = (c - p).squaredNorm() - along * along;
-    if (off2 <= r * r && along >= 0) best = std::min(best, along - std::sqrt(r * r - off2));
-  };
-  for (const WallDef& w : walls)
-    forEachEdge(
-        w, edge, [&](const Point2& lo, const Point2& hi) { worlds::forEachSide(lo, hi, edge); }, disc);
-  return best;
-}
-
 class Judge {
  public:
   Judge(const Criterion& c, const RunRecord& run) : c_(c), run_(run) {}
@@ -266,7 +246,7 @@ class Judge {
     double d = INFINITY;
     for (int ray = -3; ray <= 3; ++ray) {
       const double a = t.heading[k] + toSide + ray * (pi / 18);
-      d = std::min(d, alongRay(t.path[k], Vec2(std::cos(a), std::sin(a)), run_.walls));
+      for (const WallDef& w : run_.walls) d = std::min(d, worlds::rayToWall(t.path[k], Vec2(std::cos(a), std::sin(a)), w));
     }
     return std::min(d, run_.size.norm());  // no wall that side: as far as the world is wide
   }

@@ -143,6 +143,12 @@ struct WorldDef {
 [[nodiscard]] std::vector<double> sonarAngles(const SonarDef& s);
 /// Distance from `p` to the nearest point of `wall`, metres (0 inside a solid wall).
 [[nodiscard]] double distanceToWall(const Point2& p, const WallDef& wall);
+/// How far the ray from `o` along the unit vector `d` goes before it meets the segment a-b; INFINITY when it misses.
+[[nodiscard]] double rayToSegment(const Point2& o, const Vec2& d, const Point2& a, const Point2& b);
+/// How far the ray from `o` along the unit vector `d` goes before it meets the disc (0 from inside it); INFINITY when it misses.
+[[nodiscard]] double rayToDisc(const Point2& o, const Vec2& d, const Point2& centre, double radius);
+/// How far the ray from `o` along the unit vector `d` goes before it meets `wall`; INFINITY when it misses.
+[[nodiscard]] double rayToWall(const Point2& o, const Vec2& d, const WallDef& wall);
 /// The named point `name`, if the world has one.
 [[nodiscard]] std::optional<Point2> findPoint(const WorldDef& w, const std::string& name);
 /// Checks a world built in code for contradictions (robot inside a wall, outside the world, bad
