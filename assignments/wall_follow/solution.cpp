@@ -87,14 +87,16 @@ Task<Wheels> closeIn() {
 }
 
 // Then follow the wall until a corner comes, and say which: a wall ahead (a concave corner) or no
-// more wall straight to the right (a convex corner). The task's result is the event's value.
+// more wall to the right, neither straight right (sonar 12) nor just ahead of it (13): a convex
+// corner. (Sonar 13 keeps us from taking the start of the next wall, heard ahead, for a corner
+// just after we have rounded one.) The task's result is the event's value.
 enum class Corner { concave, convex };
 
 Task<Wheels, Corner> untilCorner() {
   return mkTask([](const TaskState& ts) {
     const Robot& r = ts.robot();
     Event<Corner> wallAhead = predicate(ahead(r) < kSetpoint + 5_cm).map([] { return Corner::concave; });
-    Event<Corner> wallEnds = predicate(sonar(r, 12) > kSetpoint + 40_cm).map([] { return Corner::convex; });
+    Event<Corner> wallEnds = predicate(min(sonar(r, 12), sonar(r, 13)) > kSetpoint + 40_cm).map([] { return Corner::convex; });
     return std::pair{alongWall(r), wallAhead | wallEnds};
   });
 }
@@ -113,13 +115,16 @@ Task<Wheels> turnInside() {
 // Step 4. A convex corner: the wall on our right has ended, so curve right round its end until the
 // next wall is beside us and we are nearly parallel to it: both sonar 12 and sonar 13 hear it.
 // Sonar 12's cone is 25 degrees wide, so it hears the wall's end until we are some 12 cm past it:
-// we curve that much tighter than (setpoint + body radius), to pass the end at the setpoint.
+// we curve that much tighter than (setpoint + body radius), to pass the end at the setpoint. The
+// wheels slip, so the curve is never quite the one commanded: should a wall come up ahead, we stop
+// curving into it, and untilCorner takes it for the concave corner it is.
 Task<Wheels> roundCorner() {
   return mkTask([](const TaskState& ts) {
     const Robot& r = ts.robot();
     double radius = kSetpoint + r.spec().radius - 12_cm;
     auto parallel = sonar(r, 12) < kSetpoint + 25_cm && sonar(r, 13) < kSetpoint + 25_cm;
-    return std::pair{wheels(kSpeed, -kSpeed / radius), predicate(parallel)};
+    auto blocked = ahead(r) < kSetpoint + 5_cm;
+    return std::pair{wheels(kSpeed, -kSpeed / radius), predicate(parallel || blocked)};
   });
 }
 

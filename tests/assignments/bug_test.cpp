@@ -73,8 +73,8 @@ TEST(BugAssignment, SolutionGetsFullMarksOnEveryCheck) {
 TEST(BugAssignment, StarterScoresNothing) {
   course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "starter.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}}));
-  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 70: never came within 0.30 m of goal"));
-  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 19: never came within 0.30 m of goal"));
+  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 872466220: never came within 0.30 m of goal"));
+  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 872466220: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kBound), HasSubstr("so its path cannot be measured"));
   EXPECT_THAT(reasons(g, kHidden), HasSubstr("never came within 0.30 m of goal"));
 }
@@ -86,7 +86,7 @@ TEST(BugAssignment, ForgettingTaskCatchStopsAtTheFirstError) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "no_task_catch.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 3}, {kHidden, 3}}));
   const std::string why = reasons(g, kReaches);
-  EXPECT_THAT(why, HasSubstr("in worlds/trap.toml, seed 70: the controller failed"));
+  EXPECT_THAT(why, HasSubstr("in worlds/trap.toml, seed 872466220: the controller failed"));
   EXPECT_THAT(why, HasSubstr("going round one obstacle took more than 30 s"));
   EXPECT_THAT(why, Not(HasSubstr("field.toml")));
   EXPECT_THAT(reasons(g, kHidden), HasSubstr("hidden world 4"));
@@ -99,8 +99,8 @@ TEST(BugAssignment, ForgettingTaskCatchStopsAtTheFirstError) {
 TEST(BugAssignment, ThePapersBugCirclesForeverAndDrivesPastTheBound) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "circles_forever.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1}}));
-  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 70: never came within 0.30 m of goal"));
-  EXPECT_THAT(reasons(g, kBound), HasSubstr("in worlds/field.toml, seed 19: drove 42.44 m to goal; the BUG1 bound is 33.59 m"));
+  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 872466220: never came within 0.30 m of goal"));
+  EXPECT_THAT(reasons(g, kBound), HasSubstr("in worlds/field.toml, seed 402455347: drove 42.32 m to goal; the BUG1 bound is 33.60 m"));
   const std::string hidden = reasons(g, kHidden);
   EXPECT_THAT(hidden, HasSubstr("hidden world 1"));
   EXPECT_THAT(hidden, HasSubstr("the BUG1 bound is"));
@@ -112,7 +112,7 @@ TEST(BugAssignment, ThePapersBugCirclesForeverAndDrivesPastTheBound) {
 TEST(BugAssignment, CopiedExampleSixGetsNothing) {
   course::Grade g = gradeFile(kAssignment, example("06_bug.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}}));
-  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 19: never came within 0.30 m of goal (closest 0.84 m"));
+  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 872466220: never came within 0.30 m of goal (closest 0.87 m"));
   EXPECT_THAT(reasons(g, kBound), HasSubstr("so its path cannot be measured"));
 }
 
@@ -130,8 +130,8 @@ TEST(BugAssignment, ExampleSixWithTheGoalCorrectedDoesNotPass) {
 
   course::Grade g = gradeFile(kAssignment, dir / "example06_goal_corrected.cpp");
   EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 0}}));
-  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 70: never came within 0.30 m of goal"));
-  EXPECT_THAT(reasons(g, kBound), HasSubstr("drove 43.49 m to goal; the BUG1 bound is 33.59 m"));
+  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 872466220: never came within 0.30 m of goal"));
+  EXPECT_THAT(reasons(g, kBound), HasSubstr("drove 43.23 m to goal; the BUG1 bound is 33.60 m"));
   for (const char* world : {"hidden world 1", "hidden world 2", "hidden world 3", "hidden world 4"}) {
     EXPECT_THAT(reasons(g, kHidden), HasSubstr(world));
   }

@@ -11,7 +11,7 @@ namespace frob::worlds {
 namespace {
 
 TEST(Recorder, KeepsEveryRobotAtEveryStep) {
-  Simulation sim(testing::scene("size = [4, 4]\n[[robot]]\nstart = [1, 1]\n[[robot]]\nstart = [3, 3]\n"));
+  Simulation sim(testing::ideal("size = [4, 4]\n[[robot]]\nstart = [1, 1]\n[[robot]]\nstart = [3, 3]\n"));
   Recorder rec;
   const std::vector<Wheels> wheels = {{.forward = 0.2}, {.turn = 0.5}};
   const std::vector<Picture> pictures = {circle(1.0), {}};

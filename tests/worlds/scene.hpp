@@ -18,6 +18,14 @@ inline WorldDef scene(std::string_view toml) {
   return w.ok() ? *w : WorldDef{};
 }
 
+// The world described by `toml` with ideal robots: no wheel slip, no start spread and odometry
+// without drift, for tests that check the physics or the sonars to the millimetre.
+inline WorldDef ideal(std::string_view toml) {
+  WorldDef w = scene(toml);
+  for (RobotDef& r : w.robots) r.drive.slip = 0, r.startSpread = {0, 0}, r.odometry = {0, 0, 0};
+  return w;
+}
+
 // Runs `steps` steps, every robot driven by the same `wheels`, sensing before each step.
 inline void drive(Simulation& sim, int steps, Wheels wheels) {
   const std::vector<Wheels> all(sim.robotCount(), wheels);

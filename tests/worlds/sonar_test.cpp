@@ -12,7 +12,7 @@ namespace frob::worlds {
 namespace {
 
 using namespace frob::literals;
-using testing::scene;
+using testing::ideal;
 
 // A robot of radius 0.2 at (1, 2) facing +x, one sonar on its axis, and a wall at x = 3.
 std::string facingWall(double noise, double headingDeg = 0) {
@@ -35,7 +35,7 @@ std::string facingWall(double noise, double headingDeg = 0) {
 TEST(Sonar, ReadsAWallAheadAtItsDistance) {
   // The sensor sits on the rim (x = 1.2): the wall is 1.8 m away. The central ray of the cone is
   // perpendicular to the wall, so without noise the reading is exact up to Box2D's float positions.
-  Simulation sim(scene(facingWall(0.0)));
+  Simulation sim(ideal(facingWall(0.0)));
   sim.sense();
   EXPECT_NEAR(sim.frame(0).sonar[0], 1.8, 1e-6);
 }
@@ -43,7 +43,7 @@ TEST(Sonar, ReadsAWallAheadAtItsDistance) {
 TEST(Sonar, NoisyReadingsStayWithinFourSigma) {
   // Noise is Gaussian with standard deviation 1% of the range (0.018 m here). Over 200 readings,
   // every one lies within 4 sigma (a miss has probability 6e-5 each) and the mean within 4 sigma/sqrt(200).
-  Simulation sim(scene(facingWall(0.01)));
+  Simulation sim(ideal(facingWall(0.01)));
   double sum = 0;
   for (int k = 0; k < 200; ++k) {
     sim.sense();
@@ -57,17 +57,17 @@ TEST(Sonar, NoisyReadingsStayWithinFourSigma) {
 TEST(Sonar, AGrazingWallBeyondTheCutoffReadsMaxRange) {
   // Facing 60 degrees away from the wall's normal: every ray of the 25 degree cone meets the wall
   // at 47.5 to 72.5 degrees, beyond the 22.5 degree cutoff, and is reflected away.
-  Simulation sim(scene(facingWall(0.0, 60)));
+  Simulation sim(ideal(facingWall(0.0, 60)));
   sim.sense();
   EXPECT_EQ(sim.frame(0).sonar[0], 6.5);
   // At 20 degrees the central ray still echoes.
-  Simulation near(scene(facingWall(0.0, 20)));
+  Simulation near(ideal(facingWall(0.0, 20)));
   near.sense();
   EXPECT_LT(near.frame(0).sonar[0], 6.5);
 }
 
 TEST(Sonar, NothingInRangeReadsMaxRange) {
-  Simulation sim(scene(R"(
+  Simulation sim(ideal(R"(
     size = [20, 20]
     enclosed = false
     [[wall]]
@@ -85,7 +85,7 @@ TEST(Sonar, InACornerTheNearerWallWins) {
   // A step-shaped corner: the upper half of the cone meets a near wall at x = 2, the lower half a
   // far wall at x = 4. The wall joining them runs along the rays and is never heard. The reading is
   // the nearest echoing ray: the one at +6.25 degrees reaching x = 2.
-  Simulation sim(scene(R"(
+  Simulation sim(ideal(R"(
     size = [6, 4]
     enclosed = false
     [[wall]]
@@ -100,7 +100,7 @@ TEST(Sonar, InACornerTheNearerWallWins) {
 }
 
 TEST(Sonar, ReadingsAreClampedToTheMinimumRange) {
-  Simulation sim(scene(R"(
+  Simulation sim(ideal(R"(
     size = [6, 4]
     enclosed = false
     [[wall]]
@@ -116,7 +116,7 @@ TEST(Sonar, ReadingsAreClampedToTheMinimumRange) {
 }
 
 TEST(Sonar, RobotsSeeEachOtherAndPillars) {
-  Simulation sim(scene(R"(
+  Simulation sim(ideal(R"(
     size = [10, 4]
     enclosed = false
     [[wall]]
@@ -152,7 +152,7 @@ TEST(Sonar, RobotsWithDifferentSonarsEachReadWithTheirOwn) {
   )";
   const std::string room = "size = [10, 10]\n";  // the robots 8.5 m apart: out of each other's range
   auto readings = [](const std::string& world, std::size_t robot) {
-    Simulation sim(scene(world));
+    Simulation sim(ideal(world));
     sim.sense();
     return sim.frame(robot).sonar;
   };
@@ -168,7 +168,7 @@ TEST(Sonar, RobotsWithDifferentSonarsEachReadWithTheirOwn) {
 
 TEST(Sonar, TheSameSeedGivesTheSameNoiseAndAnotherSeedOther) {
   auto readings = [](std::uint64_t seed) {
-    Simulation sim(scene(facingWall(0.05)), {.seed = seed});
+    Simulation sim(ideal(facingWall(0.05)), {.seed = seed});
     std::vector<double> r;
     for (int k = 0; k < 50; ++k) {
       sim.sense();
@@ -184,7 +184,7 @@ TEST(Sonar, TheSameSeedGivesTheSameNoiseAndAnotherSeedOther) {
 TEST(Sonar, ARingOfSixteenSeesARoomAllAround) {
   // In the middle of a 4 x 4 room every sonar hears a wall within 2 * sqrt(2) m, except the four
   // that point into corners: every ray of theirs meets a wall 32.5 to 57.5 degrees from its normal.
-  Simulation sim(scene("size = [4, 4]\n[[robot]]\nstart = [2, 2]\nsonar = { noise = 0 }\n"));
+  Simulation sim(ideal("size = [4, 4]\n[[robot]]\nstart = [2, 2]\nsonar = { noise = 0 }\n"));
   sim.sense();
   ASSERT_EQ(sim.frame(0).sonar.size(), 16u);
   EXPECT_NEAR(sim.frame(0).sonar[0], 2 - 0.23, 1e-5);
@@ -201,7 +201,7 @@ TEST(Sonar, ARingOfSixteenSeesARoomAllAround) {
 // alongside, 0.5 m to the left, echoes in sonar 4 (at 0.5 - 0.23 m from the rim) and in sonars 3
 // and 5 (22.5 degrees off, within the cone and cutoff); the 45-degree sonars 2 and 6 hear nothing.
 TEST(Sonar, TheDiagonalSonarsNeverHearAWallAlongside) {
-  Simulation sim(scene(R"(
+  Simulation sim(ideal(R"(
     size = [10, 4]
     enclosed = false
     [[wall]]

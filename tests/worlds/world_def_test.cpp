@@ -38,7 +38,9 @@ TEST(WorldDef, ARayMeetsTheFirstSurfaceAhead) {
 
 TEST(WorldDef, ChecksNameTheFieldWithoutAFile) {
   WorldDef w{.size = {5.0, 5.0}, .walls = {circleWall({2, 2}, 1.0)}, .robots = {{.start = {.position = {2.5, 2.5}}}}};
-  EXPECT_EQ(checkWorld(w).error(), "world: robot[0].start: the robot (radius 0.23 m) is inside or touching wall[0]");
+  EXPECT_EQ(checkWorld(w).error(),
+            "world: robot[0].start: the robot (radius 0.23 m, start_spread.position 0.02 m) may touch wall[0]; move it away or set "
+            "start_spread.position = 0");
   w.robots[0].start.position = {4.5, 4.5};
   EXPECT_TRUE(checkWorld(w).ok()) << checkWorld(w).error();
   w.robots[0].sonar.rays = 0;

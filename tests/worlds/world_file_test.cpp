@@ -40,7 +40,8 @@ TEST(WorldFile, ReadsEveryPartOfAWorld) {
     heading_deg = 90
     sonar = { count = 4, rays = 3 }
     odometry = { translation = 0.1 }
-    drive = { max_speed = 1.5 }
+    drive = { max_speed = 1.5, slip = 0.05, slip_time = 1.5 }
+    start_spread = { position = 0.1, heading_deg = 3 }
     [[robot]]
     start = [4, 2]
     sonar = { angles_deg = [0, 180], noise = 0 }
@@ -70,6 +71,10 @@ TEST(WorldFile, ReadsEveryPartOfAWorld) {
   EXPECT_EQ(w->robots[0].sonar.noise, 0.05);  // from the world-wide [sonar] defaults
   EXPECT_EQ(w->robots[0].odometry.translation, 0.1);
   EXPECT_EQ(w->robots[0].drive.maxSpeed, 1.5);
+  EXPECT_EQ(w->robots[0].drive.slip, 0.05);
+  EXPECT_EQ(w->robots[0].drive.slipTime, 1.5);
+  EXPECT_EQ(w->robots[0].startSpread.position, 0.1);
+  EXPECT_DOUBLE_EQ(w->robots[0].startSpread.heading, 3_deg);
   EXPECT_EQ(w->robots[1].sonar.noise, 0.0);  // overridden
   EXPECT_EQ(sonarAngles(w->robots[1].sonar).size(), 2u);
   ASSERT_EQ(w->keys.size(), 1u);
@@ -88,6 +93,15 @@ TEST(WorldFile, DefaultsAreANomad200) {
   EXPECT_EQ(spec.sonarMinRange, 0.15);
   EXPECT_EQ(spec.sonarMaxRange, 6.5);
   EXPECT_TRUE(w->enclosed);
+  // Its wheels slip, it starts near its start, its odometry drifts: a replayed path goes astray.
+  const RobotDef& r = w->robots[0];
+  EXPECT_EQ(r.drive.slip, 0.03);
+  EXPECT_EQ(r.drive.slipTime, 2.0);
+  EXPECT_EQ(r.startSpread.position, 0.02);
+  EXPECT_DOUBLE_EQ(r.startSpread.heading, 0.5_deg);
+  EXPECT_EQ(r.odometry.translation, 0.005);
+  EXPECT_EQ(r.odometry.heading, 0.001);
+  EXPECT_EQ(r.odometry.turn, 0.002);
 }
 
 // One bad world and the exact message it must give.
@@ -111,7 +125,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadWorld{"missing size", "seed = 1\n", "maze.toml:1: size: missing (expected [width, height] in metres)"},
         BadWorld{"unknown top-level key", "size = [4, 4]\nsead = 3\n",
                  "maze.toml:2: sead: unknown key (expected one of description, size, enclosed, seed, wall, points, "
-                 "robot, key, bitmap, mesh, sonar, odometry, drive)"},
+                 "robot, key, bitmap, mesh, sonar, odometry, drive, start_spread)"},
         BadWorld{"wrong type of point", "size = [4, 4]\n[[wall]]\nfrom = [1, 1]\nto = [2, 2]\n[[wall]]\nfrom = 3\nto = [1, 1]\n",
                  "maze.toml:6: wall[1].from: expected [x, y]"},
         BadWorld{"string for a number", "size = [4, 4]\n[[robot]]\nstart = [2, 2]\nradius = \"big\"\n",
@@ -120,18 +134,27 @@ INSTANTIATE_TEST_SUITE_P(
         BadWorld{"nan", "size = [nan, 4]\n", "maze.toml:1: size: expected a finite number"},
         BadWorld{"typo in a robot", "size = [4, 4]\n[[robot]]\nstart = [2, 2]\nhaeding_deg = 3\n",
                  "maze.toml:4: robot[0].haeding_deg: unknown key (expected one of name, start, heading_deg, radius, "
-                 "density, bumpers, sonar, odometry, drive)"},
+                 "density, bumpers, sonar, odometry, drive, start_spread)"},
         BadWorld{"typo in a sonar", "size = [4, 4]\n[[robot]]\nstart = [2, 2]\n[robot.sonar]\ncone = 3\n",
                  "maze.toml:5: robot[0].sonar.cone: unknown key (expected one of count, angles_deg, cone_deg, rays, "
                  "min_range, max_range, specular_cutoff_deg, noise)"},
         BadWorld{"robot inside a wall", "size = [4, 4]\n[[wall]]\nrect = [[1, 1], [3, 3]]\n[[robot]]\nstart = [2, 2]\n",
-                 "maze.toml:5: robot[0].start: the robot (radius 0.23 m) is inside or touching wall[0]"},
+                 "maze.toml:5: robot[0].start: the robot (radius 0.23 m, start_spread.position 0.02 m) may touch wall[0]; move it away "
+                 "or set start_spread.position = 0"},
         BadWorld{"robot across a thin wall", "size = [4, 4]\n[[wall]]\nfrom = [2, 0]\nto = [2, 4]\n[[robot]]\nstart = [2.1, 2]\n",
-                 "maze.toml:6: robot[0].start: the robot (radius 0.23 m) is inside or touching wall[0]"},
+                 "maze.toml:6: robot[0].start: the robot (radius 0.23 m, start_spread.position 0.02 m) may touch wall[0]; move it away "
+                 "or set start_spread.position = 0"},
+        BadWorld{"robot within its start spread of a wall", "size = [4, 4]\n[[wall]]\nfrom = [2, 0]\nto = [2, 4]\n[[robot]]\nstart = [2.24, 2]\n",
+                 "maze.toml:6: robot[0].start: the robot (radius 0.23 m, start_spread.position 0.02 m) may touch wall[0]; move it away "
+                 "or set start_spread.position = 0"},
+        BadWorld{"slip out of range", "size = [4, 4]\n[[robot]]\nstart = [2, 2]\ndrive = { slip = 0.7 }\n",
+                 "maze.toml:3: robot[0].drive.slip: must lie in [0, 0.5]"},
+        BadWorld{"typo in a start spread", "size = [4, 4]\n[start_spread]\nheading = 1\n[[robot]]\nstart = [2, 2]\n",
+                 "maze.toml:3: start_spread.heading: unknown key (expected one of position, heading_deg)"},
         BadWorld{"robot outside", "size = [4, 4]\n[[robot]]\nstart = [5, 2]\n",
-                 "maze.toml:3: robot[0].start: the robot (radius 0.23 m) reaches outside the world"},
+                 "maze.toml:3: robot[0].start: the robot (radius 0.23 m, start_spread.position 0.02 m) may reach outside the world"},
         BadWorld{"robots overlap", "size = [4, 4]\n[[robot]]\nstart = [2, 2]\n[[robot]]\nstart = [2.2, 2]\n",
-                 "maze.toml:5: robot[1].start: the robot overlaps robot[0]"},
+                 "maze.toml:5: robot[1].start: the robot (radius 0.23 m, start_spread.position 0.02 m) may overlap robot[0]"},
         BadWorld{"two wall shapes", "size = [4, 4]\n[[wall]]\nfrom = [1, 1]\nto = [2, 2]\ncircle = [1, 1]\n",
                  "maze.toml:2: wall[0]: give exactly one of from/to, polyline, rect, circle"},
         BadWorld{"segment without to", "size = [4, 4]\n[[wall]]\nfrom = [1, 1]\n", "maze.toml:2: wall[0].to: missing (a segment needs from and to)"},

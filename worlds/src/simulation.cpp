@@ -1,6 +1,7 @@
 #include "frob/worlds/simulation.hpp"
 
 #include "frob/errors.hpp"
+#include "frob/worlds/fnv.hpp"
 #include "random.hpp"
 #include "ray_caster.hpp"
 #include "workers.hpp"
@@ -43,13 +44,15 @@ struct RobotState {
   double cosCutoff = 1.0;
   double forward = 0.0, turn = 0.0;  // commands after acceleration limits
   Pose2 odometry;
-  Pose2 previous;                   // true pose at the end of the last step: the body's own until the next
-  double previousCos, previousSin;  // of its heading, for dead reckoning and sensing alike
-  bool noiselessOdometry = true;
-  std::vector<int> pressed;      // per bumper: contacts touching it
-  std::vector<BumperHit> bumps;  // bumper contacts that began during the last step
+  Pose2 previous;                            // true pose at the end of the last step: the body's own until the next
+  double previousCos, previousSin;           // of its heading, for dead reckoning and sensing alike
+  bool exactOdometry = true;                 // no noise and no start offset: odometry is the true pose
+  double slipForward = 0.0, slipTurn = 0.0;  // relative errors of the achieved speeds, this step
+  double slipDecay = 1.0, slipKick = 0.0;    // per step: how much of the error stays, and the new part's deviation
+  std::vector<int> pressed;                  // per bumper: contacts touching it
+  std::vector<BumperHit> bumps;              // bumper contacts that began during the last step
   std::size_t invalid = 0;
-  detail::Rng sonarRng, odometryRng;
+  detail::Rng sonarRng, odometryRng, slipRng;
   SensorFrame frame;
 };
 
@@ -158,10 +161,11 @@ struct Simulation::Impl : b2ContactListener {
     RobotState r;
     r.def = d;
     r.spec = robotSpec(d);
+    const Pose2 truth = trueStart(d, index);
     b2BodyDef def;
     def.type = b2_dynamicBody;
-    def.position.Set(static_cast<float>(d.start.position.x()), static_cast<float>(d.start.position.y()));
-    def.angle = static_cast<float>(d.start.heading);
+    def.position.Set(static_cast<float>(truth.position.x()), static_cast<float>(truth.position.y()));
+    def.angle = static_cast<float>(truth.heading);
     def.fixedRotation = true;  // synchro drive: the body turns only when commanded
     r.body = physics.CreateBody(&def);
     b2CircleShape disc;
@@ -200,14 +204,33 @@ struct Simulation::Impl : b2ContactListener {
     r.cosCutoff = std::cos(s.specularCutoff);
     r.previous = poseOf(r.body);
     r.previousCos = std::cos(r.previous.heading), r.previousSin = std::sin(r.previous.heading);
-    r.odometry = r.previous;
-    r.noiselessOdometry = d.odometry.translation == 0 && d.odometry.heading == 0 && d.odometry.turn == 0;
+    const bool offset = truth.position != d.start.position || truth.heading != d.start.heading;
+    r.odometry = offset ? Pose2{d.start.position, wrapAngle(d.start.heading)} : r.previous;
+    r.exactOdometry = !offset && d.odometry.translation == 0 && d.odometry.heading == 0 && d.odometry.turn == 0;
     r.pressed.assign(static_cast<std::size_t>(d.bumpers), 0);
     r.sonarRng = detail::Rng(seed, index, detail::Stream::Sonar);
     r.odometryRng = detail::Rng(seed, index, detail::Stream::Odometry);
+    r.slipRng = detail::Rng(seed, index, detail::Stream::Slip);
+    if (d.drive.slip > 0) {  // an Ornstein-Uhlenbeck process per speed, begun in its steady spread
+      r.slipDecay = std::exp(-options.dt / d.drive.slipTime);
+      r.slipKick = d.drive.slip * std::sqrt(1.0 - r.slipDecay * r.slipDecay);
+      r.slipForward = d.drive.slip * r.slipRng.gaussian();
+      r.slipTurn = d.drive.slip * r.slipRng.gaussian();
+    }
     r.frame.sonar.assign(r.spec.sonarAngles.size(), s.maxRange);
     r.frame.odometry = r.odometry;
     robots.push_back(std::move(r));
+  }
+
+  // Robot `index`'s true starting pose: its start, moved by an offset drawn from the seed
+  // uniformly within the start spread.
+  Pose2 trueStart(const RobotDef& d, std::size_t index) const {
+    const StartSpreadDef& s = d.startSpread;
+    if (s.position == 0 && s.heading == 0) return d.start;
+    detail::Rng rng(seed, index, detail::Stream::Start);
+    const double distance = s.position * std::sqrt(rng.uniform()), direction = 2 * pi * rng.uniform();
+    const double turn = s.heading * (2 * rng.uniform() - 1);
+    return {d.start.position + distance * unitVector(direction), wrapAngle(d.start.heading + turn)};
   }
 
   // Box2D calls this during Step when two fixtures start touching.
@@ -306,7 +329,7 @@ struct Simulation::Impl : b2ContactListener {
     const double c = r.previousCos, s = r.previousSin;
     r.previous = now;
     r.previousCos = std::cos(now.heading), r.previousSin = std::sin(now.heading);
-    if (r.noiselessOdometry) {
+    if (r.exactOdometry) {
       r.odometry = now;
       return;
     }
@@ -315,10 +338,12 @@ struct Simulation::Impl : b2ContactListener {
     const double dy = -s * d.x() + c * d.y();
     double dh = angleDiff(before.heading, now.heading);
     const OdometryDef& o = r.def.odometry;
-    const double g1 = r.odometryRng.gaussian(), g2 = r.odometryRng.gaussian();
-    const double dist = std::abs(dx), turned = std::abs(dh);
-    dx += o.translation * std::sqrt(dist) * g1;
-    dh += std::sqrt(o.heading * o.heading * dist + o.turn * o.turn * turned) * g2;
+    if (o.translation != 0 || o.heading != 0 || o.turn != 0) {
+      const double g1 = r.odometryRng.gaussian(), g2 = r.odometryRng.gaussian();
+      const double dist = std::abs(dx), turned = std::abs(dh);
+      dx += o.translation * std::sqrt(dist) * g1;
+      dh += std::sqrt(o.heading * o.heading * dist + o.turn * o.turn * turned) * g2;
+    }
     const double oc = std::cos(r.odometry.heading), os = std::sin(r.odometry.heading);
     r.odometry.position += Vec2(oc * dx - os * dy, os * dx + oc * dy);
     r.odometry.heading = wrapAngle(r.odometry.heading + dh);
@@ -388,15 +413,34 @@ void Simulation::step(std::span<const Wheels> wheels) {
     const double turn = std::clamp(w.turn, -d.maxTurnRate, d.maxTurnRate);
     r.forward += std::clamp(forward - r.forward, -d.acceleration * dt, d.acceleration * dt);
     r.turn += std::clamp(turn - r.turn, -d.turnAcceleration * dt, d.turnAcceleration * dt);
+    if (r.slipKick > 0) {
+      r.slipForward = r.slipDecay * r.slipForward + r.slipKick * r.slipRng.gaussian();
+      r.slipTurn = r.slipDecay * r.slipTurn + r.slipKick * r.slipRng.gaussian();
+    }
     const b2Rot& heading = r.body->GetTransform().q;  // Box2D's cosf and sinf of GetAngle(), kept with the body
-    r.body->SetLinearVelocity(static_cast<float>(r.forward) * b2Vec2(heading.c, heading.s));
-    r.body->SetAngularVelocity(static_cast<float>(r.turn));
+    r.body->SetLinearVelocity(static_cast<float>(r.forward * (1.0 + r.slipForward)) * b2Vec2(heading.c, heading.s));
+    r.body->SetAngularVelocity(static_cast<float>(r.turn * (1.0 + r.slipTurn)));
   }
   s.physics.Step(static_cast<float>(dt), kVelocityIterations, kPositionIterations);
   // Like sensing, odometry reads only its own body and draws from its own random stream, so it
   // may wait for the next sense() and give the same bits.
   s.odometryPending = true;
   ++s.steps;
+}
+
+std::uint64_t simulationFingerprint() {
+  WorldDef w{.size = {4.0, 2.0}, .walls = {segmentWall({3.5, 0.0}, {3.5, 2.0})}, .robots = {{.start = {.position = Point2(1.0, 1.0)}}}};
+  Simulation sim(w);
+  Fnv1a h;
+  const std::vector<Wheels> wheels{{.forward = 0.5, .turn = 0.2}};
+  for (int k = 0; k < 300; ++k) {
+    sim.sense();
+    for (double s : sim.frame(0).sonar) h.add(s);
+    const Pose2 p = sim.truePose(0), o = sim.frame(0).odometry;
+    h.add(p.position.x()).add(p.position.y()).add(p.heading).add(o.position.x()).add(o.position.y()).add(o.heading);
+    sim.step(wheels);
+  }
+  return h.value();
 }
 
 std::size_t Simulation::robotCount() const { return impl_->robots.size(); }

@@ -173,6 +173,10 @@ Status checkRobot(const RobotDef& r) {
   if (bad(d.maxTurnRate, 0.0, 50.0)) return Status::failure("drive.max_turn_rate: must lie in [0, 50] rad/s");
   if (bad(d.acceleration, 1e-6, 1e3)) return Status::failure("drive.acceleration: must lie in (0, 1000] m/s^2");
   if (bad(d.turnAcceleration, 1e-6, 1e4)) return Status::failure("drive.turn_acceleration: must lie in (0, 10000] rad/s^2");
+  if (bad(d.slip, 0.0, 0.5)) return Status::failure("drive.slip: must lie in [0, 0.5]");
+  if (bad(d.slipTime, 0.01, 1e4)) return Status::failure("drive.slip_time: must lie in [0.01, 10000] s");
+  if (bad(r.startSpread.position, 0.0, 1.0)) return Status::failure("start_spread.position: must lie in [0, 1] m");
+  if (bad(r.startSpread.heading, 0.0, pi)) return Status::failure("start_spread.heading_deg: must lie in [0, 180] degrees");
   if (!finite(r.start.position) || !std::isfinite(r.start.heading)) return Status::failure("start: must be finite");
   return {};
 }
@@ -197,14 +201,18 @@ Status checkWorld(const WorldDef& w, const SourceLines& at) {
     const std::string field = where(at, lineAt(at.robots, i)) + "robot[" + std::to_string(i) + "].";
     if (Status e = checkRobot(r); !e) return Status::failure(field + e.error());
     const Point2& p = r.start.position;
-    if (p.x() - r.radius < 0 || p.y() - r.radius < 0 || p.x() + r.radius > w.size.x() || p.y() + r.radius > w.size.y())
-      return Status::failure(field + "start: the robot (radius " + fmt(r.radius) + " m) reaches outside the world");
+    // Wherever the start spread puts it, the robot starts clear of everything.
+    const double reach = r.radius + r.startSpread.position;
+    const std::string body = "the robot (radius " + fmt(r.radius) + " m, start_spread.position " + fmt(r.startSpread.position) + " m)";
+    if (p.x() - reach < 0 || p.y() - reach < 0 || p.x() + reach > w.size.x() || p.y() + reach > w.size.y())
+      return Status::failure(field + "start: " + body + " may reach outside the world");
     for (std::size_t k = 0; k < w.walls.size(); ++k)
-      if (distanceToWall(p, w.walls[k]) < r.radius)
-        return Status::failure(field + "start: the robot (radius " + fmt(r.radius) + " m) is inside or touching wall[" + std::to_string(k) + "]");
+      if (distanceToWall(p, w.walls[k]) < reach)
+        return Status::failure(field + "start: " + body + " may touch wall[" + std::to_string(k) +
+                               "]; move it away or set start_spread.position = 0");
     for (std::size_t k = 0; k < i; ++k)
-      if ((w.robots[k].start.position - p).norm() < w.robots[k].radius + r.radius)
-        return Status::failure(field + "start: the robot overlaps robot[" + std::to_string(k) + "]");
+      if ((w.robots[k].start.position - p).norm() < w.robots[k].radius + w.robots[k].startSpread.position + reach)
+        return Status::failure(field + "start: " + body + " may overlap robot[" + std::to_string(k) + "]");
   }
   for (std::size_t i = 0; i < w.keys.size(); ++i) {
     const KeyEventDef& k = w.keys[i];

@@ -38,7 +38,8 @@ class Parser : TomlReader {
 
   bool readWorld(const toml::table& root) {
     if (!onlyKeys(root, "",
-                  {"description", "size", "enclosed", "seed", "wall", "points", "robot", "key", "bitmap", "mesh", "sonar", "odometry", "drive"}))
+                  {"description", "size", "enclosed", "seed", "wall", "points", "robot", "key", "bitmap", "mesh", "sonar", "odometry", "drive",
+                   "start_spread"}))
       return false;
     if (auto n = root.get("description"); n && !string(*n, "description", world_.description)) return false;
     const toml::node* size = root.get("size");
@@ -64,6 +65,10 @@ class Parser : TomlReader {
     if (auto n = root.get("drive")) {
       auto t = table(*n, "drive");
       if (!t || !readDrive(*t, "drive.", defaults_.drive)) return false;
+    }
+    if (auto n = root.get("start_spread")) {
+      auto t = table(*n, "start_spread");
+      if (!t || !readStartSpread(*t, "start_spread.", defaults_.startSpread)) return false;
     }
     return eachTable(root, "wall", [&](const toml::table& t, const std::string& f) { return readWall(t, f); }) && readPoints(root) &&
            readMap(root, "bitmap") && readMap(root, "mesh") &&
@@ -221,14 +226,20 @@ class Parser : TomlReader {
   }
 
   bool readDrive(const toml::table& t, const std::string& f, DriveDef& d) {
-    return onlyKeys(t, f, {"max_speed", "max_turn_rate", "acceleration", "turn_acceleration"}) &&
+    return onlyKeys(t, f, {"max_speed", "max_turn_rate", "acceleration", "turn_acceleration", "slip", "slip_time"}) &&
            optNumber(t, "max_speed", f + "max_speed", d.maxSpeed) && optNumber(t, "max_turn_rate", f + "max_turn_rate", d.maxTurnRate) &&
            optNumber(t, "acceleration", f + "acceleration", d.acceleration) &&
-           optNumber(t, "turn_acceleration", f + "turn_acceleration", d.turnAcceleration);
+           optNumber(t, "turn_acceleration", f + "turn_acceleration", d.turnAcceleration) && optNumber(t, "slip", f + "slip", d.slip) &&
+           optNumber(t, "slip_time", f + "slip_time", d.slipTime);
+  }
+
+  bool readStartSpread(const toml::table& t, const std::string& f, StartSpreadDef& s) {
+    return onlyKeys(t, f, {"position", "heading_deg"}) && optNumber(t, "position", f + "position", s.position) &&
+           optNumber(t, "heading_deg", f + "heading_deg", s.heading, kDeg);
   }
 
   bool readRobot(const toml::table& t, const std::string& f) {
-    if (!onlyKeys(t, f, {"name", "start", "heading_deg", "radius", "density", "bumpers", "sonar", "odometry", "drive"})) return false;
+    if (!onlyKeys(t, f, {"name", "start", "heading_deg", "radius", "density", "bumpers", "sonar", "odometry", "drive", "start_spread"})) return false;
     RobotDef r = defaults_;
     const toml::node* start = t.get("start");
     if (!start) return fail(line(t.source()), f + "start", "missing (expected [x, y] in metres)");
@@ -249,6 +260,10 @@ class Parser : TomlReader {
     if (auto n = t.get("drive")) {
       auto s = table(*n, f + "drive");
       if (!s || !readDrive(*s, f + "drive.", r.drive)) return false;
+    }
+    if (auto n = t.get("start_spread")) {
+      auto s = table(*n, f + "start_spread");
+      if (!s || !readStartSpread(*s, f + "start_spread.", r.startSpread)) return false;
     }
     world_.robots.push_back(std::move(r));
     lines_.robots.push_back(line(start->source()));

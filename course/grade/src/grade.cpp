@@ -232,7 +232,8 @@ std::string fileText(const fs::path& file) {
   return text.str();
 }
 
-// The cache of fairHiddenWorlds: "reference <hash of its source>", then "<draw> <check>" lines.
+// The cache of fairHiddenWorlds: "reference <hash of its source> simulation <fingerprint>", then
+// "<draw> <check>" lines.
 std::optional<KeptWorlds> readKept(const fs::path& file, const std::string& reference) {
   std::ifstream in(file);
   std::string line;
@@ -272,7 +273,9 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
   if (def.secret.empty() || rubric.reference.empty() || !rubric.needsSecret()) return KeptWorlds{};
   const fs::path cache = keptWorldsFile(def);
   if (!fs::is_regular_file(rubric.reference)) return readKept(cache, "").value_or(KeptWorlds{});
-  const std::string reference = format("%016" PRIx64, worlds::Fnv1a().add(std::string_view(fileText(rubric.reference))).value());
+  // Kept for this reference and this simulation: a change of either may change which draws it passes.
+  const std::string reference = format("%016" PRIx64 " simulation %016" PRIx64,
+                                       worlds::Fnv1a().add(std::string_view(fileText(rubric.reference))).value(), worlds::simulationFingerprint());
   if (std::optional<KeptWorlds> known = readKept(cache, reference)) return *known;
 
   std::string messages;
@@ -292,8 +295,8 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
       const Result<worlds::WorldDef> world = loadWorldRef(ref);
       bool passes = world.ok();
       const std::vector<std::uint64_t> seeds = seedsOf(check, def.secret);
-      for (std::size_t s = 0; passes && s < std::max<std::size_t>(seeds.size(), 1); ++s) {
-        RunGrade r{.world = ref.name, .seed = !seeds.empty() ? seeds[s] : world.value().seed};
+      for (std::size_t s = 0; passes && s < seeds.size(); ++s) {
+        RunGrade r{.world = ref.name, .seed = seeds[s]};
         runCheck(quiet, compiled.value(), check, ref, world.value(), r, notes);
         passes = r.passed;
       }
@@ -331,9 +334,8 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
       auto known = worldsByName.find(w.name);
       if (known == worldsByName.end()) known = worldsByName.emplace(w.name, loadWorldRef(w)).first;
       const Result<worlds::WorldDef>& world = known->second;
-      for (std::size_t s = 0; s < std::max<std::size_t>(seeds.size(), 1); ++s) {
-        RunGrade& r = cg.runs.emplace_back(RunGrade{.world = w.name});
-        r.seed = !seeds.empty() ? seeds[s] : world ? world.value().seed : 0;
+      for (std::uint64_t seed : seeds) {
+        RunGrade& r = cg.runs.emplace_back(RunGrade{.world = w.name, .seed = seed});
         if (!compiled) {
           r.reason = "the submission did not compile";
         } else if (!world) {

@@ -289,6 +289,10 @@ std::uint64_t secretSeed(const std::string& secret, const std::string& what, con
 std::vector<std::uint64_t> seedsOf(const Check& check, const std::string& secret) {
   std::vector<std::uint64_t> seeds = check.seeds;
   for (int k = 0; k < check.secretSeeds; ++k) seeds.push_back(secretSeed(secret, "", check, k));
+  // None named: one drawn from the check's name (and the secret, when hidden), never the world's
+  // own seed, which `frob run` uses: a run recorded there does not replay here.
+  const bool hidden = check.visibility != Visibility::Visible;
+  if (seeds.empty()) seeds.push_back(secretSeed(hidden ? secret : std::string(), "run\n", check, 0) % 1000000000);
   return seeds;
 }
 

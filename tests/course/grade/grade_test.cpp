@@ -3,9 +3,11 @@
 #include "frob/grade/grade.hpp"
 
 #include "frob/run/format.hpp"
+#include "frob/worlds/simulation.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cinttypes>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -227,6 +229,16 @@ TEST_F(Grading, HiddenWorldsAreTheFirstDrawsTheReferencePasses) {
   EXPECT_EQ(kept.value(), (KeptWorlds{{"near the room", expected}}));
   const Grade g = grade(def, dir_ / "assignment" / "still.cpp");
   EXPECT_EQ(g.score(), g.maxScore()) << g.checks[0].output();
+
+  // Kept for this reference and this simulation: what another build of the simulation kept is drawn anew.
+  const fs::path cache = keptWorldsFile(def);
+  std::stringstream text;
+  text << std::ifstream(cache).rdbuf();
+  const std::string fingerprint = format("simulation %016" PRIx64, worlds::simulationFingerprint());
+  ASSERT_NE(text.str().find(fingerprint), std::string::npos) << text.str();
+  std::string stale = text.str().replace(text.str().find(fingerprint), fingerprint.size(), "simulation 0000000000000000");
+  std::ofstream(cache) << stale.substr(0, stale.find('\n') + 1) << "99 near the room\n";
+  EXPECT_EQ(fairHiddenWorlds(def).value(), kept.value());
 
   // Kept in the cache: used as it is where the reference is absent (a Gradescope zip).
   fs::rename(dir_ / "assignment" / "still.cpp", dir_ / "still.cpp");

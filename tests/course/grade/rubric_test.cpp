@@ -83,6 +83,26 @@ TEST(Rubric, SecretSeedsDependOnTheSecretAndTheCheckOnly) {
   EXPECT_EQ(seedsOf(r.value().checks[0], "s3cret"), (std::vector<std::uint64_t>{1, 2}));
 }
 
+// A check that names no seeds runs with one drawn from its name, not with the world's own seed
+// (which `frob run` uses, so a run recorded there would replay here); a hidden one's from the secret too.
+TEST(Rubric, ACheckWithoutSeedsGetsADrawnOne) {
+  Result<Rubric> r = loadRubric(rubricFile("drawn", kGood));
+  ASSERT_TRUE(r.ok()) << r.error();
+  Check visible = r.value().checks[0];
+  visible.seeds.clear();
+  const std::vector<std::uint64_t> drawn = seedsOf(visible, "s3cret");
+  ASSERT_EQ(drawn.size(), 1u);
+  EXPECT_EQ(drawn, seedsOf(visible, "other"));  // a student can rerun it with frob run --seed
+  EXPECT_LT(drawn[0], 1000000000u);             // short enough to type
+  Check renamed = visible;
+  renamed.name = "another check";
+  EXPECT_NE(seedsOf(renamed, "s3cret"), drawn);
+  Check hidden = r.value().checks[1];
+  hidden.secretSeeds = 0;
+  ASSERT_EQ(seedsOf(hidden, "s3cret").size(), 1u);
+  EXPECT_NE(seedsOf(hidden, "s3cret"), seedsOf(hidden, "other"));
+}
+
 struct Mistake {
   std::string replace, with;  // an edit of kGood
   std::string error;          // the whole message after "<file>:"

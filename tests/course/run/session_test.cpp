@@ -19,7 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 using namespace frob::literals;
 
-// A 6 x 3 m room with a goal 2 m ahead of the robot.
+// A 6 x 3 m room with a goal 2 m ahead of the robot; its wheels do not slip and it starts exactly
+// at its start, so that distances and times are the commanded ones.
 worlds::WorldDef room() {
   return *worlds::parseWorld(R"(size = [6.0, 3.0]
 seed = 5
@@ -28,6 +29,8 @@ goal = [3.0, 1.5]
 [[robot]]
 name = "r"
 start = [1.0, 1.5]
+drive = { slip = 0 }
+start_spread = { position = 0, heading_deg = 0 }
 )",
                              "room.toml");
 }

@@ -26,6 +26,11 @@
 
 namespace frob::worlds {
 
+/// A hash of what a fixed short run does in this build (a robot with every noise, slip and start
+/// spread, driving at a wall): it changes when the simulation's behaviour does, so that results
+/// cached from runs can be keyed by it.
+[[nodiscard]] std::uint64_t simulationFingerprint();
+
 /// Options of one run, beside the world itself.
 struct SimOptions {
   double dt = 0.01;                   ///< fixed step, seconds (100 Hz)

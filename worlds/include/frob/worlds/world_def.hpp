@@ -91,31 +91,47 @@ struct SonarDef {
 
 /// Dead-reckoning noise. Errors accumulate as random walks: after travelling d metres and turning
 /// a radians, the along-track error has standard deviation translation*sqrt(d) metres and the
-/// heading error sqrt(heading^2*d + turn^2*a) radians. All zero: odometry equals the true pose.
+/// heading error sqrt(heading^2*d + turn^2*a) radians. The defaults drift as a Nomad's odometry
+/// does on a good floor: after 10 m and a full turn, some 1.6 cm along and 0.34 degrees of heading.
+/// All zero: odometry follows the true motion exactly.
 struct OdometryDef {
-  double translation = 0.0;  ///< along-track error, m per sqrt(m) travelled
-  double heading = 0.0;      ///< heading drift, rad per sqrt(m) travelled
-  double turn = 0.0;         ///< heading error, rad per sqrt(rad) turned
+  double translation = 0.005;  ///< along-track error, m per sqrt(m) travelled
+  double heading = 0.001;      ///< heading drift, rad per sqrt(m) travelled
+  double turn = 0.002;         ///< heading error, rad per sqrt(rad) turned
 };
 
 /// Synchro drive limits: commanded speeds are clamped, then approached at bounded acceleration.
+/// The wheels slip: the speed and turn rate achieved differ from those commanded by a relative
+/// error that wanders slowly (standard deviation `slip`, correlation time `slipTime`), drawn from
+/// the seed, so a recorded sequence of commands does not retrace its path.
 struct DriveDef {
   double maxSpeed = 0.6;          ///< m/s (Nomad 200: about 0.6)
   double maxTurnRate = 1.0;       ///< rad/s
   double acceleration = 1.0;      ///< m/s^2
   double turnAcceleration = 3.0;  ///< rad/s^2
+  double slip = 0.03;             ///< relative error of the achieved speeds, standard deviation (0: none)
+  double slipTime = 2.0;          ///< seconds over which the slip error changes
+};
+
+/// Where a robot really starts: within `position` metres of its `start` and `heading` radians of
+/// its heading, drawn from the seed. Its odometry begins at `start`: the robot does not know the
+/// offset. All zero: it starts exactly at `start`.
+struct StartSpreadDef {
+  double position = 0.02;           ///< metres, at most
+  double heading = 0.5 * pi / 180;  ///< radians either way, at most
 };
 
 /// One robot: a disc (Nomad 200 style) with sonars, bumpers and odometry.
 struct RobotDef {
-  std::string name;       ///< may be empty; then "robot<i>"
-  Pose2 start;            ///< true starting pose
-  double radius = 0.23;   ///< body radius, metres
-  double density = 50.0;  ///< kg/m^2 (only matters when robots push each other)
-  int bumpers = 8;        ///< bumper sectors around the body, counter-clockwise from the front
-  SonarDef sonar;         ///< sonar ring
-  OdometryDef odometry;   ///< dead-reckoning noise
-  DriveDef drive;         ///< speed and acceleration limits
+  std::string name;            ///< may be empty; then "robot<i>"
+  Pose2 start;                 ///< starting pose, as the robot believes it (see startSpread)
+  StartSpreadDef startSpread;  ///< how far the true start may lie from `start`
+  double radius = 0.23;        ///< body radius, metres
+  double density = 50.0;       ///< kg/m^2 (only matters when robots push each other)
+  int bumpers = 8;             ///< bumper sectors around the body, counter-clockwise from the front
+  SonarDef sonar;              ///< sonar ring
+  OdometryDef odometry;        ///< dead-reckoning noise
+  DriveDef drive;              ///< speed and acceleration limits
 };
 
 /// A scripted key press, delivered in the sensor frame of the first step at or after `time`.

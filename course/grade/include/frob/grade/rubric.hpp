@@ -79,7 +79,7 @@ struct Check {
   Visibility visibility = Visibility::Visible;
   std::vector<WorldRef> worlds;  ///< the worlds it names (worldsOf() adds the generated ones)
   std::optional<GeneratedWorlds> generated;
-  std::vector<std::uint64_t> seeds;  ///< simulation seeds; empty: each world's own
+  std::vector<std::uint64_t> seeds;  ///< simulation seeds; empty: one drawn (see seedsOf)
   int secretSeeds = 0;               ///< more seeds, drawn from the instructor's secret
   double seconds = 60.0;             ///< simulated seconds of each run
   std::vector<Criterion> criteria;
@@ -107,7 +107,8 @@ struct Rubric {
 /// draws (0, 1, 2, ...) in order. A check without an entry keeps the first `GeneratedWorlds::secret`.
 using KeptWorlds = std::map<std::string, std::vector<int>>;
 
-/// The seeds a check runs with: its own, then `secretSeeds` derived from `secret` and the check's name.
+/// The seeds a check runs with: its own, then `secretSeeds` derived from `secret` and the check's
+/// name; when that makes none, one drawn from the check's name (and `secret` unless it is visible).
 [[nodiscard]] std::vector<std::uint64_t> seedsOf(const Check& check, const std::string& secret);
 /// The generator's seed of a check's draw `k` from the secret.
 [[nodiscard]] std::uint64_t drawnWorldSeed(const Check& check, const std::string& secret, int k);
