@@ -23,6 +23,7 @@ constexpr const char* kAssignment = "bug";
 const std::string kReaches = "reaches the goal";
 const std::string kBound = "within the BUG1 bound";
 const std::string kHidden = "hidden fields";
+const std::string kHiddenBound = "hidden fields, within the BUG1 bound";
 
 std::string readFile(const std::filesystem::path& file) {
   std::ifstream in(file);
@@ -36,13 +37,13 @@ TEST(BugAssignment, RubricHasTheChecksTheHandoutDescribes) {
   ASSERT_TRUE(rubric.ok()) << rubric.error();
   Scores points;
   for (const course::Check& c : rubric.value().checks) points[c.name] = c.points;
-  EXPECT_EQ(points, (Scores{{kReaches, 5}, {kBound, 3}, {kHidden, 4}}));
-  const course::Check& hidden = rubric.value().checks.back();
-  EXPECT_EQ(hidden.name, kHidden);
-  EXPECT_EQ(hidden.visibility, course::Visibility::Hidden);
-  ASSERT_TRUE(hidden.generated.has_value());
-  EXPECT_EQ(hidden.generated->kind, worlds::WorldKind::Obstacles);
-  EXPECT_EQ(hidden.generated->secret, 4);
+  EXPECT_EQ(points, (Scores{{kReaches, 5}, {kBound, 3}, {kHidden, 2}, {kHiddenBound, 2}}));
+  for (const course::Check& hidden : {rubric.value().checks[2], rubric.value().checks[3]}) {
+    EXPECT_EQ(hidden.visibility, course::Visibility::Hidden);
+    ASSERT_TRUE(hidden.generated.has_value());
+    EXPECT_EQ(hidden.generated->kind, worlds::WorldKind::Obstacles);
+    EXPECT_EQ(hidden.generated->secret, 4);
+  }
 }
 
 // The visible worlds are generated obstacle fields, exactly as `frob world generate obstacles
@@ -63,7 +64,7 @@ TEST(BugAssignment, VisibleWorldsAreGeneratedFields) {
 
 TEST(BugAssignment, SolutionGetsFullMarksOnEveryCheck) {
   course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "solution.cpp"));
-  ASSERT_EQ(g.checks.size(), 3u);
+  ASSERT_EQ(g.checks.size(), 4u);
   for (const course::CheckGrade& c : g.checks) EXPECT_EQ(c.score, c.points) << c.name << ":\n" << c.output();
   EXPECT_EQ(g.score(), 12.0);
 }
@@ -72,7 +73,7 @@ TEST(BugAssignment, SolutionGetsFullMarksOnEveryCheck) {
 // nothing yet.
 TEST(BugAssignment, StarterScoresNothing) {
   course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "starter.cpp"));
-  EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}}));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}, {kHiddenBound, 0}}));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 872466220: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 872466220: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kBound), HasSubstr("so its path cannot be measured"));
@@ -84,7 +85,7 @@ TEST(BugAssignment, StarterScoresNothing) {
 // fields no leg fails and it does as well as the solution.
 TEST(BugAssignment, ForgettingTaskCatchStopsAtTheFirstError) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "no_task_catch.cpp"));
-  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 3}, {kHidden, 3}}));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 3}, {kHidden, 1.5}, {kHiddenBound, 2}}));
   const std::string why = reasons(g, kReaches);
   EXPECT_THAT(why, HasSubstr("in worlds/trap.toml, seed 872466220: the controller failed"));
   EXPECT_THAT(why, HasSubstr("going round one obstacle took more than 30 s"));
@@ -95,29 +96,37 @@ TEST(BugAssignment, ForgettingTaskCatchStopsAtTheFirstError) {
 
 // Example 06 pasted onto the starter (goal corrected): the paper's BUG goes all the way round every
 // obstacle and on to the closest point. In the trap field that takes longer than the run; in the
-// open field and three hidden ones it arrives, late and far past the BUG1 bound.
+// open field and three of the hidden ones it arrives, late and (all but once) far past the BUG1
+// bound.
 TEST(BugAssignment, ThePapersBugCirclesForeverAndDrivesPastTheBound) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "circles_forever.cpp"));
-  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1}}));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1.5}, {kHiddenBound, 0.5}}));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 872466220: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kBound), HasSubstr("in worlds/field.toml, seed 402455347: drove 42.32 m to goal; the BUG1 bound is 33.60 m"));
-  const std::string hidden = reasons(g, kHidden);
-  EXPECT_THAT(hidden, HasSubstr("hidden world 1"));
-  EXPECT_THAT(hidden, HasSubstr("the BUG1 bound is"));
-  EXPECT_THAT(hidden, Not(HasSubstr("hidden world 2")));
+  EXPECT_THAT(reasons(g, kHidden), HasSubstr("in hidden world 4: never came within 0.30 m of goal"));
+  EXPECT_THAT(reasons(g, kHiddenBound), HasSubstr("the BUG1 bound is"));
+}
+
+// No BUG at all: it steers at the goal by odometry and pushes along whatever is in the way. In the
+// open field it slides round two obstacles to the goal on a path well inside the BUG1 bound: only
+// the bound check's "touching nothing" fails it (before, it passed). Two of the hidden fields let it through.
+TEST(BugAssignment, SlidingAlongObstaclesIsNoPathRoundThem) {
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "slides_along.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1}, {kHiddenBound, 0}}));
+  EXPECT_THAT(reasons(g, kBound), HasSubstr("in worlds/field.toml, seed 402455347: touched a wall at 3.3 s"));
 }
 
 // Course example 6 copied as it is drives to the reference world's goal (13, 13), not the
 // generated fields' (13.5, 13.5): it gets nothing.
 TEST(BugAssignment, CopiedExampleSixGetsNothing) {
   course::Grade g = gradeFile(kAssignment, example("06_bug.cpp"));
-  EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}}));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}, {kHiddenBound, 0}}));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 872466220: never came within 0.30 m of goal (closest 0.87 m"));
   EXPECT_THAT(reasons(g, kBound), HasSubstr("so its path cannot be measured"));
 }
 
 // Example 6 with its goal corrected to (13.5, 13.5) is still not an answer: it never gets out of
-// the trap field in time, exceeds the BUG1 bound in the open field, and fails every hidden field.
+// the trap field in time, exceeds the BUG1 bound in the open field and in every hidden field (it reaches the goal in two).
 TEST(BugAssignment, ExampleSixWithTheGoalCorrectedDoesNotPass) {
   std::string source = readFile(example("06_bug.cpp"));
   const std::string goal = "Point2 goal{13, 13};";
@@ -129,11 +138,11 @@ TEST(BugAssignment, ExampleSixWithTheGoalCorrectedDoesNotPass) {
   std::ofstream(dir / "example06_goal_corrected.cpp") << source;
 
   course::Grade g = gradeFile(kAssignment, dir / "example06_goal_corrected.cpp");
-  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 0}}));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1}, {kHiddenBound, 0}}));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 872466220: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kBound), HasSubstr("drove 43.23 m to goal; the BUG1 bound is 33.60 m"));
   for (const char* world : {"hidden world 1", "hidden world 2", "hidden world 3", "hidden world 4"}) {
-    EXPECT_THAT(reasons(g, kHidden), HasSubstr(world));
+    EXPECT_THAT(reasons(g, kHiddenBound), HasSubstr(world));
   }
 }
 

@@ -20,6 +20,7 @@
 #include <optional>
 #include <regex>
 #include <sstream>
+#include <tuple>
 
 namespace frob::course {
 
@@ -232,7 +233,7 @@ std::string fileText(const fs::path& file) {
   return text.str();
 }
 
-// The cache of fairHiddenWorlds: "reference <hash of its source> simulation <fingerprint>", then
+// The cache of fairHiddenWorlds: "reference <hash> starter <hash> simulation <fingerprint>", then
 // "<draw> <check>" lines.
 std::optional<KeptWorlds> readKept(const fs::path& file, const std::string& reference) {
   std::ifstream in(file);
@@ -273,15 +274,22 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
   if (def.secret.empty() || rubric.reference.empty() || !rubric.needsSecret()) return KeptWorlds{};
   const fs::path cache = keptWorldsFile(def);
   if (!fs::is_regular_file(rubric.reference)) return readKept(cache, "").value_or(KeptWorlds{});
-  // Kept for this reference and this simulation: a change of either may change which draws it passes.
-  const std::string reference = format("%016" PRIx64 " simulation %016" PRIx64,
-                                       worlds::Fnv1a().add(std::string_view(fileText(rubric.reference))).value(), worlds::simulationFingerprint());
+  // Kept for this reference, starter and simulation: a change of any may change which draws are fair.
+  const auto hashOf = [](const fs::path& file) { return file.empty() ? 0 : worlds::Fnv1a().add(std::string_view(fileText(file))).value(); };
+  const std::string reference = format("%016" PRIx64 " starter %016" PRIx64 " simulation %016" PRIx64, hashOf(rubric.reference),
+                                       hashOf(rubric.starter), worlds::simulationFingerprint());
   if (std::optional<KeptWorlds> known = readKept(cache, reference)) return *known;
 
   std::string messages;
   Result<CompiledController> compiled = compileSubmission(rubric.reference, def.compiler, &messages);
   if (!compiled)
     return Status::failure("the reference solution " + rubric.reference.string() + " does not compile: " + compiled.error() + "\n" + messages);
+  std::optional<CompiledController> starter;
+  if (!rubric.starter.empty()) {
+    Result<CompiledController> s = compileSubmission(rubric.starter, def.compiler, &messages);
+    if (!s) return Status::failure("the starter " + rubric.starter.string() + " does not compile: " + s.error() + "\n" + messages);
+    starter = s.value();
+  }
   KeptWorlds kept;
   std::vector<std::string> notes;
   GradeDef quiet = def;  // the reference's runs leave no logs
@@ -293,18 +301,21 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
     for (int k = 0; static_cast<int>(mine.size()) < wanted && k < tries; ++k) {
       const WorldRef ref{.name = "draw " + std::to_string(k), .generated = check.generated->kind, .worldSeed = drawnWorldSeed(check, def.secret, k)};
       const Result<worlds::WorldDef> world = loadWorldRef(ref);
-      bool passes = world.ok();
-      const std::vector<std::uint64_t> seeds = seedsOf(check, def.secret);
-      for (std::size_t s = 0; passes && s < seeds.size(); ++s) {
-        RunGrade r{.world = ref.name, .seed = seeds[s]};
-        runCheck(quiet, compiled.value(), check, ref, world.value(), r, notes);
-        passes = r.passed;
-      }
-      if (passes) mine.push_back(k);
+      // Fair: the reference passes every run, and the starter (no answer yet) fails one.
+      const auto passesAll = [&](const CompiledController& controller) {
+        for (std::uint64_t seed : seedsOf(check, def.secret)) {
+          RunGrade r{.world = ref.name, .seed = seed};
+          runCheck(quiet, controller, check, ref, world.value(), r, notes);
+          if (!r.passed) return false;
+        }
+        return true;
+      };
+      if (world.ok() && passesAll(compiled.value()) && !(starter && passesAll(*starter))) mine.push_back(k);
     }
     if (static_cast<int>(mine.size()) < wanted) {
-      return Status::failure("the reference solution passes only " + std::to_string(mine.size()) + " of the " + std::to_string(tries) +
-                             " worlds drawn for check '" + check.name + "' from this secret: choose another secret");
+      return Status::failure("only " + std::to_string(mine.size()) + " of the " + std::to_string(tries) + " worlds drawn for check '" + check.name +
+                             "' from this secret let the reference solution pass" + (starter ? " and the starter fail" : "") +
+                             ": choose another secret");
     }
   }
   writeKept(cache, reference, kept);
@@ -325,14 +336,16 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
   std::string messages;
   Result<CompiledController> compiled = compileSubmission(submission, def.compiler, &messages);
   if (!compiled) g.compileError = compiled.error() + (messages.empty() ? "" : "\n" + messages);
-  std::map<std::string, Result<worlds::WorldDef>> worldsByName;
+  // Loaded once per world, not per name: two checks' "hidden world 1" are different draws.
+  std::map<std::tuple<std::string, fs::path, int, std::uint64_t>, Result<worlds::WorldDef>> loaded;
   for (const Check& check : def.rubric.checks) {
     if (def.visibleOnly && check.visibility != Visibility::Visible) continue;
     CheckGrade cg{.name = check.name, .points = check.points, .visibility = check.visibility};
     const std::vector<std::uint64_t> seeds = seedsOf(check, def.secret);
     for (const WorldRef& w : worldsOf(check, def.secret, kept)) {
-      auto known = worldsByName.find(w.name);
-      if (known == worldsByName.end()) known = worldsByName.emplace(w.name, loadWorldRef(w)).first;
+      const auto key = std::tuple{w.generated ? std::string() : w.name, w.file, w.generated ? static_cast<int>(*w.generated) : -1, w.worldSeed};
+      auto known = loaded.find(key);
+      if (known == loaded.end()) known = loaded.emplace(key, loadWorldRef(w)).first;
       const Result<worlds::WorldDef>& world = known->second;
       for (std::uint64_t seed : seeds) {
         RunGrade& r = cg.runs.emplace_back(RunGrade{.world = w.name, .seed = seed});

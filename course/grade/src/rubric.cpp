@@ -48,14 +48,16 @@ class RubricReader : worlds::TomlReader {
 
  private:
   bool readRubric(const toml::table& root) {
-    if (!onlyKeys(root, "", {"title", "reference", "dt", "seconds", "check"})) return false;
+    if (!onlyKeys(root, "", {"title", "reference", "starter", "dt", "seconds", "check"})) return false;
     double seconds = 60.0;
-    std::string reference;
+    std::string reference, starter;
     if (!optString(root, "title", "title", rubric_.title) || !optNumber(root, "dt", "dt", rubric_.dt) ||
-        !optNumber(root, "seconds", "seconds", seconds) || !optString(root, "reference", "reference", reference)) {
+        !optNumber(root, "seconds", "seconds", seconds) || !optString(root, "reference", "reference", reference) ||
+        !optString(root, "starter", "starter", starter)) {
       return false;
     }
     if (!reference.empty()) rubric_.reference = dir_ / reference;  // may be missing: a Gradescope zip carries none
+    if (!starter.empty()) rubric_.starter = dir_ / starter;
     if (!(rubric_.dt > 0 && rubric_.dt <= 0.1)) return fail(*root.get("dt"), "dt", "must lie in (0, 0.1] seconds");
     if (!(seconds > 0)) return fail(*root.get("seconds"), "seconds", "must be positive");
     const toml::array* checks = root.get("check") ? root.get("check")->as_array() : nullptr;

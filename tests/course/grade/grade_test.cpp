@@ -248,7 +248,38 @@ TEST_F(Grading, HiddenWorldsAreTheFirstDrawsTheReferencePasses) {
   fs::rename(dir_ / "still.cpp", dir_ / "assignment" / "still.cpp");
   def.rubric = rubricWith(0.01);
   EXPECT_EQ(fairHiddenWorlds(def).error(),
-            "the reference solution passes only 0 of the 30 worlds drawn for check 'near the room' from this secret: choose another secret");
+            "only 0 of the 30 worlds drawn for check 'near the room' from this secret let the reference solution pass: choose another secret");
+
+  // Nor may a hidden world let the starter pass: one that stands still as well passes every draw
+  // the reference does, so none is kept.
+  def.rubric = rubricWith(2.35);
+  def.rubric.starter = dir_ / "assignment" / "still.cpp";
+  EXPECT_EQ(fairHiddenWorlds(def).error(),
+            "only 0 of the 30 worlds drawn for check 'near the room' from this secret let the reference "
+            "solution pass and the starter fail: choose another secret");
+}
+
+// Two checks that draw worlds of one kind from the secret run each in its own draws: one check's
+// "hidden world 1" is not the other's (they were once loaded by name, so the second check ran in
+// the first one's worlds, not in those the reference was checked in). A robot standing still at
+// the drawn start leaves another trace in each.
+TEST_F(Grading, EachCheckRunsInItsOwnDraws) {
+  std::ofstream(dir_ / "assignment" / "still.cpp") << "#include <frob/frob.hpp>\nusing namespace frob;\nBehavior<Wheels> still(const Robot&) { "
+                                                      "return wheels(0.0, 0.0); }\nFROB_CONTROLLER(still)\n";
+  std::ofstream(dir_ / "assignment" / "two.toml")
+      << "title = \"Two\"\nseconds = 0.5\n"
+         "[[check]]\nname = \"first\"\nvisibility = \"hidden\"\nseeds = [1]\n"
+         "generated = { kind = \"furnished_room\", secret = 1 }\ngoal = { point = \"room\", within = 100 }\n"
+         "[[check]]\nname = \"second\"\nvisibility = \"hidden\"\nseeds = [1]\n"
+         "generated = { kind = \"furnished_room\", secret = 1 }\ngoal = { point = \"room\", within = 100 }\n";
+  GradeDef def = def_;
+  def.rubric = loadRubric(dir_ / "assignment" / "two.toml").value();
+  const Grade g = grade(def, dir_ / "assignment" / "still.cpp");
+  ASSERT_EQ(g.checks.size(), 2u);
+  ASSERT_EQ(g.checks[0].runs.size(), 1u);
+  ASSERT_EQ(g.checks[1].runs.size(), 1u);
+  EXPECT_EQ(g.checks[0].runs[0].world, g.checks[1].runs[0].world);                    // the same name...
+  EXPECT_NE(g.checks[0].runs[0].trajectoryHash, g.checks[1].runs[0].trajectoryHash);  // ...another world
 }
 
 // A log is signed with the secret: a student who edits a failing log (to stop early and report what

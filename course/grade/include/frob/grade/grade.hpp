@@ -34,9 +34,11 @@ struct GradeDef {
 
 /// The hidden worlds no student can find unfair: for each check that draws worlds from the secret,
 /// the first `GeneratedWorlds::secret` draws in which the rubric's reference solution meets every
-/// criterion (at most ten times as many are tried). Computed once per rubric, secret and reference
-/// source, and kept in the controller cache (where a reference solution is absent, as in a
-/// Gradescope zip, what the cache holds is used). None without a secret, a reference, or a cache.
+/// criterion and its starter (when it names one) fails one, so that no hidden world is passed
+/// without the skill (at most ten times as many are tried). Computed once per rubric, secret,
+/// reference and starter source and simulation, and kept in the controller cache (where a reference
+/// solution is absent, as in a Gradescope zip, what the cache holds is used). None without a
+/// secret, a reference, or a cache.
 [[nodiscard]] Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def);
 /// Where fairHiddenWorlds keeps what it found for `def`'s rubric and secret, under the controller cache.
 [[nodiscard]] std::filesystem::path keptWorldsFile(const GradeDef& def);

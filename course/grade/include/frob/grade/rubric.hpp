@@ -91,6 +91,7 @@ struct Rubric {
   std::string title;
   std::filesystem::path file;       ///< the rubric file
   std::filesystem::path reference;  ///< the reference solution, which every hidden world must let pass; empty: none
+  std::filesystem::path starter;    ///< the starter handed out, which no hidden world may let pass; empty: none
   double dt = 0.01;                 ///< the simulation step of every run
   std::vector<Check> checks;
   /// Total points.
