@@ -20,7 +20,6 @@
 #include <optional>
 #include <regex>
 #include <sstream>
-#include <tuple>
 
 namespace frob::course {
 
@@ -337,13 +336,13 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
   Result<CompiledController> compiled = compileSubmission(submission, def.compiler, &messages);
   if (!compiled) g.compileError = compiled.error() + (messages.empty() ? "" : "\n" + messages);
   // Loaded once per world, not per name: two checks' "hidden world 1" are different draws.
-  std::map<std::tuple<std::string, fs::path, int, std::uint64_t>, Result<worlds::WorldDef>> loaded;
+  std::map<std::string, Result<worlds::WorldDef>> loaded;
   for (const Check& check : def.rubric.checks) {
     if (def.visibleOnly && check.visibility != Visibility::Visible) continue;
     CheckGrade cg{.name = check.name, .points = check.points, .visibility = check.visibility};
     const std::vector<std::uint64_t> seeds = seedsOf(check, def.secret);
     for (const WorldRef& w : worldsOf(check, def.secret, kept)) {
-      const auto key = std::tuple{w.generated ? std::string() : w.name, w.file, w.generated ? static_cast<int>(*w.generated) : -1, w.worldSeed};
+      const std::string key = w.generated ? std::string(toString(*w.generated)) + " " + std::to_string(w.worldSeed) : w.name;
       auto known = loaded.find(key);
       if (known == loaded.end()) known = loaded.emplace(key, loadWorldRef(w)).first;
       const Result<worlds::WorldDef>& world = known->second;
