@@ -78,6 +78,15 @@ Event<Unit> blockedAhead(const Robot& r) {
                    min(sonar(r, 2), sonar(r, 14)) < 25_cm);
 }
 
+// How fast to move forward with `ahead` metres free in front: full speed from 70 cm, slowing to a
+// stop at 20 cm, and backing away nearer than 18 cm. A block's corner met at a slant is silent to
+// the sonars until the robot is on it (they read their shortest, 15 cm, then): turning on the spot
+// there would rub against it, so every turn on the spot backs away from something that near.
+Behavior<double> roomAhead(const Robot& r) {
+  return lift([](double ahead) { return ahead < 18_cm ? -0.2 : kSpeed * std::clamp((ahead - 20_cm) / 50_cm, 0.0, 1.0); },
+              min(sonar(r, 15), sonar(r, 0), sonar(r, 1)));
+}
+
 // ---- Step 2. driveTo (given) ------------------------------------------------------------------
 
 // Turn on the spot to face `goal`.
@@ -85,7 +94,7 @@ Task<Wheels> faceGoal(Point2 goal) {
   return mkTask([goal](const TaskState& ts) {
     const Robot& r = ts.robot();
     Behavior<double> error = wrapAngle(heading(goal - place(r)) - orientation(r));
-    return std::pair{wheels(0, clamp(2.0 * error, -1.0, 1.0)), predicate(abs(error) < 5_deg)};
+    return std::pair{wheels(min(roomAhead(r), 0.0), clamp(2.0 * error, -1.0, 1.0)), predicate(abs(error) < 5_deg)};
   });
 }
 
@@ -114,10 +123,10 @@ Task<Wheels, bool> driveTo(Point2 goal) {
     Behavior<double> error = wrapAngle(heading(goal - place(r)) - orientation(r));
     Behavior<double> left = distance(place(r), goal);
     auto forward = min(kSpeed, left) * max(cos(error), 0.0);  // slow down at the end
-    Event<DriveEnd> there = predicate(left < 5_cm).map([] { return DriveEnd{DriveEnd::there}; });
-    Event<DriveEnd> blocked = blockedAhead(r).map([] { return DriveEnd{DriveEnd::blocked}; });
+    Event<DriveEnd> there = predicate(left < 5_cm).as(DriveEnd{DriveEnd::there});
+    Event<DriveEnd> blocked = blockedAhead(r).as(DriveEnd{DriveEnd::blocked});
     Event<DriveEnd> bumped = bumper(r).map([](const BumperHit& h) { return DriveEnd{DriveEnd::bumped, h.angle}; });
-    return std::pair{wheels(forward, clamp(2.0 * error, -1.0, 1.0)), there | blocked | bumped};
+    return std::pair{wheels(forward, clamp(2.0 * error, -1.0, 1.0)), there | bumped | blocked};
   });
   if (end.how == DriveEnd::bumped) co_await recoverFrom(end.angle);
   co_return end.how == DriveEnd::there;
@@ -130,7 +139,7 @@ Task<Wheels> turnToWall() {
   return mkTask([](const TaskState& ts) {
     Behavior<Wall> wall = wallOnLeft(ts.robot());
     auto onLeft = lift([](const Wall& w) { return w.distance < 1.0 && w.direction > 60_deg; }, wall);
-    return std::pair{wheels(0, -0.8), predicate(onLeft) | after(2_s)};
+    return std::pair{wheels(min(roomAhead(ts.robot()), 0.0), -0.8), predicate(onLeft) | after(2_s)};
   });
 }
 
@@ -146,10 +155,10 @@ Task<Wheels> alongWall() {
     double m = kSpeed * std::sin(kThetaMax);
     auto rerror = clamp(kSetpoint - d, -m, m);  // wanted speed away from the wall
     auto away = -kSpeed * cos(normal);          // speed away from the wall now
-    auto turn = clamp(-3.0 * (rerror - away), -1.0, 1.0);
+    // In a corner (a wall ahead, nearer than 25 cm), turn right towards the next wall to follow.
     auto ahead = min(sonar(r, 15), sonar(r, 0), sonar(r, 1));
-    auto forward = kSpeed * clamp((ahead - 20_cm) / 50_cm, 0.0, 1.0);
-    return std::pair{wheels(forward, turn), predicate(d > 1_m)};
+    auto turn = lift([](double t, double a) { return a < 25_cm ? -1.0 : t; }, clamp(-3.0 * (rerror - away), -1.0, 1.0), ahead);
+    return std::pair{wheels(roomAhead(r), turn), predicate(d > 1_m)};
   });
 }
 
@@ -162,7 +171,7 @@ Task<Wheels> roundCorner() {
     Behavior<double> d = wallOnLeft(r).map(&Wall::distance);
     double radius = kSetpoint + r.spec().radius;
     return std::tuple{wheels(kSpeed, kSpeed / radius), predicate(d < 80_cm),
-                      after(8_s).map([] { return RoboErr("followWall: the wall is lost"); })};
+                      after(8_s).as(RoboErr("followWall: the wall is lost"))};
   });
 }
 

@@ -461,6 +461,10 @@ Pose2 Simulation::odometry(std::size_t i) const {
   return impl_->robots.at(i).odometry;
 }
 std::size_t Simulation::invalidCommands(std::size_t i) const { return impl_->robots.at(i).invalid; }
+bool Simulation::touching(std::size_t i) const {
+  const std::vector<int>& pressed = impl_->robots.at(i).pressed;
+  return std::any_of(pressed.begin(), pressed.end(), [](int n) { return n > 0; });
+}
 std::int64_t Simulation::stepCount() const { return impl_->steps; }
 double Simulation::time() const { return static_cast<double>(impl_->steps) * impl_->options.dt; }
 double Simulation::dt() const { return impl_->options.dt; }

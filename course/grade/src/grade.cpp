@@ -58,6 +58,10 @@ Ran drive(worlds::Run& run, const worlds::WorldDef& world, std::int64_t steps) {
       Track& t = ran.record.robots[i];
       const SensorFrame& frame = sim.frame(i);
       for (std::size_t b = 0; b < frame.bumps.size(); ++b) t.contacts.emplace_back(sensedAt, t.path.back());
+      if (sim.touching(i)) {  // touching through this step: extend the span that ended at its start, or begin one
+        if (t.touching.empty() || t.touching.back().second < sensedAt) t.touching.emplace_back(sensedAt, sim.time());
+        t.touching.back().second = sim.time();
+      }
       t.path.push_back(sim.truePose(i).position);
       t.heading.push_back(sim.truePose(i).heading);
       const double front = frame.sonar.empty() ? sim.spec(i).sonarMaxRange : frame.sonar[0];  // sonar 0 looks ahead
@@ -273,10 +277,17 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
   if (def.secret.empty() || rubric.reference.empty() || !rubric.needsSecret()) return KeptWorlds{};
   const fs::path cache = keptWorldsFile(def);
   if (!fs::is_regular_file(rubric.reference)) return readKept(cache, "").value_or(KeptWorlds{});
-  // Kept for this reference, starter and simulation: a change of any may change which draws are fair.
+  // Kept for this reference, starter, simulation and generator (each check's first draw stands for
+  // it): a change of any may change which draws are fair.
   const auto hashOf = [](const fs::path& file) { return file.empty() ? 0 : worlds::Fnv1a().add(std::string_view(fileText(file))).value(); };
-  const std::string reference = format("%016" PRIx64 " starter %016" PRIx64 " simulation %016" PRIx64, hashOf(rubric.reference),
-                                       hashOf(rubric.starter), worlds::simulationFingerprint());
+  worlds::Fnv1a generated;
+  for (const Check& check : rubric.checks) {
+    if (!check.generated || check.generated->secret == 0) continue;
+    const Result<worlds::WorldDef> first = worlds::generateWorld(check.generated->kind, drawnWorldSeed(check, def.secret, 0));
+    generated.add(std::string_view(first ? worlds::toToml(first.value()) : first.error()));
+  }
+  const std::string reference = format("%016" PRIx64 " starter %016" PRIx64 " simulation %016" PRIx64 " worlds %016" PRIx64, hashOf(rubric.reference),
+                                       hashOf(rubric.starter), worlds::simulationFingerprint(), generated.value());
   if (std::optional<KeptWorlds> known = readKept(cache, reference)) return *known;
 
   std::string messages;

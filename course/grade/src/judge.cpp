@@ -217,13 +217,26 @@ class Judge {
   }
 
   std::string collisions(const Track& t) {
-    if (static_cast<int>(t.contacts.size()) <= c_.count) return "";
+    if (static_cast<int>(t.contacts.size()) <= c_.count) return c_.seconds > 0 ? touchingTime(t) : "";
     const auto& [when, where] = t.contacts[static_cast<std::size_t>(c_.count)];
     const worlds::WallIndex walls(run_.walls, run_.size, 1.0);
     const char* what = walls.distance(where) <= t.radius + 0.05 ? "a wall" : "another robot";
     std::string why = format("touched %s at %s at %s", what, secondsText(when).c_str(), at(where).c_str());
     if (c_.count > 0 || t.contacts.size() > 1) why += format(" (%zu contacts; %d allowed)", t.contacts.size(), c_.count);
     return why;
+  }
+
+  // Touching for longer than `seconds` in all: a path that pushes along a wall, not round it.
+  std::string touchingTime(const Track& t) {
+    double total = 0.0;
+    const std::pair<double, double>* longest = nullptr;
+    for (const auto& span : t.touching) {
+      total += span.second - span.first;
+      if (longest == nullptr || span.second - span.first > longest->second - longest->first) longest = &span;
+    }
+    if (total <= c_.seconds + 1e-9) return "";
+    return format("pressed its bumpers for %s in all, the longest touch from %s to %s; at most %s allowed", secondsText(total).c_str(),
+                  secondsText(longest->first).c_str(), secondsText(longest->second).c_str(), secondsText(c_.seconds).c_str());
   }
 
   std::string clearance(const Track& t) {

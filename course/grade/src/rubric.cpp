@@ -26,7 +26,7 @@ const CriterionSpec kCriteria[] = {
     {"goal", Kind::Goal, {"within", "by", "point"}},
     {"waypoints", Kind::Waypoints, {"points", "within", "by"}},
     {"stopped", Kind::Stopped, {"speed", "after_key", "after_contact", "within"}},
-    {"collisions", Kind::Collisions, {"max"}},
+    {"collisions", Kind::Collisions, {"max", "seconds"}},
     {"clearance", Kind::Clearance, {"min"}},
     {"wall_distance", Kind::WallDistance, {"target", "tolerance", "fraction", "after", "side"}},
     {"coverage", Kind::Coverage, {"fraction", "cell"}},
@@ -208,7 +208,7 @@ class RubricReader : worlds::TomlReader {
       case Kind::Stopped:
         return optNumber(t, "speed", field + "speed", c.speed) && readEvent(t, field, c) && optNumber(t, "within", field + "within", c.within);
       case Kind::Collisions:
-        return optInteger(t, "max", field + "max", 0, 1'000'000, c.count);
+        return optInteger(t, "max", field + "max", 0, 1'000'000, c.count) && (t.get("seconds") == nullptr || need(t, "seconds", field, c.seconds));
       case Kind::Clearance:
         return need(t, "min", field, c.distance, true);
       case Kind::WallDistance:

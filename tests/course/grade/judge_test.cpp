@@ -120,6 +120,21 @@ TEST(Judge, CollisionsNameTheFirstOneOverTheLimit) {
   EXPECT_EQ(run({.kind = Kind::Collisions, .count = 0}, t).reason, "touched another robot at 3.0 s at (3.0, 1.5)");
 }
 
+// A bump at a corner the sonars cannot hear is brief; pushing along an obstacle is not.
+TEST(Judge, CollisionsMayCapTheTimeSpentTouching) {
+  Track t = straight(1, 1.5, 0.5, 2);
+  t.contacts = {{10.0, {3.1, 2.75}}, {20.0, {4.0, 2.75}}};
+  t.touching = {{10.0, 10.5}, {20.0, 22.0}};
+  const Criterion brief{.kind = Kind::Collisions, .seconds = 2.5, .count = 2};
+  EXPECT_TRUE(run(brief, t).passed);
+  EXPECT_EQ(run({.kind = Kind::Collisions, .seconds = 2.0, .count = 2}, t).reason,
+            "pressed its bumpers for 2.5 s in all, the longest touch from 20.0 s to 22.0 s; at most 2.0 s allowed");
+  EXPECT_EQ(run({.kind = Kind::Collisions, .seconds = 2.5, .count = 1}, t).reason, "touched a wall at 20.0 s at (4.0, 2.8) (2 contacts; 1 allowed)");
+  t.touching.back().second = 30.0;
+  EXPECT_FALSE(run(brief, t).passed);
+  EXPECT_TRUE(run({.kind = Kind::Collisions, .count = 2}, t).passed) << "no time cap unless one is given";
+}
+
 TEST(Judge, ClearanceIsMeasuredFromTheBody) {
   // Centre 0.30 m from the bottom wall, body radius 0.23: 0.07 m of clearance.
   const Criterion c{.kind = Kind::Clearance, .distance = 0.1};

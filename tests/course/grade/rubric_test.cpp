@@ -133,6 +133,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "path_ratio, bug1_bound, returns)"},
         Mistake{"within = 0.2, by", "withn = 0.2, by", "9: check[0].goal.withn: unknown key (expected one of within, by, point)"},
         Mistake{"within = 0.2", "within = -1", "9: check[0].goal.within: must be positive"},
+        Mistake{"collisions = { max = 0 }", "collisions = { max = 2, seconds = 0 }", "10: check[0].collisions.seconds: must be positive"},
         Mistake{"collisions = { max = 0 }", "wall_distance = { target = 0.4, tolerance = 0.1, fraction = 0.5, side = \"up\" }",
                 "10: check[0].wall_distance.side: expected \"right\" or \"left\""},
         Mistake{"\"worlds/room.toml\"", "\"worlds/missing.toml\"",

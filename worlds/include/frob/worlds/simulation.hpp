@@ -72,6 +72,8 @@ class Simulation {
   [[nodiscard]] Pose2 odometry(std::size_t i) const;
   /// Commands to robot `i` that were not finite so far.
   [[nodiscard]] std::size_t invalidCommands(std::size_t i) const;
+  /// Whether anything presses one of robot `i`'s bumpers now (after the last step).
+  [[nodiscard]] bool touching(std::size_t i) const;
 
   /// Steps taken so far.
   [[nodiscard]] std::int64_t stepCount() const;

@@ -19,6 +19,7 @@ struct Track {
   std::vector<Point2> path;                         ///< true position at t = k × dt, k = 0, 1, ...
   std::vector<double> heading;                      ///< true heading at the same instants, radians (may be empty: then unknown)
   std::vector<std::pair<double, Point2>> contacts;  ///< bumper contacts: when (s) and where the robot was
+  std::vector<std::pair<double, double>> touching;  ///< spans of time (s) while something pressed its bumpers
   std::string failure;                              ///< why its controller failed; "" when it did not
   std::optional<std::string> returned;              ///< its top task's returned value, as its controller reports it
   double returnedAt = 0.0;                          ///< when the grader heard of it (trusted time), s
