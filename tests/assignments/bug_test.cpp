@@ -50,7 +50,7 @@ TEST(BugAssignment, RubricHasTheChecksTheHandoutDescribes) {
 // --seed N` writes them (plus one comment line saying so), so the handout's promises hold for them:
 // start (1.5, 1.5), goal (13.5, 13.5), a way between.
 TEST(BugAssignment, VisibleWorldsAreGeneratedFields) {
-  for (const auto& [file, seed] : {std::pair{"worlds/trap.toml", 70}, std::pair{"worlds/field.toml", 19}}) {
+  for (const auto& [file, seed] : {std::pair{"worlds/trap.toml", 52}, std::pair{"worlds/field.toml", 19}}) {
     Result<worlds::WorldDef> made = worlds::generateWorld(worlds::WorldKind::Obstacles, seed);
     ASSERT_TRUE(made.ok()) << made.error();
     std::string text = readFile(assignmentFile(kAssignment, file));
@@ -80,29 +80,26 @@ TEST(BugAssignment, StarterScoresNothing) {
   EXPECT_THAT(reasons(g, kHidden), HasSubstr("never came within 0.30 m of goal"));
 }
 
-// Without taskCatch, the first error ends the controller. In the trap field (and in one hidden
-// field) going round takes longer than its 30 s limit, and nothing restarts BUG; in the other
-// fields no leg fails and it does as well as the solution.
+// Without taskCatch, the first error ends the controller. In the trap field going round takes
+// longer than its 30 s limit, and nothing restarts BUG; in the other fields no leg fails and it
+// does as well as the solution.
 TEST(BugAssignment, ForgettingTaskCatchStopsAtTheFirstError) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "no_task_catch.cpp"));
-  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 3}, {kHidden, 1.5}, {kHiddenBound, 2}}));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 3}, {kHidden, 2}, {kHiddenBound, 2}}));
   const std::string why = reasons(g, kReaches);
   EXPECT_THAT(why, HasSubstr("in worlds/trap.toml, seed 872466220: the controller failed"));
   EXPECT_THAT(why, HasSubstr("going round one obstacle took more than 30 s"));
   EXPECT_THAT(why, Not(HasSubstr("field.toml")));
-  EXPECT_THAT(reasons(g, kHidden), HasSubstr("hidden world 4"));
-  EXPECT_THAT(reasons(g, kHidden), HasSubstr("the controller failed"));
 }
 
 // Example 06 pasted onto the starter (goal corrected): the paper's BUG goes all the way round every
 // obstacle and on to the closest point. In the trap field that takes longer than the run; in the
-// open field and three of the hidden ones it arrives, late and (all but once) far past the BUG1
-// bound.
+// open field and two of the hidden ones it arrives, late and (all but once) past the BUG1 bound.
 TEST(BugAssignment, ThePapersBugCirclesForeverAndDrivesPastTheBound) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "circles_forever.cpp"));
-  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1.5}, {kHiddenBound, 0.5}}));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1}, {kHiddenBound, 0.5}}));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 872466220: never came within 0.30 m of goal"));
-  EXPECT_THAT(reasons(g, kBound), HasSubstr("in worlds/field.toml, seed 402455347: drove 42.32 m to goal; the BUG1 bound is 33.60 m"));
+  EXPECT_THAT(reasons(g, kBound), HasSubstr("in worlds/field.toml, seed 402455347: drove 31.42 m to goal; the BUG1 bound is 30.92 m"));
   EXPECT_THAT(reasons(g, kHidden), HasSubstr("in hidden world 4: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kHiddenBound), HasSubstr("the BUG1 bound is"));
 }
@@ -110,12 +107,21 @@ TEST(BugAssignment, ThePapersBugCirclesForeverAndDrivesPastTheBound) {
 // No BUG at all: it steers at the goal by odometry and pushes along whatever is in the way. In the
 // open field it slides round two obstacles to the goal on a path well inside the BUG1 bound: only
 // the bound check's limit on touching fails it (before, it passed): a bump at a corner the sonars
-// cannot hear is brief, pushing along an obstacle is not. Two of the hidden fields let it through.
+// cannot hear is brief, pushing along an obstacle is not. Two of the hidden fields let it through,
+// one of them with so little pushing that it keeps within the bound's limit.
 TEST(BugAssignment, SlidingAlongObstaclesIsNoPathRoundThem) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "slides_along.cpp"));
-  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1}, {kHiddenBound, 0}}));
-  EXPECT_THAT(reasons(g, kBound), HasSubstr("in worlds/field.toml, seed 402455347: pressed its bumpers for 6.6 s in all, the longest touch from 28.0 "
-                                            "s to 30.6 s; at most 3.0 s allowed"));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1}, {kHiddenBound, 0.5}}));
+  EXPECT_THAT(reasons(g, kBound), HasSubstr("in worlds/field.toml, seed 402455347: pressed its bumpers for 4.9 s in all, the longest touch from 26.6 "
+                                            "s to 29.3 s; at most 3.0 s allowed"));
+}
+
+// No sensing: round the field's edge by odometry. The spurs beside the start cut both ways along
+// the walls, so it reaches no goal (before the spurs, it reached every one).
+TEST(BugAssignment, ABlindDriveAlongTheWallsReachesNoGoal) {
+  course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "drives_along_the_walls.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}, {kHiddenBound, 0}}));
+  EXPECT_THAT(reasons(g, kHidden), HasSubstr("in hidden world 1: never came within 0.30 m of goal"));
 }
 
 // Course example 6 copied as it is drives to the reference world's goal (13, 13), not the
@@ -123,12 +129,12 @@ TEST(BugAssignment, SlidingAlongObstaclesIsNoPathRoundThem) {
 TEST(BugAssignment, CopiedExampleSixGetsNothing) {
   course::Grade g = gradeFile(kAssignment, example("06_bug.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}, {kHiddenBound, 0}}));
-  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 872466220: never came within 0.30 m of goal (closest 0.87 m"));
+  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 872466220: never came within 0.30 m of goal (closest 5.76 m"));
   EXPECT_THAT(reasons(g, kBound), HasSubstr("so its path cannot be measured"));
 }
 
-// Example 6 with its goal corrected to (13.5, 13.5) is still not an answer: it never gets out of
-// the trap field in time, exceeds the BUG1 bound in the open field and in every hidden field (it reaches the goal in two).
+// Example 6 with its goal corrected to (13.5, 13.5) is still not an answer: it crosses neither
+// visible field in time, and in every hidden field it fails the BUG1 bound (it reaches the goal in three).
 TEST(BugAssignment, ExampleSixWithTheGoalCorrectedDoesNotPass) {
   std::string source = readFile(example("06_bug.cpp"));
   const std::string goal = "Point2 goal{13, 13};";
@@ -140,9 +146,10 @@ TEST(BugAssignment, ExampleSixWithTheGoalCorrectedDoesNotPass) {
   std::ofstream(dir / "example06_goal_corrected.cpp") << source;
 
   course::Grade g = gradeFile(kAssignment, dir / "example06_goal_corrected.cpp");
-  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1}, {kHiddenBound, 0}}));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 1.5}, {kHiddenBound, 0}}));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 872466220: never came within 0.30 m of goal"));
-  EXPECT_THAT(reasons(g, kBound), HasSubstr("drove 43.23 m to goal; the BUG1 bound is 33.60 m"));
+  EXPECT_THAT(reasons(g, kBound),
+              HasSubstr("in worlds/field.toml, seed 402455347: never came within 0.30 m of goal, so its path cannot be measured"));
   for (const char* world : {"hidden world 1", "hidden world 2", "hidden world 3", "hidden world 4"}) {
     EXPECT_THAT(reasons(g, kHiddenBound), HasSubstr(world));
   }

@@ -163,6 +163,17 @@ TEST(Generate, TheTrapStandsAlone) {
   EXPECT_GE(traps, 2);  // seeds 1 to 8 hold traps to check
 }
 
+// bug: no blind drive along the outer walls reaches the goal. The band within 1.3 m of them (the
+// obstacles keep 1 m clear) is cut on both ways round, from the start's corner to the goal's.
+TEST(Generate, AnObstacleFieldLeavesNoWayAlongTheWalls) {
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    WorldDef band = generateWorld(WorldKind::Obstacles, seed).value();
+    ASSERT_TRUE(reachable(band, band.robots[0].start.position, band.points[0].position)) << "seed " << seed;
+    band.walls.push_back(rectangleWall(Point2(1.3, 1.3), Point2(band.size.x() - 1.3, band.size.y() - 1.3)));
+    EXPECT_FALSE(reachable(band, Point2(0.6, 0.6), Point2(band.size.x() - 0.6, band.size.y() - 0.6))) << "seed " << seed;
+  }
+}
+
 TEST(Generate, AMazeIsPerfect) {
   // A perfect maze of C x R cells keeps all but C R - 1 of its inner walls: one way between any two cells.
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
@@ -176,7 +187,7 @@ TEST(Generate, TheSameKindAndSeedGiveTheSameWorld) {
   // Golden hashes of the files, for this generator on every platform (it uses no library
   // randomness and writes millimetres). A change to a generator changes them: say so in its commit.
   const std::pair<WorldKind, std::uint64_t> golden[] = {
-      {WorldKind::Obstacles, 0x507a6865ae68cffc}, {WorldKind::Maze, 0x8d6d1211bd3c238a},          {WorldKind::Rooms, 0x6c928bc0cf02103b},
+      {WorldKind::Obstacles, 0x2a9e3bdc9cc43da8}, {WorldKind::Maze, 0x8d6d1211bd3c238a},          {WorldKind::Rooms, 0x6c928bc0cf02103b},
       {WorldKind::Loop, 0xddba8c29c890a141},      {WorldKind::FurnishedRoom, 0x2bca8182ec9938e1}, {WorldKind::Outline, 0xe6392ee7c31b3288},
       {WorldKind::Lounge, 0x404342d5d8f7eb66},    {WorldKind::WarehouseKeys, 0x6d2d417e0ad8ad6f}, {WorldKind::WarehouseBox, 0xccf5985e0d6ab3eb},
       {WorldKind::Crossing, 0xa8ed5179b56a8f91}};

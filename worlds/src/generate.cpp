@@ -101,8 +101,8 @@ bool keepsPromises(const WorldDef& w) {
 }
 
 WorldDef obstacles(Random& r, std::uint64_t seed) {
-  WorldDef w =
-      base("Generated obstacle field: blocks, pillars and a trap between the start and the goal", {15, 15}, seed, {1.5, 1.5}, 45, {13.5, 13.5});
+  WorldDef w = base("Generated obstacle field: blocks, pillars, spurs from the walls and a trap between the start and the goal", {15, 15}, seed,
+                    {1.5, 1.5}, 45, {13.5, 13.5});
   const double apart = 2 * kRadius + 0.3;  // a wall follower passes between two obstacles without touching either
   std::vector<WallDef> placed;
   std::optional<WallDef> trapArea;  // the square an L spans: the trap stands alone, with nothing in it or near it
@@ -112,7 +112,16 @@ WorldDef obstacles(Random& r, std::uint64_t seed) {
     placed.push_back(polylineWall({c + Point2(-s, s), c + Point2(s, s), c + Point2(s, -s)}));
     trapArea = rectangleWall(Point2(c - Vec2(s, s)), Point2(c + Vec2(s, s)));
   }
-  const int count = r.integer(8, 14);
+  // Two spurs, from the left and the bottom wall beside the start, so that no blind drive along the
+  // walls reaches the goal. Only there: a BUG that keeps the obstacle on its left and meets a spur
+  // of a far wall on its way follows that wall away from the goal. They keep clear of the trap
+  // (3.7 m from the walls at least) and of the way out towards the goal.
+  for (const bool upright : {false, true}) {
+    const double along = r.uniform(3.0, 3.6), reach = r.uniform(1.6, 2.1), thick = r.uniform(0.3, 0.6);
+    placed.push_back(upright ? rectangleWall(Point2(along, 0), Point2(along + thick, reach))
+                             : rectangleWall(Point2(0, along), Point2(reach, along + thick)));
+  }
+  const int count = 2 + r.integer(8, 14);
   for (int attempt = 0; static_cast<int>(placed.size()) < count && attempt < 500; ++attempt) {
     const Point2 c(r.uniform(2.0, 13.0), r.uniform(2.0, 13.0));
     WallDef o;
@@ -122,7 +131,8 @@ WorldDef obstacles(Random& r, std::uint64_t seed) {
       const Vec2 half(r.uniform(0.25, 1.0), r.uniform(0.25, 1.0));
       o = rectangleWall(Point2(c - half), Point2(c + half));
     }
-    const bool clearOfEnds = distanceToWall(w.robots[0].start.position, o) > 1.0 && distanceToWall(w.points[0].position, o) > 1.0;
+    // 2.5 m round the start: the way out between the spurs stays open.
+    const bool clearOfEnds = distanceToWall(w.robots[0].start.position, o) > 2.5 && distanceToWall(w.points[0].position, o) > 1.0;
     const auto clearOf = [&](const WallDef& p, double gap) { return gapBetween(o, p) > gap && gapBetween(p, o) > gap; };
     const bool clearOfOthers = std::all_of(placed.begin(), placed.end(), [&](const WallDef& p) { return clearOf(p, apart); }) &&
                                (!trapArea || clearOf(*trapArea, kTrapClearance));
