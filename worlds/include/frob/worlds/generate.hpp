@@ -23,9 +23,9 @@ namespace frob::worlds {
 enum class WorldKind {
   Obstacles,  ///< 15 x 15 m, start (1.5, 1.5), goal (13.5, 13.5); blocks, pillars, an L-shaped trap and a spur from each wall beside the start (no
               ///< way along the walls), each two more than the robot's diameter apart (bug)
-  Maze,           ///< a perfect maze of 1.6 m cells; start and goal in opposite corner cells
-  Rooms,          ///< a floor of rooms joined by doorways at least 1.2 m wide, with furniture; the goal in the room farthest away
-  Loop,           ///< a corridor round a block, 1.2 to 2 m wide, with convex and concave corners; the goal halfway round
+  Maze,       ///< a perfect maze of 1.6 m cells; start and goal in opposite corner cells
+  Rooms,      ///< a floor of rooms joined by doorways at least 1.2 m wide, with furniture; the goal in the room farthest away
+  Loop,       ///< a corridor round a block, 1.2 to 2 m wide, with convex and concave corners; the goal halfway round
   FurnishedRoom,  ///< a 5.5-7.5 x 4.5-6.5 m room entered from a hall; point "room" 1 m inside; furniture 0.8 m from everything, or against the walls
                   ///< (wander)
   Outline,        ///< a closed room with alcoves and pillars (concave and convex corners); points a-f on the path 40 cm from the wall on the right
