@@ -8,6 +8,8 @@
 #include <sys/stat.h>
 #include <zip.h>
 
+#include <map>
+
 namespace frob::testing {
 namespace {
 
@@ -88,11 +90,13 @@ FROB_CONTROLLER(forge)
 )";
 
 // Runs the zip's run_autograder on `submission` in a fresh fake /autograder tree; its results.json.
-nlohmann::json runAutograder(const fs::path& zipFile, const std::string& name, const std::string& submission) {
+nlohmann::json runAutograder(const fs::path& zipFile, const std::string& name, const std::string& submission,
+                             const std::map<std::string, std::string>& beside = {}) {
   const fs::path root = freshFolder("autograder_" + name);
   const std::vector<std::string> names = unzip(zipFile, root / "source");
   fs::create_directories(root / "submission");
-  std::ofstream(root / "submission" / "controller.cpp") << submission;
+  if (!submission.empty()) std::ofstream(root / "submission" / "controller.cpp") << submission;
+  for (const auto& [file, text] : beside) std::ofstream(root / "submission" / file) << text;
   const std::string command = "FROB_AUTOGRADER_ROOT=" + root.string() + " FROB=" FROB_EXECUTABLE " bash " +
                               (root / "source" / "run_autograder").string() + " > " + (root / "log.txt").string() + " 2>&1";
   EXPECT_EQ(std::system(command.c_str()), 0) << readFile(root / "log.txt");
@@ -133,6 +137,18 @@ TEST(GradescopeZip, HoldsTheSourcesTheAssignmentAndTheScripts) {
   const nlohmann::json forged = runAutograder(dir / "autograder.zip", "forged", kForged);
   EXPECT_EQ(forged["score"], 0.0) << forged.dump(1);
   EXPECT_NE(forged["tests"][0]["output"].get<std::string>().find("ended its program with exit status 0"), std::string::npos) << forged.dump(1);
+
+  // The file with FROB_CONTROLLER is graded, whatever the other files are called; none or two: 0, and why.
+  const std::string helper = "// helpers, no controller (a comment may name FROB_CONTROLLER)\nint twice(int x) { return 2 * x; }\n";
+  const nlohmann::json helped = runAutograder(dir / "autograder.zip", "helped", kGood, {{"a_helpers.cpp", helper}});
+  EXPECT_EQ(helped["score"], 5.0) << helped.dump(1);
+  const nlohmann::json two = runAutograder(dir / "autograder.zip", "two", kGood, {{"another.cpp", kGood}});
+  EXPECT_EQ(two["score"], 0.0) << two.dump(1);
+  EXPECT_EQ(two["output"], "2 of the submitted .cpp files have a FROB_CONTROLLER(...) line: submit one controller.");
+  const nlohmann::json none = runAutograder(dir / "autograder.zip", "none", "", {{"a_helpers.cpp", helper}});
+  EXPECT_EQ(none["output"], "None of the submitted .cpp files has a FROB_CONTROLLER(...) line: submit the file that holds your controller.");
+  const nlohmann::json nothing = runAutograder(dir / "autograder.zip", "nothing", "");
+  EXPECT_EQ(nothing["output"], "No .cpp file was submitted: submit your controller file.");
 }
 
 }  // namespace

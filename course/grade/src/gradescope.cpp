@@ -42,11 +42,20 @@ set -u
 root="${FROB_AUTOGRADER_ROOT:-/autograder}"
 frob="${FROB:-$root/source/build/app/frob}"
 mkdir -p "$root/results"
-submission=$(find "$root/submission" -maxdepth 3 -name '*.cpp' -type f | sort | head -n 1)
-if [ -z "$submission" ]; then
-  printf '{"score": 0, "output": "No .cpp file was submitted: submit your controller file.", "tests": []}\n' > "$root/results/results.json"
+# The controller is the one .cpp file with a FROB_CONTROLLER(...) line; other files may lie beside it.
+mapfile -t controllers < <(find "$root/submission" -maxdepth 3 -name '*.cpp' -type f -exec grep -lE '^[[:space:]]*FROB_CONTROLLER[[:space:]]*\(' {} + | sort)
+if [ "${#controllers[@]}" -ne 1 ]; then
+  if [ -z "$(find "$root/submission" -maxdepth 3 -name '*.cpp' -type f)" ]; then
+    why="No .cpp file was submitted: submit your controller file."
+  elif [ "${#controllers[@]}" -eq 0 ]; then
+    why="None of the submitted .cpp files has a FROB_CONTROLLER(...) line: submit the file that holds your controller."
+  else
+    why="${#controllers[@]} of the submitted .cpp files have a FROB_CONTROLLER(...) line: submit one controller."
+  fi
+  printf '{"score": 0, "output": "%s", "tests": []}\n' "$why" > "$root/results/results.json"
   exit 0
 fi
+submission="${controllers[0]}"
 export FROB_CACHE_DIR="$root/cache"
 if [ -d "$root/source/cache" ]; then mkdir -p "$root/cache" && cp -r "$root/source/cache/." "$root/cache/"; fi  # the fair hidden worlds
 if [ -f "$root/source/secret.txt" ]; then export FROB_GRADE_SECRET="$(head -n 1 "$root/source/secret.txt")"; fi

@@ -233,7 +233,9 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
     cleanUp();
     const bool limited = WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL);
     return Status::failure("could not compile '" + source.string() + "' " +
-                           (limited ? "within the compiler's limits of time and memory" : "(the compiler's messages are above)"));
+                           (limited               ? "within the compiler's limits of time and memory"
+                            : messages != nullptr ? "(the compiler's messages follow)"  // the caller puts them after this line
+                                                  : "(the compiler's messages are above)"));
   }
   if (const std::uintmax_t bytes = fs::file_size(partial, ec); ec || bytes > kModuleBytes) {
     cleanUp();

@@ -57,7 +57,6 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
 
   if (Status s = impl->channel.create(kSetupBytes, std::max<std::uint32_t>(impl->def.robots, 1), kFrameBytes, kReplyBytes); !s)
     return failure(s.error());
-  impl->header().spinNanoseconds = impl->def.spinNanoseconds;
   impl->wake.reset(::eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK));
   if (!impl->wake.valid()) return failure(std::string("eventfd: ") + std::strerror(errno));
   Result<sandbox::Pipe> out = sandbox::openPipe("its output's pipe");

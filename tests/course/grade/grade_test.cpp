@@ -131,8 +131,12 @@ TEST_F(Grading, ACrashFailsEveryRunWithItsReasonAndNothingElse) {
 
 TEST_F(Grading, ACompileErrorScoresZeroAndSaysSo) {
   const Grade g = grade(def_, dir_ / "broken.cpp");
-  EXPECT_NE(g.compileError.find("could not compile"), std::string::npos) << g.compileError;
-  EXPECT_NE(g.compileError.find("broken.cpp:2:"), std::string::npos) << g.compileError;
+  // The reason first, then the compiler's messages, which it points to.
+  const std::size_t reason = g.compileError.find("could not compile"), where = g.compileError.find("broken.cpp:2:");
+  ASSERT_NE(reason, std::string::npos) << g.compileError;
+  ASSERT_NE(where, std::string::npos) << g.compileError;
+  EXPECT_LT(reason, where);
+  EXPECT_NE(g.compileError.find("(the compiler's messages follow)\n"), std::string::npos) << g.compileError;
   EXPECT_DOUBLE_EQ(g.score(), 0.0);
   EXPECT_EQ(g.checks[2].output(), "in hidden world 1: the submission did not compile\n");  // a hidden check names no world
 }

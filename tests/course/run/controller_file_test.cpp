@@ -76,7 +76,7 @@ TEST(ControllerFile, AnIncludeOutsideItsFolderCannotBeReadAndNoLineOfItIsShown) 
   std::string messages;
   Result<CompiledController> c = compileControllerFile(dir / "submission" / "steal.cpp", setupIn(dir), &messages);
   ASSERT_FALSE(c.ok());
-  EXPECT_EQ(c.error(), "could not compile '" + (dir / "submission" / "steal.cpp").string() + "' (the compiler's messages are above)");
+  EXPECT_EQ(c.error(), "could not compile '" + (dir / "submission" / "steal.cpp").string() + "' (the compiler's messages follow)");
   EXPECT_NE(messages.find("cannot open file '" + (dir / "instructor_key.txt").string() + "': Permission denied"), std::string::npos) << messages;
   EXPECT_EQ(messages.find("THE-SECRET-SOLUTION"), std::string::npos) << messages;
   EXPECT_EQ(messages.find("answer"), std::string::npos) << messages;
@@ -94,7 +94,7 @@ TEST(ControllerFile, ASubmissionCompilesAloneAndCannotReadAClassmatesFile) {
   ASSERT_TRUE(compileSubmission(dir / "alice.cpp", setupIn(dir), &messages).ok()) << messages;
   Result<CompiledController> mallory = compileSubmission(dir / "mallory.cpp", setupIn(dir), &messages);
   ASSERT_FALSE(mallory.ok());
-  EXPECT_EQ(mallory.error(), "could not compile '" + (dir / "mallory.cpp").string() + "' (the compiler's messages are above)");
+  EXPECT_EQ(mallory.error(), "could not compile '" + (dir / "mallory.cpp").string() + "' (the compiler's messages follow)");
   EXPECT_NE(messages.find("mallory.cpp:1:10: fatal error: 'alice.cpp' file not found"), std::string::npos) << messages;
   Result<CompiledController> eve = compileSubmission(dir / "eve.cpp", setupIn(dir), &messages);
   ASSERT_FALSE(eve.ok());

@@ -284,6 +284,22 @@ TEST(Sandbox, AControllerCannotTellAFilmedRunFromAGradedOne) {
   }
 }
 
+// Nor from what the channel's header says: it reads the same in a run graded alone, one graded in a
+// class (where the grader does not spin) and a filmed one. (The grader's spin was in it once.)
+TEST(Sandbox, TheHeaderReadsTheSameInEveryKindOfRun) {
+  std::vector<Wheels> seen;
+  for (const auto& [spin, filmed] : {std::pair{50'000, false}, std::pair{0, false}, std::pair{50'000, true}}) {
+    std::shared_ptr<ControllerHost> host = startHost({testing::hostileModule("reads_header")}, {.spinNanoseconds = std::uint64_t(spin)});
+    ASSERT_NE(host, nullptr);
+    worlds::Run run(room(), {}, host->driver({0}, filmed));
+    run.runUntil(0.5);
+    seen.push_back(run.recorder().steps().back().robots[0].wheels);
+  }
+  EXPECT_GT(seen[0].forward, 0.0) << "it could not read the header, so this proves nothing";
+  EXPECT_EQ(seen[1], seen[0]);
+  EXPECT_EQ(seen[2], seen[0]);
+}
+
 TEST(Sandbox, ThreadsAreAllowed) {
   const Outcome o = runHostile({"starts_thread"});
   EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;

@@ -1,9 +1,9 @@
 #pragma once
 /// The shared memory between the grader (trusted) and a controller host (untrusted): a header with
 /// a doorbell each way, then a setup area, then an area per robot (its frame in, its reply out).
-/// A doorbell is a sequence number in shared memory: the waiter spins on it briefly, then sleeps
-/// (the host on a futex, the trusted side in poll on an eventfd); the ringer wakes it only if it
-/// sleeps, so a step in which both sides spin makes no system call at all.
+/// A doorbell is a sequence number in shared memory. The host sleeps on it (a futex) until rung, in
+/// every kind of run alike; the trusted side spins on the reply briefly when it has a core to
+/// itself, then sleeps in poll on an eventfd. The ringer wakes the other side only if it sleeps.
 /// The trusted side sizes the channel once and seals it against shrinking and growing before the
 /// host starts, so the host cannot pull memory from under it; should a read of it fault anyway
 /// (SIGBUS), the mapping is replaced by zeros and the channel reports that it was cut.
@@ -20,7 +20,7 @@
 namespace frob::sandbox {
 
 inline constexpr std::uint32_t kMagic = 0x424f5246;  // "FROB"
-inline constexpr std::uint32_t kVersion = 2;
+inline constexpr std::uint32_t kVersion = 3;
 /// The file descriptors a host finds its channel on.
 inline constexpr int kChannelFd = 3, kWakeFd = 4;
 
@@ -42,13 +42,12 @@ struct Header {
   std::uint32_t version = kVersion;
   // Written by the trusted side before it rings the request.
   Command command = Command::Load;
-  std::uint32_t robots = 0;           ///< robot areas in the channel
-  std::uint64_t setupBytes = 0;       ///< size of the setup area
-  std::uint64_t inBytes = 0;          ///< size of each robot's frame area
-  std::uint64_t outBytes = 0;         ///< size of each robot's reply area
-  std::uint64_t spinNanoseconds = 0;  ///< how long the host spins before it sleeps
-  std::int64_t step = 0;              ///< the step to sample (Step)
-  double dt = 0.0;                    ///< the run's step, seconds (Build)
+  std::uint32_t robots = 0;      ///< robot areas in the channel
+  std::uint64_t setupBytes = 0;  ///< size of the setup area
+  std::uint64_t inBytes = 0;     ///< size of each robot's frame area
+  std::uint64_t outBytes = 0;    ///< size of each robot's reply area
+  std::int64_t step = 0;         ///< the step to sample (Step)
+  double dt = 0.0;               ///< the run's step, seconds (Build)
   Doorbell request;
   Doorbell reply;
   // Written by the host: what it was doing, and what it tried that was refused.
