@@ -50,9 +50,10 @@ TEST(WallFollowAssignment, WaypointsLieOnTheFollowersPath) {
     all.emplace_back("outline " + std::to_string(seed), worlds::generateWorld(worlds::WorldKind::Outline, seed));
   for (const auto& [file, world] : all) {
     ASSERT_TRUE(world) << world.error();
+    const std::vector<worlds::WallDef>& walls = world->walls;  // clang 15 cannot capture a structured binding in a lambda
     auto nearestWall = [&](const Point2& p) {
       double d = 1e9;
-      for (const worlds::WallDef& w : world->walls) d = std::min(d, worlds::distanceToWall(p, w));
+      for (const worlds::WallDef& w : walls) d = std::min(d, worlds::distanceToWall(p, w));
       return d;
     };
     for (const char* name : {"a", "b", "c", "d", "e", "f"}) {

@@ -78,8 +78,9 @@ class RubricReader : worlds::TomlReader {
   bool readCheck(const toml::table& t, const std::string& field, Check& c) {
     for (auto&& [k, v] : t) {
       static constexpr std::string_view own[] = {"name", "points", "visibility", "worlds", "generated", "seeds", "secret_seeds", "seconds"};
-      if (std::find(std::begin(own), std::end(own), k.str()) != std::end(own)) continue;
-      const auto spec = std::find_if(std::begin(kCriteria), std::end(kCriteria), [&](const CriterionSpec& s) { return s.key == k.str(); });
+      const std::string_view key = k.str();  // not the binding itself: clang 15 cannot capture a structured binding in a lambda
+      if (std::find(std::begin(own), std::end(own), key) != std::end(own)) continue;
+      const auto spec = std::find_if(std::begin(kCriteria), std::end(kCriteria), [&](const CriterionSpec& s) { return s.key == key; });
       if (spec == std::end(kCriteria)) {
         std::string list;
         for (const CriterionSpec& s : kCriteria) list += (list.empty() ? "" : ", ") + std::string(s.key);
