@@ -151,9 +151,7 @@ int main(int argc, char** argv) {
   std::vector<Driven> driven;
   Clock clock(1.0);
   for (;;) {
-    // Sleep until rung, in every kind of run: a spin that depended on the kind (a class on shared
-    // cores, a run alone) would have to be told, and a controller could read it.
-    waitFutex(header->request, sequence, 0);
+    waitFutex(header->request, sequence, kHostSpinNanoseconds);
     if (header->command == Command::Build) {
       clock = Clock(header->dt);
       driven = build(channel, entries);

@@ -1,9 +1,9 @@
 #pragma once
 /// The shared memory between the grader (trusted) and a controller host (untrusted): a header with
 /// a doorbell each way, then a setup area, then an area per robot (its frame in, its reply out).
-/// A doorbell is a sequence number in shared memory. The host sleeps on it (a futex) until rung, in
-/// every kind of run alike; the trusted side spins on the reply briefly when it has a core to
-/// itself, then sleeps in poll on an eventfd. The ringer wakes the other side only if it sleeps.
+/// A doorbell is a sequence number in shared memory: the waiter spins on it briefly, then sleeps
+/// (the host on a futex, the trusted side in poll on an eventfd); the ringer wakes it only if it
+/// sleeps, so a step in which both sides spin makes no system call at all.
 /// The trusted side sizes the channel once and seals it against shrinking and growing before the
 /// host starts, so the host cannot pull memory from under it; should a read of it fault anyway
 /// (SIGBUS), the mapping is replaced by zeros and the channel reports that it was cut.
@@ -21,6 +21,9 @@ namespace frob::sandbox {
 
 inline constexpr std::uint32_t kMagic = 0x424f5246;  // "FROB"
 inline constexpr std::uint32_t kVersion = 3;
+/// How long the host spins on the request before it sleeps: the same in every kind of run (it
+/// yields the core meanwhile), so that nothing a controller can read tells one kind from another.
+inline constexpr std::uint64_t kHostSpinNanoseconds = 50'000;
 /// The file descriptors a host finds its channel on.
 inline constexpr int kChannelFd = 3, kWakeFd = 4;
 
