@@ -43,9 +43,10 @@ root="${FROB_AUTOGRADER_ROOT:-/autograder}"
 frob="${FROB:-$root/source/build/app/frob}"
 mkdir -p "$root/results"
 # The controller is the one .cpp file with a FROB_CONTROLLER(...) line; other files may lie beside it.
-mapfile -t controllers < <(find "$root/submission" -maxdepth 3 -name '*.cpp' -type f -exec grep -lE '^[[:space:]]*FROB_CONTROLLER[[:space:]]*\(' {} + | sort)
+mapfile -t sources < <(find "$root/submission" -maxdepth 3 -name '*.cpp' -type f | sort)
+mapfile -t controllers < <(grep -lE '^[[:space:]]*FROB_CONTROLLER[[:space:]]*\(' "${sources[@]}" < /dev/null)
 if [ "${#controllers[@]}" -ne 1 ]; then
-  if [ -z "$(find "$root/submission" -maxdepth 3 -name '*.cpp' -type f)" ]; then
+  if [ "${#sources[@]}" -eq 0 ]; then
     why="No .cpp file was submitted: submit your controller file."
   elif [ "${#controllers[@]}" -eq 0 ]; then
     why="None of the submitted .cpp files has a FROB_CONTROLLER(...) line: submit the file that holds your controller."
