@@ -71,7 +71,7 @@ Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const cours
     const std::string stem = (dir / fs::path(run->log.empty() ? "first_failure" : run->log.stem().string())).string();
     course::RunOutputs out{.video = stem + ".mp4", .plot = stem + ".png"};
     media.caption = "The first failing run: " + check + ", in " + run->world + " with seed " + std::to_string(run->seed) + ": " + run->reason;
-    if (Result<std::uint64_t> film = course::filmRun(def, a.submission, check, *run, out)) {
+    if (Result<std::uint64_t> film = course::filmRun(def, g.submission, check, *run, out)) {
       media.video = out.video, media.plot = out.plot;
       media.caption += course::format(" The film is the graded run: its trajectory hash, %016" PRIx64 ", is the graded run's, %016" PRIx64 ".",
                                       film.value(), run->trajectoryHash);
@@ -162,7 +162,7 @@ int gradeCommand(const GradeArgs& a) {
 
   if (!fs::is_directory(a.submission)) {
     if (!fs::exists(a.submission)) return fail("no submission '" + a.submission + "'", 2);
-    const course::Grade g = course::grade(def, a.submission);
+    const course::Grade g = course::grade(def, course::submissionOf(a.submission));
     std::cout << course::scoreTable(g);
     if (Status s = writeOutputs(a, def, g); !s) return fail(s.error());
     return 0;
@@ -173,7 +173,8 @@ int gradeCommand(const GradeArgs& a) {
     return fail("--results, --prairielearn, --junit and --report are for one submission; a class gets --gradebook", 2);
   }
   std::vector<fs::path> all = course::submissionsIn(a.submission);
-  if (all.empty()) return fail("no submissions in '" + a.submission + "' (a .cpp file each, or a folder each holding one)", 2);
+  if (all.empty())
+    return fail("no submissions in '" + a.submission + "' (a .cpp file each, or a folder each holding one controller and its helpers)", 2);
   int shard = 1, shards = 1;
   if (!a.shard.empty() && (std::sscanf(a.shard.c_str(), "%d/%d", &shard, &shards) != 2 || shards < 1 || shard < 1 || shard > shards)) {
     return fail("--shard must look like 2/8 (the second of eight), not '" + a.shard + "'", 2);

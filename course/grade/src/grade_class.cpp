@@ -2,6 +2,7 @@
 // report needs around one grade (its assignment's rubric, a film of a run).
 #include "frob/base/layout.hpp"
 #include "frob/grade/grade.hpp"
+#include "frob/run/controller_file.hpp"
 #include "frob/run/format.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/world_file.hpp"
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cinttypes>
+#include <fstream>
 #include <mutex>
 #include <thread>
 
@@ -48,14 +50,27 @@ std::vector<fs::path> submissionsIn(const fs::path& dir) {
   for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
     if (e.is_regular_file() && e.path().extension() == ".cpp") found.push_back(e.path());
     if (!e.is_directory()) continue;
-    std::vector<fs::path> inside;
     for (const fs::directory_entry& f : fs::directory_iterator(e.path(), ec)) {
-      if (f.is_regular_file() && f.path().extension() == ".cpp") inside.push_back(f.path());
+      if (f.is_regular_file() && f.path().extension() == ".cpp") {
+        found.push_back(e.path());
+        break;
+      }
     }
-    if (inside.size() == 1) found.push_back(inside.front());
   }
   std::sort(found.begin(), found.end());
   return found;
+}
+
+fs::path submissionOf(const fs::path& file) {
+  std::error_code ec;
+  const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+  if (companionsOf(file).empty()) return file;
+  for (const fs::directory_entry& e : fs::directory_iterator(folder, ec)) {
+    if (e.path().extension() != ".cpp" || !e.is_regular_file() || fs::equivalent(e.path(), file, ec)) continue;
+    std::ifstream in(e.path(), std::ios::binary);
+    if (holdsController(std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()})) return file;
+  }
+  return folder;
 }
 
 std::vector<fs::path> shardOf(const std::vector<fs::path>& all, int i, int n) {

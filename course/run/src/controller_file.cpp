@@ -38,6 +38,8 @@ constexpr const char* kEntrySymbol = FROB_STRINGIFY(FROB_CONTROLLER_SYMBOL);
 constexpr std::uintmax_t kModuleBytes = 64 << 20;  // largest compiled controller kept (a large one is 6 MB)
 constexpr std::uintmax_t kHeaderBytes = 1 << 20;   // largest header of its own a submission brings
 constexpr int kHeaders = 64;                       // most headers it brings
+constexpr std::uintmax_t kSourceBytes = 1 << 20;   // largest .cpp file compiled with a controller
+constexpr std::size_t kCompanions = 16;            // most .cpp files compiled with a controller
 
 // Size and modification time of a file, as text: a rebuilt file changes it.
 std::string fileStamp(const std::string& path) {
@@ -163,13 +165,55 @@ Result<std::string> readControllerFile(const fs::path& source) {
   return std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// Compiles `text`, the contents of `source`: the compiler reads `file` in `cwd` and the folder it is in.
-Result<CompiledController> compile(const fs::path& source, const std::string& text, const fs::path& file, const fs::path& cwd,
-                                   const CompilerSetup& setup, std::string* messages) {
-  // The cache key: the source, how it is compiled, and the headers and program it is compiled for.
+// The regular files of `dir` (not links) with one of `extensions`, by name, at most `most` of at most `bytes` each.
+std::vector<fs::path> filesIn(const fs::path& dir, std::initializer_list<const char*> extensions, std::size_t most, std::uintmax_t bytes) {
+  std::vector<fs::path> found;
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir.empty() ? "." : dir, ec)) {
+    const std::string ext = e.path().extension().string();
+    if (std::find(extensions.begin(), extensions.end(), ext) != extensions.end() && e.is_regular_file(ec) && !e.is_symlink(ec) &&
+        e.file_size(ec) <= bytes)
+      found.push_back(e.path());
+  }
+  std::sort(found.begin(), found.end());
+  if (found.size() > most) found.resize(most);
+  return found;
+}
+
+std::string textOf(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A file compiled with a controller, or read by its compile: its name and text.
+struct Companion {
+  fs::path file;
+  std::string text;
+};
+
+// The headers beside `source`, and the .cpp files compiled with it.
+std::vector<Companion> companionsBeside(const fs::path& source, const std::vector<fs::path>& sources) {
+  std::vector<Companion> all;
+  for (const fs::path& f : sources) all.push_back({f, textOf(f)});
+  for (const fs::path& f : filesIn(source.parent_path(), {".h", ".hpp"}, kHeaders, kHeaderBytes)) all.push_back({f, textOf(f)});
+  return all;
+}
+
+std::string tooMany(const fs::path& dir, std::size_t n) {
+  return "'" + dir.string() + "' holds " + std::to_string(n) + " .cpp files besides the controller; at most " + std::to_string(kCompanions) +
+         " compile with it";
+}
+
+// Compiles `text`, the contents of `source`, with `companions` (the .cpp files among them are
+// compiled too): the compiler reads `file` in `cwd` and the folder it is in.
+Result<CompiledController> compile(const fs::path& source, const std::string& text, const std::vector<Companion>& companions, const fs::path& file,
+                                   const fs::path& cwd, const CompilerSetup& setup, std::string* messages) {
+  // The cache key: the source and the files beside it, how it is compiled, and the headers and program it is compiled for.
   const bool pch = !setup.precompiledHeader.empty() && fs::exists(setup.precompiledHeader);
   worlds::Fnv1a key;
   key.add(std::string_view(text)).add(std::string_view(setup.compiler));
+  for (const Companion& c : companions)
+    key.add(std::string_view("\n")).add(std::string_view(c.file.filename().string())).add(std::string_view(c.text));
   for (const std::string& f : setup.flags) key.add(std::string_view("\n")).add(std::string_view(f));
   key.add(std::string_view(pch ? fileStamp(setup.precompiledHeader) : "no pch"));
   key.add(std::string_view(fileStamp("/proc/self/exe")));
@@ -219,6 +263,9 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
   program.command.insert(program.command.end(), setup.flags.begin(), setup.flags.end());
   if (pch) program.command.insert(program.command.end(), {"-include-pch", setup.precompiledHeader});
   program.command.insert(program.command.end(), {"-shared", "-o", partial.string(), file.string()});
+  for (const Companion& c : companions) {
+    if (c.file.extension() == ".cpp") program.command.push_back(c.file.string());
+  }
   Result<SandboxedRun> run = runSandboxed(std::move(program), setup.seconds, 1 << 20);
   const auto cleanUp = [&] { folder = Scratch(); };
   if (!run) return cleanUp(), run.status();
@@ -256,30 +303,72 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
 
 }  // namespace
 
+bool holdsController(std::string_view text) {
+  for (std::size_t at = 0; at < text.size();) {
+    std::size_t end = text.find('\n', at);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(at, end - at);
+    line.remove_prefix(std::min(line.size(), line.find_first_not_of(" \t")));
+    constexpr std::string_view kMacro = "FROB_CONTROLLER";
+    if (line.starts_with(kMacro)) {
+      line.remove_prefix(kMacro.size());
+      line.remove_prefix(std::min(line.size(), line.find_first_not_of(" \t")));
+      if (line.starts_with('(')) return true;
+    }
+    at = end + 1;
+  }
+  return false;
+}
+
+std::vector<fs::path> companionsOf(const fs::path& source) {
+  std::vector<fs::path> found;
+  std::error_code ec;
+  for (const fs::path& f : filesIn(source.parent_path(), {".cpp"}, SIZE_MAX, kSourceBytes)) {
+    if (!fs::equivalent(f, source, ec) && !holdsController(textOf(f))) found.push_back(f);
+  }
+  return found;
+}
+
 Result<CompiledController> compileControllerFile(const fs::path& source, const CompilerSetup& setup, std::string* messages) {
   Result<std::string> text = readControllerFile(source);
   if (!text) return text.status();
-  return compile(source, text.value(), source, fs::current_path(), setup, messages);  // messages name the file as it was given
+  const std::vector<fs::path> sources = companionsOf(source);
+  if (sources.size() > kCompanions) return Status::failure(tooMany(source.parent_path(), sources.size()));
+  // Messages name the files as they were given.
+  return compile(source, text.value(), companionsBeside(source, sources), source, fs::current_path(), setup, messages);
 }
 
-Result<CompiledController> compileSubmission(const fs::path& source, const CompilerSetup& setup, std::string* messages) {
+Result<CompiledController> compileSubmission(const fs::path& submission, const CompilerSetup& setup, std::string* messages) {
+  fs::path source = submission;
+  std::vector<fs::path> sources;
+  if (fs::is_directory(submission)) {  // a submission of several files: its one controller, and the rest
+    std::vector<fs::path> controllers;
+    for (const fs::path& f : filesIn(submission, {".cpp"}, SIZE_MAX, kSourceBytes)) (holdsController(textOf(f)) ? controllers : sources).push_back(f);
+    if (controllers.size() != 1) {
+      return Status::failure(controllers.empty() ? "none of the .cpp files of '" + submission.string() +
+                                                       "' has a FROB_CONTROLLER(...) line: submit the file that holds your controller"
+                                                 : std::to_string(controllers.size()) + " .cpp files of '" + submission.string() +
+                                                       "' have a FROB_CONTROLLER(...) line: a submission holds one controller");
+    }
+    if (sources.size() > kCompanions) return Status::failure(tooMany(submission, sources.size()));
+    source = controllers.front();
+  }
   Result<std::string> text = readControllerFile(source);
   if (!text) return text.status();
   std::error_code ec;
   fs::create_directories(setup.cacheDir, ec);
   removeStale(fs::absolute(setup.cacheDir), "submission");
   Result<Scratch> alone = Scratch::make(fs::absolute(setup.cacheDir), "submission");
-  if (!alone) return Status::failure("cannot make a folder for '" + source.string() + "' in '" + setup.cacheDir.string() + "'");
+  if (!alone) return Status::failure("cannot make a folder for '" + submission.string() + "' in '" + setup.cacheDir.string() + "'");
+  // A copy of its own, with its headers, in a fresh folder (a class folder holds .cpp files, one a student).
+  std::vector<Companion> companions = companionsBeside(source, sources);
   const fs::path file = source.filename();
   std::ofstream(alone.value().path() / file, std::ios::binary) << text.value();
-  // Its own headers come with it (a class folder holds .cpp files, one a student).
-  int headers = 0;
-  for (const fs::directory_entry& e : fs::directory_iterator(source.parent_path().empty() ? "." : source.parent_path(), ec)) {
-    const fs::path ext = e.path().extension();
-    if ((ext == ".h" || ext == ".hpp") && e.is_regular_file(ec) && !e.is_symlink(ec) && e.file_size(ec) <= kHeaderBytes && ++headers <= kHeaders)
-      fs::copy_file(e.path(), alone.value().path() / e.path().filename(), ec);
+  for (Companion& c : companions) {
+    c.file = c.file.filename();
+    std::ofstream(alone.value().path() / c.file, std::ios::binary) << c.text;
   }
-  return compile(source, text.value(), file, alone.value().path(), setup, messages);
+  return compile(submission, text.value(), companions, file, alone.value().path(), setup, messages);
 }
 
 }  // namespace frob::course

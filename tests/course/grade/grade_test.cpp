@@ -119,6 +119,35 @@ TEST_F(Grading, AGoodSubmissionGetsFullMarks) {
   EXPECT_DOUBLE_EQ(g.maxScore(), 8.0);
 }
 
+// A class folder: each .cpp file in it is a submission alone, each subfolder a submission of
+// several files; `frob grade A file.cpp` grades the file's folder when the file is its one controller
+// with helpers beside it. A stray file without a controller in the class compiles with no one's.
+TEST_F(Grading, AClassHoldsFilesAloneAndFoldersOfSeveralFiles) {
+  const fs::path klass = dir_ / "class";
+  fs::create_directories(klass / "bob");
+  fs::create_directories(klass / "empty");
+  std::ofstream(klass / "alice.cpp") << kGood;
+  std::ofstream(klass / "carol.cpp") << kCrash;
+  std::ofstream(klass / "stray.cpp") << "int unrelated() { return 1; }\n";
+  std::ofstream(klass / "bob" / "to_goal.cpp") << "#include <frob/frob.hpp>\nfrob::Task<frob::Wheels, bool> toGoal();\nFROB_CONTROLLER(toGoal)\n";
+  std::string helper = kGood;
+  helper.erase(helper.find("FROB_CONTROLLER(toGoal)"));
+  std::ofstream(klass / "bob" / "helpers.cpp") << helper;
+  EXPECT_EQ(submissionsIn(klass), (std::vector<fs::path>{klass / "alice.cpp", klass / "bob", klass / "carol.cpp", klass / "stray.cpp"}));
+  EXPECT_EQ(submissionOf(klass / "bob" / "to_goal.cpp"), klass / "bob");
+  EXPECT_EQ(submissionOf(klass / "alice.cpp"), klass / "alice.cpp");  // another controller lies beside it
+  EXPECT_EQ(submissionOf(dir_ / "good.cpp"), dir_ / "good.cpp");      // nothing to compile with it
+  def_.visibleOnly = true;
+  const std::vector<Grade> grades = gradeAll(def_, submissionsIn(klass), 1);
+  ASSERT_EQ(grades.size(), 4u);
+  EXPECT_DOUBLE_EQ(grades[0].score(), grades[0].maxScore());
+  EXPECT_EQ(grades[1].submission, (klass / "bob").string());
+  EXPECT_EQ(grades[1].compileError, "");
+  EXPECT_DOUBLE_EQ(grades[1].score(), grades[1].maxScore());
+  EXPECT_EQ(grades[3].compileError, "");
+  EXPECT_DOUBLE_EQ(grades[3].score(), 0.0);
+}
+
 TEST_F(Grading, ACrashFailsEveryRunWithItsReasonAndNothingElse) {
   const Grade g = grade(def_, dir_ / "crash.cpp");
   EXPECT_DOUBLE_EQ(g.score(), 0.0);

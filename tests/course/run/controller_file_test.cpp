@@ -2,6 +2,8 @@
 // frob's and the submission's own folder, and nothing else, within limits of time and memory.
 #include "frob/run/controller_file.hpp"
 
+#include "frob/run/host.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -103,6 +105,68 @@ TEST(ControllerFile, ASubmissionCompilesAloneAndCannotReadAClassmatesFile) {
   // Nothing is left of the folders the submissions were copied to.
   for (const fs::directory_entry& e : fs::directory_iterator(dir / "cache"))
     EXPECT_EQ(e.path().filename().string().find("submission-"), std::string::npos);
+}
+
+constexpr const char* kUsesHelper = R"(#include <frob/frob.hpp>
+double speed();
+frob::Behavior<frob::Wheels> go(const frob::Robot&) { return frob::Wheels{speed(), 0.0}; }
+FROB_CONTROLLER(go)
+)";
+constexpr const char* kHelper = "#include \"speed.hpp\"\ndouble speed() { return kSpeed; }\n";
+
+// A student's helpers: the .cpp files beside a controller that hold no controller compile with it
+// (else loading fails on speed()'s undefined symbol), and a change to one of them, or to a header
+// beside it, compiles anew. Another controller beside it is not compiled in (it would clash).
+TEST(ControllerFile, HelpersBesideItCompileWithItAndChangesToThemCompileAnew) {
+  const fs::path dir = freshFolder("helpers");
+  writeFile(dir / "go.cpp", kUsesHelper);
+  writeFile(dir / "helpers.cpp", kHelper);
+  writeFile(dir / "speed.hpp", "constexpr double kSpeed = 0.3;\n");
+  writeFile(dir / "other.cpp", "  FROB_CONTROLLER (go)\n");
+  EXPECT_EQ(companionsOf(dir / "go.cpp"), std::vector<fs::path>{dir / "helpers.cpp"});
+  std::string messages;
+  Result<CompiledController> c = compileControllerFile(dir / "go.cpp", setupIn(dir), &messages);
+  ASSERT_TRUE(c.ok()) << c.error() << messages;
+  Result<LoadedController> loaded = describeInHost(c.value());
+  EXPECT_TRUE(loaded.ok()) << loaded.error();
+  writeFile(dir / "speed.hpp", "constexpr double kSpeed = 0.4;\n");
+  Result<CompiledController> header = compileControllerFile(dir / "go.cpp", setupIn(dir));
+  ASSERT_TRUE(header.ok());
+  EXPECT_TRUE(header.value().compiled);
+  writeFile(dir / "helpers.cpp", std::string(kHelper) + "// changed\n");
+  Result<CompiledController> helper = compileControllerFile(dir / "go.cpp", setupIn(dir));
+  ASSERT_TRUE(helper.ok());
+  EXPECT_TRUE(helper.value().compiled);
+  EXPECT_NE(helper.value().module, header.value().module);
+}
+
+// A submission of several files is a folder: its one controller compiles with the rest. A .cpp
+// file submitted alone compiles alone, whatever lies beside it (a classmate's file, in a class).
+TEST(ControllerFile, ASubmissionFolderCompilesItsOneControllerWithTheRest) {
+  const fs::path dir = freshFolder("submission_folder");
+  fs::create_directories(dir / "bob");
+  writeFile(dir / "bob" / "go.cpp", kUsesHelper);
+  writeFile(dir / "bob" / "helpers.cpp", kHelper);
+  writeFile(dir / "bob" / "speed.hpp", "constexpr double kSpeed = 0.3;\n");
+  std::string messages;
+  Result<CompiledController> folder = compileSubmission(dir / "bob", setupIn(dir), &messages);
+  ASSERT_TRUE(folder.ok()) << folder.error() << messages;
+  EXPECT_EQ(folder.value().source, (dir / "bob").string());
+  Result<LoadedController> both = describeInHost(folder.value());
+  EXPECT_TRUE(both.ok()) << both.error();
+  Result<CompiledController> alone = compileSubmission(dir / "bob" / "go.cpp", setupIn(dir), &messages);
+  ASSERT_TRUE(alone.ok()) << alone.error() << messages;
+  Result<LoadedController> loaded = describeInHost(alone.value());
+  ASSERT_FALSE(loaded.ok());
+  EXPECT_NE(loaded.error().find("undefined symbol: speed()"), std::string::npos) << loaded.error();
+
+  writeFile(dir / "bob" / "again.cpp", kUsesHelper);
+  EXPECT_EQ(compileSubmission(dir / "bob", setupIn(dir)).error(),
+            "2 .cpp files of '" + (dir / "bob").string() + "' have a FROB_CONTROLLER(...) line: a submission holds one controller");
+  fs::remove(dir / "bob" / "again.cpp");
+  fs::remove(dir / "bob" / "go.cpp");
+  EXPECT_EQ(compileSubmission(dir / "bob", setupIn(dir)).error(),
+            "none of the .cpp files of '" + (dir / "bob").string() + "' has a FROB_CONTROLLER(...) line: submit the file that holds your controller");
 }
 
 // A compiled controller past the size kept in the cache fails to compile, saying why.

@@ -75,7 +75,7 @@ struct CheckGrade {
 /// A submission's grade.
 struct Grade {
   std::string assignment;
-  std::string submission;    ///< the file, as given
+  std::string submission;    ///< the file or folder, as given
   std::string compileError;  ///< the compiler's complaint when it did not compile (then every check scores 0)
   std::vector<CheckGrade> checks;
   std::vector<std::string> notes;  ///< e.g. output that was cut, sandbox layers missing
@@ -84,8 +84,8 @@ struct Grade {
   [[nodiscard]] double maxScore() const;
 };
 
-/// Compiles and grades `submission`. Never fails on the submission's account: a compile error, a
-/// crash or a hang scores 0 in the checks it touched, with the reason.
+/// Compiles and grades `submission`, a .cpp file or a folder of several (see compileSubmission()). Never fails on the submission's account: a compile
+/// error, a crash or a hang scores 0 in the checks it touched, with the reason.
 [[nodiscard]] Grade grade(const GradeDef& def, const std::filesystem::path& submission);
 
 /// Grades each of `submissions` (a class), `jobs` at a time, in their order; `progress(done, total)`
@@ -93,8 +93,12 @@ struct Grade {
 [[nodiscard]] std::vector<Grade> gradeAll(GradeDef def, const std::vector<std::filesystem::path>& submissions, int jobs,
                                           const std::function<void(std::size_t done, std::size_t total)>& progress = {});
 
-/// The submissions in `dir`, sorted: each .cpp file in it, and each subfolder's one .cpp file.
+/// The submissions in `dir`, sorted: each .cpp file in it, compiled alone, and each subfolder that holds
+/// .cpp files, a submission of several files.
 [[nodiscard]] std::vector<std::filesystem::path> submissionsIn(const std::filesystem::path& dir);
+/// What to grade for controller file `file`: its folder when the file is the folder's one controller
+/// and other .cpp files lie beside it (a submission of several files), else the file alone.
+[[nodiscard]] std::filesystem::path submissionOf(const std::filesystem::path& file);
 /// Shard `i` of `n` (1-based) of `all`: every n-th from the i-th, the same on every machine.
 [[nodiscard]] std::vector<std::filesystem::path> shardOf(const std::vector<std::filesystem::path>& all, int i, int n);
 

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace frob::course {
@@ -52,16 +53,25 @@ struct LoadedController {
   bool compiled = false;         ///< true when it was compiled now, false when the cache (or the build) had it
 };
 
-/// Compiles `source` unless the cache already holds it. The compiler runs in the sandbox: it reads only
-/// the system's headers, frob's, and the source's own folder, within time and memory limits. On a
-/// compile error the error names the file; the compiler's messages go to `messages`, or to stderr.
+/// Whether C++ text holds a line that starts FROB_CONTROLLER(, as a controller file's does.
+[[nodiscard]] bool holdsController(std::string_view text);
+/// The .cpp files compiled with controller file `source`: the others in its folder that hold no
+/// FROB_CONTROLLER(...) line (a student's helpers), by name.
+[[nodiscard]] std::vector<std::filesystem::path> companionsOf(const std::filesystem::path& source);
+
+/// Compiles `source`, with companionsOf(source), unless the cache already holds it (the cache knows
+/// it by its text and the texts of its companions and of the headers beside it). The compiler runs
+/// in the sandbox: it reads only the system's headers, frob's, and the source's own folder, within
+/// time and memory limits. On a compile error the error names the file; the compiler's messages go
+/// to `messages`, or to stderr.
 [[nodiscard]] Result<CompiledController> compileControllerFile(const std::filesystem::path& source, const CompilerSetup& setup = compilerSetup(),
                                                                std::string* messages = nullptr);
-/// Compiles a submission as compileControllerFile() does, but alone: copied, with the headers (.h,
-/// .hpp) beside it, into a fresh folder of its own, so that its compile reads no other file that
-/// stood there (a classmate's, when a class is one folder of .cpp files). The compiler's messages
-/// name the file by its name only.
-[[nodiscard]] Result<CompiledController> compileSubmission(const std::filesystem::path& source, const CompilerSetup& setup = compilerSetup(),
+/// Compiles a submission as compileControllerFile() does, but copied, with the headers (.h, .hpp)
+/// beside it, into a fresh folder of its own, so that its compile reads no other file that stood
+/// there (a classmate's, when a class is one folder of .cpp files). A submission is a .cpp file,
+/// compiled alone, or a folder of several: its one .cpp file with a FROB_CONTROLLER(...) line,
+/// compiled with the other .cpp files there. The compiler's messages name the files by name only.
+[[nodiscard]] Result<CompiledController> compileSubmission(const std::filesystem::path& submission, const CompilerSetup& setup = compilerSetup(),
                                                            std::string* messages = nullptr);
 /// Loads `compiled` into this process, where its code runs outside the sandbox (trusted code only). Its
 /// module stays loaded for the life of the process.
