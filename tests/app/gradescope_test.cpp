@@ -138,9 +138,11 @@ TEST(GradescopeZip, HoldsTheSourcesTheAssignmentAndTheScripts) {
   EXPECT_EQ(forged["score"], 0.0) << forged.dump(1);
   EXPECT_NE(forged["tests"][0]["output"].get<std::string>().find("ended its program with exit status 0"), std::string::npos) << forged.dump(1);
 
-  // The file with FROB_CONTROLLER is graded, whatever the other files are called; none or two: 0, and why.
+  // The file with FROB_CONTROLLER is graded, whatever the other files are called, and the others
+  // compile with it (else loading fails on twice()'s undefined symbol); none or two: 0, and why.
   const std::string helper = "// helpers, no controller (a comment may name FROB_CONTROLLER)\nint twice(int x) { return 2 * x; }\n";
-  const nlohmann::json helped = runAutograder(dir / "autograder.zip", "helped", kGood, {{"a_helpers.cpp", helper}});
+  const std::string usesHelper = std::string("int twice(int x);\nconst int kTwo = twice(1);\n") + kGood;
+  const nlohmann::json helped = runAutograder(dir / "autograder.zip", "helped", usesHelper, {{"a_helpers.cpp", helper}});
   EXPECT_EQ(helped["score"], 5.0) << helped.dump(1);
   const nlohmann::json two = runAutograder(dir / "autograder.zip", "two", kGood, {{"another.cpp", kGood}});
   EXPECT_EQ(two["score"], 0.0) << two.dump(1);

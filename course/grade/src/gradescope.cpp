@@ -34,34 +34,19 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER=clang
 cmake --build build
 )sh";
 
-// Gradescope runs it for each submission. FROB_AUTOGRADER_ROOT and FROB let a test run it on a
-// fake /autograder tree with a frob built elsewhere.
+// Gradescope runs it for each submission; the script it calls finds the controller (PrairieLearn's
+// entrypoint calls it too). FROB_AUTOGRADER_ROOT and FROB let a test run it on a fake /autograder
+// tree with a frob built elsewhere.
 constexpr const char* kRun = R"sh(#!/usr/bin/env bash
 # Grades the submission into results/results.json, Gradescope's layout.
 set -u
 root="${FROB_AUTOGRADER_ROOT:-/autograder}"
-frob="${FROB:-$root/source/build/app/frob}"
-mkdir -p "$root/results"
-# The controller is the one .cpp file with a FROB_CONTROLLER(...) line; other files may lie beside it.
-mapfile -t sources < <(find "$root/submission" -maxdepth 3 -name '*.cpp' -type f | sort)
-mapfile -t controllers < <(grep -lE '^[[:space:]]*FROB_CONTROLLER[[:space:]]*\(' "${sources[@]}" < /dev/null)
-if [ "${#controllers[@]}" -ne 1 ]; then
-  if [ "${#sources[@]}" -eq 0 ]; then
-    why="No .cpp file was submitted: submit your controller file."
-  elif [ "${#controllers[@]}" -eq 0 ]; then
-    why="None of the submitted .cpp files has a FROB_CONTROLLER(...) line: submit the file that holds your controller."
-  else
-    why="${#controllers[@]} of the submitted .cpp files have a FROB_CONTROLLER(...) line: submit one controller."
-  fi
-  printf '{"score": 0, "output": "%s", "tests": []}\n' "$why" > "$root/results/results.json"
-  exit 0
-fi
-submission="${controllers[0]}"
+export FROB="${FROB:-$root/source/build/app/frob}"
 export FROB_CACHE_DIR="$root/cache"
 if [ -d "$root/source/cache" ]; then mkdir -p "$root/cache" && cp -r "$root/source/cache/." "$root/cache/"; fi  # the fair hidden worlds
 if [ -f "$root/source/secret.txt" ]; then export FROB_GRADE_SECRET="$(head -n 1 "$root/source/secret.txt")"; fi
-cd "$(dirname "$submission")"
-"$frob" grade "$root/source/assignments/ASSIGNMENT" "$submission" --results "$root/results/results.json" --logs "$root/results/logs"
+exec bash "$root/source/course/autograder/grade_submission.sh" gradescope "$root/source/assignments/ASSIGNMENT" "$root/submission" \
+  "$root/results/results.json" --logs "$root/results/logs"
 )sh";
 
 // What of frob's sources the autograder builds from: everything but tests, builds and the other assignments.
