@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cinttypes>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -26,6 +27,16 @@ namespace frob::course {
 namespace fs = std::filesystem;
 
 namespace {
+
+// The time now, UTC, as JUnit's timestamp has it: 2026-12-02T21:58:37 (a report's timing field).
+std::string utcNow() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm utc{};
+  ::gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%S", &utc);
+  return text;
+}
 
 // What a run made: the grader's record of it, and the wheels applied at every step.
 struct Ran {
@@ -186,9 +197,15 @@ std::string CheckGrade::output() const {
   for (std::size_t k = 0; k < runs.size(); ++k) {
     if (runs[k].passed) continue;
     out += "in " + place(k) + ": " + reasonShown(k) + "\n";
-    for (const std::string& h : runs[k].hints) out += "  hint: " + (visibility == Visibility::Visible ? h : withoutPlaces(h)) + "\n";
+    for (const std::string& h : hintsShown(k)) out += "  hint: " + h + "\n";
   }
   return out;
+}
+
+std::vector<std::string> CheckGrade::hintsShown(std::size_t k) const {
+  std::vector<std::string> shown;
+  for (const std::string& h : runs.at(k).hints) shown.push_back(visibility == Visibility::Visible ? h : withoutPlaces(h));
+  return shown;
 }
 
 double Grade::score() const {
@@ -334,7 +351,7 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
 
 Grade grade(const GradeDef& def, const fs::path& submission) {
   const auto start = std::chrono::steady_clock::now();
-  Grade g{.assignment = def.assignment, .submission = submission.string()};
+  Grade g{.assignment = def.assignment, .submission = submission.string(), .startedAt = utcNow()};
   KeptWorlds kept;
   if (def.kept) {
     kept = *def.kept;
@@ -364,7 +381,9 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
         } else if (!world) {
           r.reason = "the world could not be loaded: " + world.error();
         } else {
+          const auto began = std::chrono::steady_clock::now();
           runCheck(def, compiled.value(), check, w, world.value(), r, g.notes);
+          r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
         }
       }
     }

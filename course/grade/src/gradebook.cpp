@@ -88,6 +88,35 @@ Result<std::vector<CsvRow>> parseCsv(std::string_view text, const std::string& f
   return rows;
 }
 
+// `text` cut to its first line and `most` bytes.
+std::string firstWords(std::string_view text, std::size_t most) {
+  text = text.substr(0, text.find('\n'));
+  return text.size() <= most ? std::string(text) : std::string(text.substr(0, most)) + "...";
+}
+
+// How grading went, for an instructor scanning the class: a compile failure, a hang and a weak run
+// all score 0, and this tells them apart.
+std::string resultOf(const Grade& g) {
+  constexpr std::size_t kWords = 80;
+  if (!g.compileError.empty()) {
+    const std::size_t error = g.compileError.find("error: ");  // the compiler's first error, else the reason
+    return "did not compile: " +
+           firstWords(error == std::string::npos ? std::string_view(g.compileError) : std::string_view(g.compileError).substr(error + 7), kWords);
+  }
+  constexpr std::string_view kFailed = "the controller failed: ";
+  std::size_t failed = 0, runs = 0;
+  std::string first;
+  for (const CheckGrade& c : g.checks) {
+    for (const RunGrade& r : c.runs) {
+      ++runs;
+      if (!r.reason.starts_with(kFailed)) continue;
+      if (failed++ == 0) first = firstWords(std::string_view(r.reason).substr(kFailed.size()), kWords);
+    }
+  }
+  if (failed == 0) return "graded";
+  return "failed at run time in " + std::to_string(failed) + " of " + std::to_string(runs) + " runs: " + first;
+}
+
 }  // namespace
 
 Status writeGradebook(const std::vector<Grade>& grades, const fs::path& path) {
@@ -100,7 +129,7 @@ Status writeGradebook(const std::vector<Grade>& grades, const fs::path& path) {
     }
   }
   // The checks' columns: every check of every grade, in the order they first appear.
-  std::vector<std::string> header{"submission", "score", "max_score"};
+  std::vector<std::string> header{"submission", "score", "max_score", "result"};
   std::set<std::string> known;
   for (const Grade* g : sorted) {
     for (const CheckGrade& c : g->checks) {
@@ -109,8 +138,8 @@ Status writeGradebook(const std::vector<Grade>& grades, const fs::path& path) {
   }
   std::string csv = csvRecord(header);
   for (const Grade* g : sorted) {
-    std::vector<std::string> row{g->submission, number(g->score()), number(g->maxScore())};
-    for (std::size_t k = 3; k < header.size(); ++k) {
+    std::vector<std::string> row{g->submission, number(g->score()), number(g->maxScore()), resultOf(*g)};
+    for (std::size_t k = 4; k < header.size(); ++k) {
       const auto c = std::find_if(g->checks.begin(), g->checks.end(), [&](const CheckGrade& x) { return x.name == header[k]; });
       row.push_back(c == g->checks.end() ? std::string() : number(c->score));  // empty: not graded
     }

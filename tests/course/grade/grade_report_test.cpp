@@ -223,13 +223,61 @@ TEST(JUnit, ReadsBackWithAStrictXmlParser) {
                                       "avoids walls / maze, seed 4", "secret worlds / hidden world 1"}));
   EXPECT_EQ(select(doc.get(), "/testsuite/testcase/@classname"), std::vector<std::string>(5, g.assignment));
   EXPECT_EQ(select(doc.get(), "//testcase[@name='avoids walls / maze, seed 3']/failure/@message"), std::vector<std::string>{kHostileRead});
-  EXPECT_EQ(select(doc.get(), "//testcase[@name='avoids walls / maze, seed 3']/failure"), std::vector<std::string>{kHostileRead});
+  EXPECT_EQ(select(doc.get(), "//testcase[@name='avoids walls / maze, seed 3']/failure"), std::vector<std::string>{""});  // said once
   // Line breaks and tabs survive in attributes (a parser turns raw ones into spaces).
   EXPECT_EQ(select(doc.get(), "//testcase[@name='secret worlds / hidden world 1']/failure/@message"),
             std::vector<std::string>{"two lines,\nkept\tapart\r\n"});
   EXPECT_EQ(select(doc.get(), "//failure").size(), 2u);
   EXPECT_EQ(one(doc.get(), "/testsuite/system-out"), "the controller printed more than 1 MB; the rest was cut\n");
   EXPECT_EQ(text.find('\x01'), std::string::npos);
+}
+
+// Why `text` is not valid against the Apache Ant JUnit schema; "" when it is.
+std::string antSchemaErrors(const std::string& text) {
+  std::string errors;
+  xmlSchemaParserCtxt* parser = xmlSchemaNewParserCtxt(FROB_JUNIT_XSD);
+  xmlSchema* schema = xmlSchemaParse(parser);
+  xmlSchemaValidCtxt* valid = xmlSchemaNewValidCtxt(schema);
+  xmlSchemaSetValidStructuredErrors(
+      valid, [](void* out, xmlError* e) { *static_cast<std::string*>(out) += "line " + std::to_string(e->line) + ": " + e->message; }, &errors);
+  const Doc doc = parseXml(text);
+  if (schema == nullptr)
+    errors = "cannot read the schema " FROB_JUNIT_XSD;
+  else if (!doc)
+    errors = "not well-formed";
+  else if (xmlSchemaValidateDoc(valid, doc.get()) != 0 && errors.empty())
+    errors = "invalid";
+  xmlSchemaFreeValidCtxt(valid);
+  xmlSchemaFree(schema);
+  xmlSchemaFreeParserCtxt(parser);
+  return errors;
+}
+
+// Strict JUnit readers (Ant's JUnitReport, and what follows its schema) take it: every required
+// attribute and element, and each reason said once (the message), with the hints as the text.
+TEST(JUnit, IsValidAgainstTheAntSchemaAndSaysEachReasonOnce) {
+  const fs::path dir = scratch("junit_ant");
+  Grade g = sample();
+  g.startedAt = "2026-12-02T21:58:37";
+  g.checks[1].runs[0].hints = {"it turned the wrong way"};
+  g.checks[1].runs[0].wallSeconds = 1.25;
+  ASSERT_TRUE(writeJUnit(g, dir / "junit.xml").ok());
+  const std::string text = readFile(dir / "junit.xml");
+  EXPECT_EQ(antSchemaErrors(text), "") << text;
+  const Doc doc = parseXml(text);
+  EXPECT_EQ(one(doc.get(), "/testsuite/@timestamp"), "2026-12-02T21:58:37");
+  EXPECT_NE(one(doc.get(), "/testsuite/@hostname"), "");
+  EXPECT_EQ(select(doc.get(), "/testsuite/properties/property/@name"), (std::vector<std::string>{"submission", "score", "max_score"}));
+  EXPECT_EQ(one(doc.get(), "/testsuite/properties/property[@name='score']/@value"), "2.5");
+  EXPECT_EQ(one(doc.get(), "//testcase[@name='avoids walls / maze, seed 3']/@time"), "1.250");
+  EXPECT_EQ(one(doc.get(), "//testcase[@name='avoids walls / maze, seed 3']/failure/@type"), "check failed");
+  EXPECT_EQ(one(doc.get(), "//testcase[@name='avoids walls / maze, seed 3']/failure"), "hint: it turned the wrong way\n");
+  for (const std::string& body : select(doc.get(), "//failure")) {
+    for (const std::string& message : select(doc.get(), "//failure/@message")) EXPECT_EQ(body.find(message), std::string::npos) << body;
+  }
+  EXPECT_NE(antSchemaErrors(std::string(text).replace(text.find("timestamp"), 9, "startedAt")), "");  // the check can fail
+  ASSERT_TRUE(writeJUnit(uncompiled("bob.cpp:3:1: error: expected ';'\n"), dir / "compile.xml").ok());
+  EXPECT_EQ(antSchemaErrors(readFile(dir / "compile.xml")), "") << readFile(dir / "compile.xml");
 }
 
 TEST(JUnit, CompileErrorIsAFailedTestcase) {
@@ -249,14 +297,25 @@ TEST(JUnit, CompileErrorIsAFailedTestcase) {
 
 TEST(Gradebook, ExactBytesSortedAndQuoted) {
   const fs::path dir = scratch("gradebook");
-  const Status s =
-      writeGradebook({scored("zed.cpp", 2, 1), scored("alice, \"the\" great.cpp", 2, 0.5), scored("bob.cpp", 0, 1.0 / 3.0)}, dir / "class.csv");
+  // A compile error, a crash and a weak run all score 0; the result column tells them apart.
+  Grade crashed = scored("carl.cpp", 0, 0);
+  crashed.checks[0].runs = {
+      fail("empty", 1, "touched a wall at 3.0 s"),
+      fail("maze", 2, "the controller failed: nomad: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 1.01 s")};
+  crashed.checks[1].runs = {fail("maze", 3, "the controller failed: nomad: its step took longer than 1 s")};
+  Grade broken = uncompiled("could not compile 'dan.cpp' (the compiler's messages follow)\ndan.cpp:3:1: error: expected ';'\nmore\n");
+  broken.submission = "dan.cpp";
+  const Status s = writeGradebook(
+      {scored("zed.cpp", 2, 1), scored("alice, \"the\" great.cpp", 2, 0.5), scored("bob.cpp", 0, 1.0 / 3.0), crashed, broken}, dir / "class.csv");
   ASSERT_TRUE(s.ok()) << s.error();
   EXPECT_EQ(readFile(dir / "class.csv"),
-            "submission,score,max_score,reaches the goal,\"avoids walls, maze\"\r\n"
-            "\"alice, \"\"the\"\" great.cpp\",2.5,3,2,0.5\r\n"
-            "bob.cpp,0.3333,3,0,0.3333\r\n"
-            "zed.cpp,3,3,2,1\r\n");
+            "submission,score,max_score,result,reaches the goal,\"avoids walls, maze\"\r\n"
+            "\"alice, \"\"the\"\" great.cpp\",2.5,3,graded,2,0.5\r\n"
+            "bob.cpp,0.3333,3,graded,0,0.3333\r\n"
+            "carl.cpp,0,3,\"failed at run time in 2 of 3 runs: nomad: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = "
+            "1....\",0,0\r\n"
+            "dan.cpp,0,2,did not compile: expected ';',0,\r\n"
+            "zed.cpp,3,3,graded,2,1\r\n");
   EXPECT_EQ(filesIn(dir), std::vector<std::string>{"class.csv"});
 }
 
@@ -307,8 +366,8 @@ TEST(Gradebook, MergeErrorsNameTheFile) {
 
   EXPECT_EQ(mergeGradebooks({a, b}, out).error(), "gradebook: submission 'bob.cpp' is in " + a + ":2 and in " + b + ":3");
   EXPECT_EQ(mergeGradebooks({a, c}, out).error(), "gradebook: " + c +
-                                                      ":1: its header \"submission,score,max_score,reaches the goal,stops\" differs from "
-                                                      "\"submission,score,max_score,reaches the goal,\"avoids walls, maze\"\" of " +
+                                                      ":1: its header \"submission,score,max_score,result,reaches the goal,stops\" differs from "
+                                                      "\"submission,score,max_score,result,reaches the goal,\"avoids walls, maze\"\" of " +
                                                       a + " (gradebooks of different rubrics?)");
   EXPECT_EQ(mergeGradebooks({dir / "open_quote.csv"}, out).error(),
             "gradebook: " + (dir / "open_quote.csv").string() + ":2: a quoted field is not closed");

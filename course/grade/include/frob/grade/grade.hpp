@@ -52,6 +52,7 @@ struct RunGrade {
   std::vector<std::string> hints;    ///< what common mistake the run shows, naming the fix (course/diagnose.hpp)
   std::uint64_t trajectoryHash = 0;  ///< of every true pose (replays must match it)
   std::filesystem::path log;         ///< its wheel log, when logs are kept
+  double wallSeconds = 0.0;          ///< how long the run took (a timing field, like Grade::wallSeconds)
 };
 
 /// One check's outcome: the fraction of its runs that passed, times its points.
@@ -67,6 +68,8 @@ struct CheckGrade {
   /// Why run k failed, as a student may read it: for a check that is not visible, without the
   /// coordinates of where it happened.
   [[nodiscard]] std::string reasonShown(std::size_t k) const;
+  /// The hints of run k, as a student may read them (as reasonShown()).
+  [[nodiscard]] std::vector<std::string> hintsShown(std::size_t k) const;
   /// The reasons of the failed runs, one line each ("in maze, seed 3: touched a wall at 41.2 s at (3.1, 4.5)";
   /// "in hidden world 2: touched a wall at 41.2 s"), each followed by its hints ("  hint: ...").
   [[nodiscard]] std::string output() const;
@@ -79,7 +82,8 @@ struct Grade {
   std::string compileError;  ///< the compiler's complaint when it did not compile (then every check scores 0)
   std::vector<CheckGrade> checks;
   std::vector<std::string> notes;  ///< e.g. output that was cut, sandbox layers missing
-  double wallSeconds = 0.0;        ///< how long grading took (the only field that differs between two gradings)
+  double wallSeconds = 0.0;        ///< how long grading took (with the runs' and startedAt, the only fields that differ between two gradings)
+  std::string startedAt;           ///< when grading began, UTC, as 2026-12-02T21:58:37
   [[nodiscard]] double score() const;
   [[nodiscard]] double maxScore() const;
 };

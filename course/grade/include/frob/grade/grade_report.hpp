@@ -32,8 +32,10 @@ namespace frob::course {
 /// check ("check / world seed N"), a <failure> with the reason for each failed run.
 [[nodiscard]] Status writeJUnit(const Grade& grade, const std::filesystem::path& path);
 
-/// Writes a class gradebook (CSV, RFC 4180, CRLF line ends): submission,score,max_score, then one
-/// column per check; one row per grade, sorted by submission. Two grades of one submission fail.
+/// Writes a class gradebook (CSV, RFC 4180, CRLF line ends): submission,score,max_score,result, then
+/// one column per check; one row per grade, sorted by submission. The result says "graded", "did not
+/// compile: " with the compiler's first error, or "failed at run time in N of M runs: " with the
+/// first such reason (each cut to its first 80 bytes). Two grades of one submission fail.
 [[nodiscard]] Status writeGradebook(const std::vector<Grade>& grades, const std::filesystem::path& path);
 
 /// Merges gradebooks written by writeGradebook (one per shard of a class) into `out`: their headers
