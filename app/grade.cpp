@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <cinttypes>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -50,6 +51,9 @@ const course::RunGrade* firstFailure(const course::Grade& g, std::string& check)
   return nullptr;
 }
 
+// The report's film fits in this, whatever the run's length, so that a report stays small enough to mail or upload (~3 MB).
+constexpr std::uint64_t kReportVideoBytes = 2'000'000;
+
 // Writes each file asked for; the first that cannot be written is the error.
 Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const course::Grade& g) {
   if (!a.results.empty()) {
@@ -69,7 +73,7 @@ Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const cours
     std::error_code ec;
     fs::create_directories(dir, ec);
     const std::string stem = (dir / fs::path(run->log.empty() ? "first_failure" : run->log.stem().string())).string();
-    course::RunOutputs out{.video = stem + ".mp4", .plot = stem + ".png"};
+    course::RunOutputs out{.video = stem + ".mp4", .videoBytes = kReportVideoBytes, .plot = stem + ".png"};
     media.caption = "The first failing run: " + check + ", in " + run->world + " with seed " + std::to_string(run->seed) + ": " + run->reason;
     if (Result<std::uint64_t> film = course::filmRun(def, g.submission, check, *run, out)) {
       media.video = out.video, media.plot = out.plot;

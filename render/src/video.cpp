@@ -191,6 +191,8 @@ Status validate(const VideoDef& def) {
   if (def.fps < 1 || def.fps > 240) return Status::failure("video: fps " + std::to_string(def.fps) + " is outside 1..240");
   if (def.threads < 0 || def.threads > 64) return Status::failure("video: threads " + std::to_string(def.threads) + " is outside 0..64");
   if (def.crf < 0 || def.crf > 51) return Status::failure("video: crf " + std::to_string(def.crf) + " is outside 0..51");
+  if (def.maxKilobitsPerSecond < 0 || def.maxKilobitsPerSecond > 1'000'000)
+    return Status::failure("video: maxKilobitsPerSecond " + std::to_string(def.maxKilobitsPerSecond) + " is outside 0..1000000");
   if (avcodec_find_encoder_by_name("libx264") == nullptr) {
     return Status::failure("video: this libavcodec has no libx264 encoder (install libavcodec59 with x264)");
   }
@@ -226,6 +228,10 @@ Result<VideoWriter> VideoWriter::open(const VideoDef& def) {
   if (m->format->oformat->flags & AVFMT_GLOBALHEADER) m->codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
   av_opt_set(m->codec->priv_data, "preset", def.preset.c_str(), 0);
   av_opt_set(m->codec->priv_data, "crf", std::to_string(def.crf).c_str(), 0);
+  if (def.maxKilobitsPerSecond > 0) {  // capped CRF: the crf's quality where the cap allows it
+    m->codec->rc_max_rate = std::int64_t{def.maxKilobitsPerSecond} * 1000;
+    m->codec->rc_buffer_size = def.maxKilobitsPerSecond * 1000;
+  }
   if (int err = avcodec_open2(m->codec, x264, nullptr); err < 0) return m->abandon(m->error("cannot open the H.264 encoder", err));
   if (int err = avcodec_parameters_from_context(m->stream->codecpar, m->codec); err < 0) return m->abandon(m->error("cannot set up the stream", err));
   m->stream->time_base = m->codec->time_base;

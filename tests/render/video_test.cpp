@@ -81,6 +81,37 @@ TEST(Video, DecodesToTheFramesWritten) {
   }
 }
 
+// Frames of noise, new each frame: the hardest picture to compress (deterministic, a fixed LCG).
+Image noise(int w, int h, std::uint32_t& state) {
+  Image img = solid(w, h, 0);
+  for (std::size_t i = 0; i < img.rgba.size(); ++i) {
+    state = state * 1664525u + 1013904223u;
+    if (i % 4 != 3) img.rgba[i] = static_cast<std::uint8_t>(state >> 24);
+  }
+  return img;
+}
+
+// A bitrate cap keeps a video within its budget however hard its pictures are: 10 s of noise at
+// 200 kbit/s is about 250 kB (x264's VBV may overshoot a little: 10% allowed); without the cap the
+// same frames take megabytes. The capped video still decodes to every frame.
+TEST(Video, ACappedBitrateKeepsTheFileWithinItsBudget) {
+  const fs::path dir = scratch("capped");
+  std::uintmax_t bytes[2] = {};
+  for (int capped : {0, 1}) {
+    const std::string path = (dir / (capped ? "capped.mp4" : "free.mp4")).string();
+    Result<VideoWriter> v = VideoWriter::open({.path = path, .width = 320, .height = 240, .fps = 30, .maxKilobitsPerSecond = capped ? 200 : 0});
+    ASSERT_TRUE(v.ok()) << v.error();
+    std::uint32_t state = 7;
+    for (int i = 0; i < 300; ++i) ASSERT_TRUE(v.value().write(noise(320, 240, state)).ok());
+    ASSERT_TRUE(v.value().close().ok());
+    bytes[capped] = fs::file_size(path);
+  }
+  EXPECT_LE(bytes[1], 1.1 * 10 * 200'000 / 8) << bytes[1];
+  EXPECT_GT(bytes[0], 4 * bytes[1]) << bytes[0];
+  const Decoded d = decode((dir / "capped.mp4").string(), false);
+  EXPECT_EQ(d.frames, 300);
+}
+
 TEST(Video, OddFrameSizeIsRejectedBeforeAnyFileExists) {
   const fs::path dir = scratch("odd");
   const VideoDef def{.path = (dir / "odd.mp4").string(), .width = 641, .height = 480};

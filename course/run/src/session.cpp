@@ -74,7 +74,13 @@ const worlds::Landmark* findGoal(const worlds::WorldDef& world) {
 }
 
 render::VideoDef videoDef(const RunDef& def) {
-  return {.path = def.outputs.video, .width = def.view.width, .height = def.view.height, .fps = def.fps};
+  render::VideoDef v{.path = def.outputs.video, .width = def.view.width, .height = def.view.height, .fps = def.fps};
+  if (def.outputs.videoBytes > 0) {  // a bitrate for the video's length (the run's at most) and its 1 s buffer, 5% kept for the container
+    const double seconds = def.seconds / def.speed + 1.0;
+    v.maxKilobitsPerSecond = std::max(1, static_cast<int>(0.95 * 8.0 * static_cast<double>(def.outputs.videoBytes) / seconds / 1000.0));
+    v.preset = "veryfast";  // fewer bits for the same picture than ultrafast, at a few times its encoding time
+  }
+  return v;
 }
 
 // What a run keeps of one robot as it goes.

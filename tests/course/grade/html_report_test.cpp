@@ -52,7 +52,9 @@ Report writeReport(const std::string& name) {
   r.video = r.dir / "run.mp4";
   r.plot = r.dir / "plot.png";
   r.grade.checks[1].runs[0].reason = kHostile;
-  Result<render::VideoWriter> v = render::VideoWriter::open({.path = r.video.string(), .width = kVideoW, .height = kVideoH, .fps = kFps});
+  // Encoded as a report's film is (a capped bitrate, x264's veryfast: High profile, B-frames).
+  Result<render::VideoWriter> v = render::VideoWriter::open(
+      {.path = r.video.string(), .width = kVideoW, .height = kVideoH, .fps = kFps, .preset = "veryfast", .maxKilobitsPerSecond = 120});
   EXPECT_TRUE(v.ok()) << v.error();
   for (int i = 0; i < kVideoFrames && v.ok(); ++i) EXPECT_TRUE(v.value().write(solid(kVideoW, kVideoH, kVideoColour)).ok());
   if (v.ok()) EXPECT_TRUE(v.value().close().ok());

@@ -61,6 +61,25 @@ TEST(Session, EndsWhenTheControllerTaskReturns) {
   EXPECT_EQ(r.lastTasks[0].how, TaskEnd::Returned);
 }
 
+// A video with a budget fits in it whatever the run's length: the bitrate is capped for the run's
+// seconds (a grade report's film). Without one the same run takes several times as much.
+TEST(Session, AVideoWithABudgetFitsInIt) {
+  std::uintmax_t bytes[2] = {};
+  for (std::uint64_t budget : {std::uint64_t{0}, std::uint64_t{60'000}}) {
+    const fs::path video = tempPath(budget == 0 ? "free.mp4" : "budget.mp4");
+    Result<Summary> s = runSession({.world = room(),
+                                    .worldName = "room",
+                                    .controllers = {inlineController(makeController([] { return forwardFor(20.0); }))},
+                                    .seconds = 8,
+                                    .wholeTime = true,
+                                    .outputs = {.video = video.string(), .videoBytes = budget}});
+    ASSERT_TRUE(s.ok()) << s.error();
+    bytes[budget == 0 ? 0 : 1] = fs::file_size(video);
+  }
+  EXPECT_LE(bytes[1], 60'000u);
+  EXPECT_GT(bytes[0], 2 * bytes[1]);
+}
+
 // The plot's time axis ends where the run ended (1.5 s), not at the run's limit (10 s): the forward
 // speed, drawn in blue, reaches the right end of its chart.
 TEST(Session, ThePlotEndsWhereTheRunEnded) {

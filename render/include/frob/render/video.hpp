@@ -20,6 +20,7 @@ struct VideoDef {
   int crf = 23;                      ///< x264 constant rate factor: lower is better and larger
   std::string preset = "ultrafast";  ///< x264 preset: ultrafast (fastest, larger files) ... veryslow
   int threads = 2;                   ///< x264 encoding threads (frames are converted to YUV on the writer's thread); 0: x264 picks
+  int maxKilobitsPerSecond = 0;      ///< 0: the crf alone sets the size; else the bitrate stays under this (x264's VBV, 1 s buffer)
 };
 
 /// Checks a VideoDef without writing anything: sizes, frame rate, encoder, output directory.

@@ -23,11 +23,12 @@ namespace frob::course {
 /// The files a run writes; an empty path is not written. Each appears only once the run has
 /// completed: a run whose controller fails leaves none of them behind.
 struct RunOutputs {
-  std::string video;     ///< MP4 of the run
-  std::string frames;    ///< folder for one PNG per video frame, frame_000000.png on (made if missing)
-  std::string plot;      ///< PNG of the plotted signals over the whole run
-  std::string trace;     ///< CSV, one row per robot per step: poses, wheels, sonars, bumper, current task
-  std::string timeline;  ///< task timeline as Chrome/Perfetto trace-event JSON
+  std::string video;             ///< MP4 of the run
+  std::uint64_t videoBytes = 0;  ///< 0: any size; else the video's bitrate is capped so that the whole run fits in about this many bytes
+  std::string frames;            ///< folder for one PNG per video frame, frame_000000.png on (made if missing)
+  std::string plot;              ///< PNG of the plotted signals over the whole run
+  std::string trace;             ///< CSV, one row per robot per step: poses, wheels, sonars, bumper, current task
+  std::string timeline;          ///< task timeline as Chrome/Perfetto trace-event JSON
   /// More charts in the plots and the video: "s4" for sonar 4, or the name of a value the tasks
   /// publish (withPlot). Empty: every published value.
   std::vector<std::string> plotSignals;
