@@ -60,6 +60,18 @@ Result<worlds::WorldDef> loadWorldNamed(const std::string& name) {
   return *w;
 }
 
+// The world a controller names (FROB_CONTROLLER's .world): a file beside the controller, a reference
+// world, a file in the working folder, or one of the course (assignments/...), in that order, so a
+// starter copied anywhere still finds its world.
+std::string controllerWorld(const std::string& world, const std::string& source) {
+  std::error_code ec;
+  const fs::path beside = fs::path(source).parent_path() / world, course = frob::layout().assignments.parent_path() / world;
+  if (fs::path(world).is_absolute() || worlds::findWorld(world) != nullptr) return world;
+  if (fs::is_regular_file(beside, ec)) return beside.string();
+  if (!fs::exists(world, ec) && fs::is_regular_file(course, ec)) return course.string();
+  return world;
+}
+
 // A controller by file (.cpp compiled, .so as it is) or by example name, as a module.
 Result<course::CompiledController> compileController(const std::string& name, bool quiet, const course::CompilerSetup& setup) {
   const fs::path path(name);
@@ -127,7 +139,7 @@ int runCommand(RunArgs a) {
     def.controllers.push_back(std::move(c.value()));
   }
   const ControllerOptions& defaults = def.controllers.front().entry.options;
-  def.worldName = a.world.empty() ? defaults.world : a.world;
+  def.worldName = a.world.empty() ? controllerWorld(defaults.world, def.controllers.front().source) : a.world;
   Result<worlds::WorldDef> world = loadWorldNamed(def.worldName);
   if (!world) return fail(world.error());
   def.world = std::move(world.value());

@@ -78,6 +78,26 @@ TEST(FrobRun, TheReadmeTutorialWorks) {
   EXPECT_NE(r.out.find("collisions 0"), std::string::npos) << r.out;
 }
 
+// A controller's world is found beside it, then among the reference worlds, in the working folder
+// and in the course: a starter copied to a folder of one's own runs in its assignment's world, and
+// a world file beside a controller is found from any working folder.
+TEST(FrobRun, AControllersWorldIsFoundBesideItOrInTheCourse) {
+  const fs::path dir = freshFolder("world_beside");
+  fs::create_directories(dir / "mine");
+  fs::copy_file(FROB_SOURCE_DIR "/assignments/go_to_goal/starter.cpp", dir / "mine" / "starter.cpp");
+  const FrobResult starter = runFrob(dir / "mine", {"run", "starter.cpp", "--seconds", "1", "--quiet"});
+  ASSERT_EQ(starter.status, 0) << starter.err;
+  EXPECT_NE(starter.out.find("assignments/go_to_goal/worlds/lounge.toml"), std::string::npos) << starter.out;
+  std::ofstream(dir / "mine" / "box.toml") << "size = [4.0, 4.0]\n[[robot]]\nname = \"boxed\"\nstart = [2.0, 2.0]\n";
+  std::string beside = controller("0.1");
+  beside.replace(beside.find("\"empty\""), 7, "\"box.toml\"");
+  write(dir / "mine", "boxed.cpp", beside);
+  const FrobResult r = runFrob(dir, {"run", "mine/boxed.cpp", "--quiet"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("mine/box.toml"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("boxed"), std::string::npos) << r.out;
+}
+
 TEST(FrobRun, SameSeedSameTrace) {
   const fs::path dir = freshFolder("same_seed");
   write(dir, "slow.cpp", controller("0.2"));
