@@ -36,7 +36,7 @@ namespace frob {
 /// `out1` at or after that instant is a run-time error naming the task and the instants, as the
 /// paper says: the first's output exists only while it runs.
 template <class F1, class F2>
-[[nodiscard]] auto withTask(F1 t1f, F2 t2f, std::source_location loc = std::source_location::current()) {
+[[nodiscard]] auto withTask(F1 t1f, F2 t2f, std::source_location loc = detail::callSite()) {
   using A2 = detail::FedOutput<F1>;
   using T1 = std::invoke_result_t<F1&, Behavior<A2>>;
   using A1 = typename T1::output_type;
@@ -50,7 +50,7 @@ template <class F1, class F2>
 template <class A, class BP, class BQ, class M>
   requires std::invocable<M&, const A&, const A&>
 [[nodiscard]] Task<A, std::pair<ResultOf<BP>, ResultOf<BQ>>> parallel(Task<A, BP> p, Task<A, BQ> q, M merge,
-                                                                      std::source_location loc = std::source_location::current()) {
+                                                                      std::source_location loc = detail::callSite()) {
   return detail::bothOf(std::move(p), std::move(q), std::move(merge)).at(loc).named("parallel");
 }
 
@@ -59,13 +59,13 @@ template <class A, class BP, class BQ, class M>
 template <class A, class BP, class BQ, class M>
   requires std::invocable<M&, const A&, const A&>
 [[nodiscard]] Task<A, std::variant<ResultOf<BP>, ResultOf<BQ>>> disable(Task<A, BP> p, Task<A, BQ> q, M merge,
-                                                                        std::source_location loc = std::source_location::current()) {
+                                                                        std::source_location loc = detail::callSite()) {
   return detail::firstOf(std::move(p), std::move(q), std::move(merge)).at(loc).named("disable");
 }
 
 /// Lyons' P <> Q (synchronous loop): p, then q, then again, forever. `pf` and `qf` make the tasks.
 template <class PF, class QF>
-[[nodiscard]] auto syncLoop(PF pf, QF qf, std::source_location loc = std::source_location::current()) {
+[[nodiscard]] auto syncLoop(PF pf, QF qf, std::source_location loc = detail::callSite()) {
   using A = typename std::invoke_result_t<PF&>::output_type;
   return detail::loop<A>(std::move(pf), std::move(qf)).at(loc).named("syncLoop");
 }
@@ -74,7 +74,7 @@ template <class PF, class QF>
 /// p again, and so on. The output is the loop's merged with every q still running; finished q's
 /// are dropped, and an error in any q fails the loop.
 template <class PF, class QF, class M>
-[[nodiscard]] auto asyncLoop(PF pf, QF qf, M merge, std::source_location loc = std::source_location::current()) {
+[[nodiscard]] auto asyncLoop(PF pf, QF qf, M merge, std::source_location loc = detail::callSite()) {
   using A = typename std::invoke_result_t<PF&>::output_type;
   using BQ = typename std::invoke_result_t<QF&>::result_type;
   return detail::spawningLoop<A, BQ>(std::move(pf), std::move(qf), std::move(merge)).at(loc).named("asyncLoop");

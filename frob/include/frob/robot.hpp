@@ -2,6 +2,7 @@
 /// The sensor side of one robot, as behaviors and events. A controller sees only this.
 
 #include "frob/debug.hpp"
+#include "frob/detail/call_site.hpp"
 #include "frob/detail/robot.hpp"
 #include "frob/event.hpp"
 #include "frob/robot_values.hpp"
@@ -51,7 +52,7 @@ class Robot {
   [[nodiscard]] const RobotSpec& spec() const;
   /// Range of sonar `i` (0 = front, counter-clockwise), metres. An index outside the ring is a
   /// mistake: UsageError naming the index, the ring's size and the caller's file and line.
-  [[nodiscard]] Reading<double> sonar(int i, std::source_location loc = std::source_location::current()) const;
+  [[nodiscard]] Reading<double> sonar(int i, std::source_location loc = detail::callSite()) const;
   /// All sonar ranges, metres.
   [[nodiscard]] Behavior<std::vector<double>> sonars() const;
   /// The index of the sonar pointing nearest to `angle` (radians from the heading).
@@ -77,9 +78,7 @@ class Robot {
 };
 
 /// The paper's sensor functions, in C++.
-[[nodiscard]] inline Reading<double> sonar(const Robot& r, int i, std::source_location loc = std::source_location::current()) {
-  return r.sonar(i, loc);
-}
+[[nodiscard]] inline Reading<double> sonar(const Robot& r, int i, std::source_location loc = detail::callSite()) { return r.sonar(i, loc); }
 [[nodiscard]] inline Behavior<std::vector<double>> sonars(const Robot& r) { return r.sonars(); }
 [[nodiscard]] Reading<double> frontSonar(const Robot& r);
 [[nodiscard]] Reading<double> leftSonar(const Robot& r);

@@ -88,7 +88,7 @@ class [[nodiscard("a Task does nothing unless you co_await it")]] Task {
 /// for an Event<Unit>). Its timeline name is the function that calls mkTask.
 template <class F>
   requires std::invocable<F&, const TaskState&>
-[[nodiscard]] auto mkTask(F f, std::source_location loc = std::source_location::current()) {
+[[nodiscard]] auto mkTask(F f, std::source_location loc = detail::callSite()) {
   if constexpr (detail::checkTaskParts<detail::MkTaskParts<F>>()) {
     using A = detail::MkTaskOutput<F>;
     using E = detail::MkTaskExit<F>;
@@ -99,7 +99,7 @@ template <class F>
 /// The paper's mkTaskE: as mkTask, with a third element, an Event<RoboErr> that fails the task.
 template <class F>
   requires std::invocable<F&, const TaskState&>
-[[nodiscard]] auto mkTaskE(F f, std::source_location loc = std::source_location::current()) {
+[[nodiscard]] auto mkTaskE(F f, std::source_location loc = detail::callSite()) {
   static_assert(std::tuple_size_v<detail::MkTaskParts<F>> == 3, "mkTaskE's function returns std::tuple{behavior, exit event, error event}");
   return mkTask(std::move(f), loc);
 }

@@ -36,7 +36,7 @@ namespace frob {
 /// again by the handler's task (event.hpp: one occurrence is delivered once).
 template <class A, class B, class H>
   requires std::invocable<H&, const RoboErr&>
-[[nodiscard]] Task<A, B> taskCatch(Task<A, B> t, H handler, std::source_location loc = std::source_location::current()) {
+[[nodiscard]] Task<A, B> taskCatch(Task<A, B> t, H handler, std::source_location loc = detail::callSite()) {
   std::string inner = t.name();
   return detail::catching(std::move(t), std::move(handler)).at(loc).named("taskCatch(" + inner + ")");
 }
@@ -45,7 +45,7 @@ template <class A, class B, class H>
 /// RoboErr that a taskCatch inside `t` can catch. Each occurrence fails the subtask running at its
 /// instant, once: a handler's task started in that instant runs on.
 template <class A, class B>
-[[nodiscard]] Task<A, B> addError(Event<RoboErr> error, Task<A, B> t, std::source_location loc = std::source_location::current()) {
+[[nodiscard]] Task<A, B> addError(Event<RoboErr> error, Task<A, B> t, std::source_location loc = detail::callSite()) {
   std::string name = "addError(" + t.name() + ")";
   auto asException = error.map([](const RoboErr& e) { return std::make_exception_ptr(e); });
   return detail::interrupted(std::move(t), std::move(asException)).at(loc).named(std::move(name));
@@ -56,7 +56,7 @@ template <class A, class B>
 /// can hold it up: the limit holds). For a task without a result (Task<A>), a bool: true
 /// when `t` ended in time, so `if (!co_await timeLimit(t, 5_s))` reads "if it ran out of time".
 template <class A, class B>
-[[nodiscard]] Task<A, TimeLimitResult<B>> timeLimit(Task<A, B> t, double seconds, std::source_location loc = std::source_location::current()) {
+[[nodiscard]] Task<A, TimeLimitResult<B>> timeLimit(Task<A, B> t, double seconds, std::source_location loc = detail::callSite()) {
   std::string name = "timeLimit(" + t.name() + ")";
   return detail::limited(std::move(t), seconds).at(loc).named(std::move(name));
 }
@@ -65,7 +65,7 @@ template <class A, class B>
 /// returns the event's value, also when `t` ends at that very instant. If `t` ends first, that is
 /// an error (RoboErr).
 template <class X, class A, class B>
-[[nodiscard]] Task<A, X> withExit(Event<X> exit, Task<A, B> t, std::source_location loc = std::source_location::current()) {
+[[nodiscard]] Task<A, X> withExit(Event<X> exit, Task<A, B> t, std::source_location loc = detail::callSite()) {
   std::string name = "withExit(" + t.name() + ")";
   return detail::exiting(std::move(exit), std::move(t)).at(loc).named(std::move(name));
 }
@@ -76,7 +76,7 @@ template <class X, class A, class B>
 /// mkTask's function does: it stays put while `t`'s subtasks run.
 template <class F, class A, class B>
   requires std::invocable<F&, const TaskState&>
-[[nodiscard]] auto withB(F f, Task<A, B> t, std::source_location loc = std::source_location::current()) {
+[[nodiscard]] auto withB(F f, Task<A, B> t, std::source_location loc = detail::callSite()) {
   using C = ValueOf<std::invoke_result_t<F&, const TaskState&>>;
   std::string name = "withB(" + t.name() + ")";
   return detail::beside<C>(std::move(f), std::move(t)).at(loc).named(std::move(name));
@@ -86,7 +86,7 @@ template <class F, class A, class B>
 /// step late (so that a controller can feed back on its output without an algebraic loop).
 /// `f` may be a generic lambda ([](auto mine) { ... }): `mine` is then a Behavior<Wheels>.
 template <class F>
-[[nodiscard]] auto withMyResult(F f, std::source_location loc = std::source_location::current()) {
+[[nodiscard]] auto withMyResult(F f, std::source_location loc = detail::callSite()) {
   using A = detail::FedOutput<F>;
   using B = typename std::invoke_result_t<F&, Behavior<A>>::result_type;
   return detail::fedBack<A, B>(std::move(f)).at(loc).named("withMyResult");
@@ -95,14 +95,14 @@ template <class F>
 /// The paper's withFilter: every output of `t` and its subtasks passes through `f`, either a
 /// function of values (A -> A) or of behaviors (Behavior<A> -> Behavior<A>).
 template <class F, class A, class B>
-[[nodiscard]] Task<A, B> withFilter(F f, Task<A, B> t, std::source_location loc = std::source_location::current()) {
+[[nodiscard]] Task<A, B> withFilter(F f, Task<A, B> t, std::source_location loc = detail::callSite()) {
   std::string name = "withFilter(" + t.name() + ")";
   return detail::filtered(std::move(t), detail::asFilter<A>(std::move(f))).at(loc).named(std::move(name));
 }
 
 /// The paper's withPicture: `p` is drawn (in world coordinates) while `t` runs.
 template <class A, class B>
-[[nodiscard]] Task<A, B> withPicture(Behavior<Picture> p, Task<A, B> t, std::source_location loc = std::source_location::current()) {
+[[nodiscard]] Task<A, B> withPicture(Behavior<Picture> p, Task<A, B> t, std::source_location loc = detail::callSite()) {
   std::string name = "withPicture(" + t.name() + ")";
   return detail::publishing(std::move(t), std::move(p)).at(loc).named(std::move(name));
 }
@@ -110,7 +110,7 @@ template <class A, class B>
 /// Plots `b` under `name` while `t` runs: `frob run --plot` charts it beside the front sonar and
 /// the wheels (e.g. withPlot("left", sonar(r, 4), followWall())).
 template <class A, class B>
-[[nodiscard]] Task<A, B> withPlot(std::string name, Behavior<double> b, Task<A, B> t, std::source_location loc = std::source_location::current()) {
+[[nodiscard]] Task<A, B> withPlot(std::string name, Behavior<double> b, Task<A, B> t, std::source_location loc = detail::callSite()) {
   return withPicture(lift([name = std::move(name)](double v) { return plotValue(name, v); }, std::move(b)), std::move(t), loc);
 }
 

@@ -5,6 +5,7 @@
 // suspends back to the runner, which checks its events each instant and resumes it when one occurs.
 
 #include "frob/debug.hpp"
+#include "frob/detail/call_site.hpp"
 #include "frob/errors.hpp"
 #include "frob/event.hpp"
 #include "frob/task_state.hpp"
@@ -329,7 +330,7 @@ class TaskPromise : public PromiseBase<A>,
                     public std::conditional_t<std::is_void_v<B>, ReturnVoid<TaskPromise<A, B>>, ReturnValue<ResultOf<B>, TaskPromise<A, B>>> {
  public:
   using R = ResultOf<B>;
-  explicit TaskPromise(std::source_location loc = std::source_location::current()) : PromiseBase<A>(loc) {}
+  explicit TaskPromise(std::source_location loc = detail::callSite()) : PromiseBase<A>(loc) {}
 
   Task<A, B> get_return_object() { return Task<A, B>(std::coroutine_handle<TaskPromise>::from_promise(*this)); }
   std::suspend_always initial_suspend() noexcept { return {}; }
