@@ -28,6 +28,16 @@ int fail(const std::string& message, int status = 1) {
   return status;
 }
 
+// The sandbox's layers this machine could not apply, said once to the instructor (on stderr, which
+// Gradescope and PrairieLearn show to staff only), never in what a student reads.
+void warnOfMissingLayers(const std::vector<course::Grade>& grades) {
+  for (const course::Grade& g : grades) {
+    if (g.sandboxMissing.empty()) continue;
+    std::cerr << "frob: the controllers ran with parts of their sandbox missing on this machine:\n" << g.sandboxMissing;
+    return;
+  }
+}
+
 // The instructor's secret: the file's first line, else $FROB_GRADE_SECRET.
 Result<std::string> readSecret(const std::string& file) {
   if (file.empty()) {
@@ -167,6 +177,7 @@ int gradeCommand(const GradeArgs& a) {
   if (!fs::is_directory(a.submission)) {
     if (!fs::exists(a.submission)) return fail("no submission '" + a.submission + "'", 2);
     const course::Grade g = course::grade(def, course::submissionOf(a.submission));
+    warnOfMissingLayers({g});
     std::cout << course::scoreTable(g);
     if (Status s = writeOutputs(a, def, g); !s) return fail(s.error());
     return 0;
@@ -191,6 +202,7 @@ int gradeCommand(const GradeArgs& a) {
     bar.show(static_cast<double>(done) / static_cast<double>(total), detail);
   });
   bar.finish();
+  warnOfMissingLayers(grades);
   for (const course::Grade& g : grades) {
     std::printf("%-40s %6.2f / %.2f%s\n", g.submission.c_str(), g.score(), g.maxScore(), g.compileError.empty() ? "" : "  (did not compile)");
   }

@@ -60,6 +60,30 @@ TEST(GradeCli, ASubmissionThatFailsStillExitsZeroWithItsScore) {
   EXPECT_NE(r.out.find("never came within 0.40 m of goal"), std::string::npos) << r.out;
 }
 
+// A machine that cannot make namespaces (here a user namespace that allows none inside it, as a
+// chroot or a container's seccomp profile may) still grades, and the instructor is told on stderr;
+// nothing a student reads (results, scores) says which layer is missing.
+TEST(GradeCli, ASandboxLayerThisMachineLacksIsSaidToTheInstructorOnly) {
+  const fs::path dir = assignment("grade_cli_layers");
+  std::ofstream(dir / "fast.cpp") << driver("0.5");
+  const std::string noNamespaces = "echo 0 > /proc/sys/user/max_user_namespaces && exec \"$0\" \"$@\"";
+  const FrobResult r = runCommand(dir, {"/usr/bin/unshare", "--user", "--map-root-user", "sh", "-c", noNamespaces, FROB_EXECUTABLE, "grade",
+                                        "forward", "fast.cpp", "--results", "r.json"});
+  if (r.status != 0 && r.err.find("unshare: ") == 0) GTEST_SKIP() << "no user namespace to test in: " << r.err;
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("frob: the controllers ran with parts of their sandbox missing on this machine:\n"), 0u) << r.err;
+  EXPECT_NE(r.err.find("\nnamespaces: NOT applied (not available: unshare: No space left on device"), std::string::npos) << r.err;
+  // Root there, but nobody has no uid in that namespace: the controller stays root, and that is said too.
+  EXPECT_NE(r.err.find("\nunprivileged user: NOT applied"), std::string::npos) << r.err;
+  const std::string results = readFile(dir / "r.json");
+  EXPECT_EQ(nlohmann::json::parse(results)["score"], 3.0);
+  EXPECT_EQ(results.find("namespaces"), std::string::npos) << results;
+  EXPECT_EQ(r.out.find("namespaces"), std::string::npos) << r.out;
+  // Where every layer is there, nothing is said.
+  const FrobResult whole = runFrob(dir, {"grade", "forward", "fast.cpp"});
+  EXPECT_EQ(whole.err.find("sandbox missing"), std::string::npos) << whole.err;
+}
+
 TEST(GradeCli, AClassInShardsMergesToTheWholeClassesGradebook) {
   const fs::path dir = assignment("grade_cli_class");
   fs::create_directories(dir / "class" / "dana");

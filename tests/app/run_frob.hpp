@@ -12,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 extern char** environ;
@@ -39,12 +40,9 @@ inline std::string readFile(const std::filesystem::path& path) {
   return s.str();
 }
 
-// Runs `frob args...` with `dir` as its working folder; controllers compile into `cache`; its
-// temporary folder is `temp` when given.
-inline FrobResult runFrob(const std::filesystem::path& dir, const std::vector<std::string>& args, const std::string& cache = FROB_TEST_CACHE_DIR,
-                          const std::filesystem::path& temp = {}) {
-  std::vector<std::string> all{FROB_EXECUTABLE};
-  all.insert(all.end(), args.begin(), args.end());
+// Runs `command` (a program's path, then its arguments) as runFrob() runs frob.
+inline FrobResult runCommand(const std::filesystem::path& dir, std::vector<std::string> all, const std::string& cache = FROB_TEST_CACHE_DIR,
+                             const std::filesystem::path& temp = {}) {
   std::vector<char*> argv;
   for (std::string& a : all) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -76,6 +74,15 @@ inline FrobResult runFrob(const std::filesystem::path& dir, const std::vector<st
   std::filesystem::remove(out);
   std::filesystem::remove(err);
   return r;
+}
+
+// Runs `frob args...` with `dir` as its working folder; controllers compile into `cache`; its
+// temporary folder is `temp` when given.
+inline FrobResult runFrob(const std::filesystem::path& dir, const std::vector<std::string>& args, const std::string& cache = FROB_TEST_CACHE_DIR,
+                          const std::filesystem::path& temp = {}) {
+  std::vector<std::string> all{FROB_EXECUTABLE};
+  all.insert(all.end(), args.begin(), args.end());
+  return runCommand(dir, std::move(all), cache, temp);
 }
 
 // The files in `dir`, by name.

@@ -222,9 +222,10 @@ double Grade::maxScore() const {
 
 namespace {
 
-// Run `r` (its world and seed set) of `check` by the compiled controller, judged; the host's notes added to `notes`.
+// Run `r` (its world and seed set) of `check` by the compiled controller, judged; the host's notes and
+// the sandbox's missing layers added to `g`.
 void runCheck(const GradeDef& def, const CompiledController& compiled, const Check& check, const WorldRef& ref, const worlds::WorldDef& world,
-              RunGrade& r, std::vector<std::string>& notes) {
+              RunGrade& r, Grade& g) {
   Result<RobotHosts> hosts = RobotHosts::start({compiled.module}, {compiled.source}, {0}, world.robots.size(), def.host);
   if (!hosts) {
     r.reason = hosts.error();
@@ -236,8 +237,9 @@ void runCheck(const GradeDef& def, const CompiledController& compiled, const Che
   r.trajectoryHash = ran.trajectoryHash;
   r.hints = ran.hints;
   for (std::string& n : hosts.value().notes()) {
-    if (std::find(notes.begin(), notes.end(), n) == notes.end()) notes.push_back(std::move(n));
+    if (std::find(g.notes.begin(), g.notes.end(), n) == g.notes.end()) g.notes.push_back(std::move(n));
   }
+  g.sandboxMissing = missingLayers(hosts.value().layers());
   if (!def.logs.empty()) {
     std::error_code ec;
     fs::create_directories(def.logs, ec);
@@ -318,7 +320,7 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
     starter = s.value();
   }
   KeptWorlds kept;
-  std::vector<std::string> notes;
+  Grade scratch;         // the reference's runs' notes, unused
   GradeDef quiet = def;  // the reference's runs leave no logs
   quiet.logs.clear();
   for (const Check& check : rubric.checks) {
@@ -332,7 +334,7 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
       const auto passesAll = [&](const CompiledController& controller) {
         for (std::uint64_t seed : seedsOf(check, def.secret)) {
           RunGrade r{.world = ref.name, .seed = seed};
-          runCheck(quiet, controller, check, ref, world.value(), r, notes);
+          runCheck(quiet, controller, check, ref, world.value(), r, scratch);
           if (!r.passed) return false;
         }
         return true;
@@ -382,7 +384,7 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
           r.reason = "the world could not be loaded: " + world.error();
         } else {
           const auto began = std::chrono::steady_clock::now();
-          runCheck(def, compiled.value(), check, w, world.value(), r, g.notes);
+          runCheck(def, compiled.value(), check, w, world.value(), r, g);
           r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
         }
       }

@@ -94,8 +94,9 @@ int main(int argc, char** argv) {
   ::syscall(SYS_close_range, from, ~0U, 0);
   files.execute.push_back(command[0]);
   if (std::string loader = interpreterOf(program); !loader.empty()) files.execute.push_back(loader);
+  const Layer resources = limitResources(limits);  // while /proc/self is still its own to write
   const Layer user = keepUser ? Layer{"unprivileged user", false, false, "not asked for: it runs as the caller"} : dropPrivileges(uid, gid);
-  std::vector<Layer> layers{limitResources(limits), user, enterNamespaces(namespaces)};
+  std::vector<Layer> layers{resources, user, enterNamespaces(namespaces)};
   if (::chdir(cwd.c_str()) != 0) return 127;  // into the tmpfs, if one now covers it
   layers.push_back(noNewPrivileges());
   layers.push_back(restrictFiles(files));

@@ -348,6 +348,17 @@ TEST(Sandbox, AMultiRobotRunNamesTheRobotWhoseControllerFailed) {
   EXPECT_EQ(o.failures[0].message, "bob: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.50 s");
 }
 
+// A grader's container may hold less memory than the controller's limit: then the kernel's choice
+// of what to kill must fall on the controller, never on frob.
+TEST(Sandbox, WhenMemoryRunsShortTheKernelKillsTheControllerFirst) {
+  Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start({testing::hostileModule("starts_thread")}, {"t"});
+  ASSERT_TRUE(host) << host.error();
+  std::ifstream score("/proc/" + std::to_string(host.value()->processId()) + "/oom_score_adj");
+  std::string adj;
+  ASSERT_TRUE(std::getline(score, adj));
+  EXPECT_EQ(adj, "1000");
+}
+
 TEST(Sandbox, TheHostDiesWithTheProcessThatStartedIt) {
   int pipeFds[2];
   ASSERT_EQ(::pipe(pipeFds), 0);

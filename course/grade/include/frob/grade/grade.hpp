@@ -81,7 +81,8 @@ struct Grade {
   std::string submission;    ///< the file or folder, as given
   std::string compileError;  ///< the compiler's complaint when it did not compile (then every check scores 0)
   std::vector<CheckGrade> checks;
-  std::vector<std::string> notes;  ///< e.g. output that was cut, sandbox layers missing
+  std::vector<std::string> notes;  ///< e.g. output that was cut
+  std::string sandboxMissing;      ///< the sandbox's layers this machine could not apply, one per line; for the instructor only
   double wallSeconds = 0.0;        ///< how long grading took (with the runs' and startedAt, the only fields that differ between two gradings)
   std::string startedAt;           ///< when grading began, UTC, as 2026-12-02T21:58:37
   [[nodiscard]] double score() const;
