@@ -14,6 +14,7 @@
 #include "progress.hpp"
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <unistd.h>
 
@@ -119,8 +120,32 @@ struct RunArgs {
   int fps = 30;
   std::optional<double> speed;
   course::RunOutputs outputs;
+  std::string assignment;  // judge the run against this assignment's checks
   bool json = false, quiet = false, sandbox = true, check = false;
 };
+
+// "PASS  visits the waypoints in order: waypoints" lines, one per criterion of each check.
+std::string formatVerdicts(const std::string& assignment, const std::vector<course::CriterionVerdict>& verdicts, double ran) {
+  std::string out = "Against " + assignment + "'s checks (judged as frob grade judges a run; a grade runs other worlds and seeds too):\n";
+  for (const course::CriterionVerdict& v : verdicts) {
+    out += std::string(v.passed ? "  PASS  " : "  FAIL  ") + v.check + ": " + v.criterion + (v.passed ? "" : ": " + v.reason);
+    char judged[48] = "";
+    if (v.seconds + 1e-9 < ran) std::snprintf(judged, sizeof judged, " (on its first %.1f s)", v.seconds);
+    out += std::string(judged) + "\n";
+  }
+  return out;
+}
+
+// The summary's JSON with "assignment": {"name", "checks": [{check, criterion, seconds, passed, reason}]}.
+std::string withVerdicts(const std::string& json, const std::string& assignment, const std::vector<course::CriterionVerdict>& verdicts) {
+  nlohmann::ordered_json doc = nlohmann::ordered_json::parse(json);
+  nlohmann::ordered_json checks = nlohmann::ordered_json::array();
+  for (const course::CriterionVerdict& v : verdicts) {
+    checks.push_back({{"check", v.check}, {"criterion", v.criterion}, {"seconds", v.seconds}, {"passed", v.passed}, {"reason", v.reason}});
+  }
+  doc["assignment"] = {{"name", assignment}, {"checks", checks}};
+  return doc.dump(1) + "\n";
+}
 
 int runCommand(RunArgs a) {
   const bool demo = a.controllers.empty();
@@ -138,12 +163,25 @@ int runCommand(RunArgs a) {
     if (!c) return fail(c.error());
     def.controllers.push_back(std::move(c.value()));
   }
+  std::optional<course::Rubric> rubric;
+  if (!a.assignment.empty()) {  // judged as a grade judges: the whole time of its longest check
+    Result<fs::path> file = course::findRubric(a.assignment);
+    if (!file) return fail(file.error());
+    Result<course::Rubric> r = course::loadRubric(file.value());
+    if (!r) return fail(r.error());
+    rubric = std::move(r.value());
+    def.keepRecord = def.wholeTime = true;
+  }
   const ControllerOptions& defaults = def.controllers.front().entry.options;
   def.worldName = a.world.empty() ? controllerWorld(defaults.world, def.controllers.front().source) : a.world;
   Result<worlds::WorldDef> world = loadWorldNamed(def.worldName);
   if (!world) return fail(world.error());
   def.world = std::move(world.value());
   def.seconds = a.seconds.value_or(defaults.seconds);
+  if (rubric && !a.seconds) {
+    def.seconds = 0.0;
+    for (const course::Check& c : course::checksFor(*rubric, def.worldName)) def.seconds = std::max(def.seconds, c.seconds);
+  }
   if (Status s = parseSize(a.size, def.view); !s) return fail(s.error());
   def.view.view = a.view == "chase" ? render::ViewMode::Chase : render::ViewMode::TopDown;
   if (Status s = course::validate(def); !s) return fail(s.error());
@@ -160,8 +198,10 @@ int runCommand(RunArgs a) {
   const double wall = secondsSince(start);
   bar.finish();
   if (!summary) return fail(summary.error());
-  if (a.json) std::cout << course::summaryJson(summary.value(), wall);
   const course::Summary& sum = summary.value();
+  const std::vector<course::Check> checks = rubric ? course::checksFor(*rubric, def.worldName) : std::vector<course::Check>{};
+  const std::vector<course::CriterionVerdict> verdicts = course::judgeChecks(checks, sum.record.value_or(course::RunRecord{}));
+  if (a.json) std::cout << (rubric ? withVerdicts(course::summaryJson(sum, wall), a.assignment, verdicts) : course::summaryJson(sum, wall));
   // A layer of the sandbox that this machine could not apply is said, never skipped silently.
   if (const std::string missing = course::missingLayers(sum.sandbox); !missing.empty() && !a.quiet) {
     std::cerr << "frob: the controller ran with parts of its sandbox missing:\n" << missing;
@@ -174,7 +214,7 @@ int runCommand(RunArgs a) {
     if (!a.outputs.empty() && before > 0.0) std::snprintf(hint, sizeof hint, " (--seconds %.2f keeps the run up to the failure)", before);
     return fail("the controller failed: " + r.failure + "; no output files were written" + hint);
   }
-  if (!a.json) std::cout << course::formatSummary(sum, wall);
+  if (!a.json) std::cout << course::formatSummary(sum, wall) << (rubric ? formatVerdicts(a.assignment, verdicts, sum.simulatedSeconds) : "");
   if (demo && !a.quiet && !a.outputs.video.empty()) std::fprintf(stderr, "frob: now watch %s\n", a.outputs.video.c_str());
   return 0;
 }
@@ -273,6 +313,9 @@ int main(int argc, char** argv) {
   runCmd->add_option("--view", run.view, "top (from above) or chase (behind the first robot)")
       ->capture_default_str()
       ->check(CLI::IsMember({"top", "chase"}));
+  runCmd->add_option("--assignment", run.assignment,
+                     "Judge the run against an assignment's checks, as frob grade judges a run (e.g. go_to_goal): those that run in "
+                     "this world, or all of them in a world of your own; the run lasts the longest one's time");
   runCmd->add_flag("--json", run.json, "Print the summary as JSON");
   runCmd->add_flag("--sandbox,!--no-sandbox", run.sandbox,
                    "Run the controllers in a sandboxed process of their own (the default); --no-sandbox runs them "

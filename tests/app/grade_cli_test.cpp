@@ -84,6 +84,60 @@ TEST(GradeCli, ASandboxLayerThisMachineLacksIsSaidToTheInstructorOnly) {
   EXPECT_EQ(whole.err.find("sandbox missing"), std::string::npos) << whole.err;
 }
 
+// A student checks a run against the assignment in any world, with the judge frob grade uses: each
+// criterion's verdict and reason, the same words a grade gives for a run with that world and seed.
+// "quickly" is judged on its own 1 s of the 3 s run (the longest check's time).
+TEST(GradeCli, FrobRunJudgesARunAgainstTheChecksAsAGradeDoes) {
+  const fs::path dir = assignment("grade_cli_run_assignment");
+  std::ofstream(dir / "forward" / "rubric.toml", std::ios::app) << R"([[check]]
+name = "quickly"
+worlds = ["room.toml"]
+seeds = [1]
+seconds = 1
+goal = { within = 0.4 }
+[[check]]
+name = "elsewhere"
+worlds = ["other.toml"]
+clearance = { min = 0.1 }
+)";
+  fs::copy_file(dir / "forward" / "room.toml", dir / "forward" / "other.toml");
+  std::ofstream(dir / "fast.cpp") << driver("0.5");
+  const FrobResult graded = runFrob(dir, {"grade", "forward", "fast.cpp", "--results", "r.json"});
+  ASSERT_EQ(graded.status, 0) << graded.err;
+  const nlohmann::json results = nlohmann::json::parse(readFile(dir / "r.json"));
+  const std::string output = results["tests"][2]["output"];
+  const std::string prefix = "in room.toml, seed 1: ";
+  ASSERT_EQ(output.find(prefix), 0u) << output;
+  const std::string reason = output.substr(prefix.size(), output.find('\n') - prefix.size());
+  EXPECT_NE(reason.find("never came within 0.40 m of goal"), std::string::npos) << reason;
+
+  const FrobResult run = runFrob(dir, {"run", "fast.cpp", "--world", "forward/room.toml", "--seed", "1", "--assignment", "forward", "--quiet"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("Against forward's checks (judged as frob grade judges a run; a grade runs other worlds and seeds too):\n"
+                         "  PASS  goes forward: goal\n"
+                         "  PASS  no bumps: collisions\n"
+                         "  FAIL  quickly: goal: " +
+                         reason + " (on its first 1.0 s)\n"),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("3.00 s simulated"), std::string::npos) << run.out;
+
+  const FrobResult json = runFrob(dir, {"run", "fast.cpp", "--world", "forward/room.toml", "--seed", "1", "--assignment", "forward", "--json"});
+  ASSERT_EQ(json.status, 0) << json.err;
+  const nlohmann::json checks = nlohmann::json::parse(json.out)["assignment"]["checks"];
+  ASSERT_EQ(checks.size(), 3u) << json.out;  // "elsewhere" runs in another world
+  EXPECT_EQ(checks[2], (nlohmann::json{{"check", "quickly"}, {"criterion", "goal"}, {"seconds", 1.0}, {"passed", false}, {"reason", reason}}));
+  EXPECT_EQ(checks[0]["passed"], true);
+  // In a world of the student's own, every check is judged.
+  fs::copy_file(dir / "forward" / "room.toml", dir / "mine.toml");
+  const FrobResult own = runFrob(dir, {"run", "fast.cpp", "--world", "mine.toml", "--assignment", "forward", "--json"});
+  ASSERT_EQ(own.status, 0) << own.err;
+  EXPECT_EQ(nlohmann::json::parse(own.out)["assignment"]["checks"].size(), 4u) << own.out;
+
+  EXPECT_EQ(runFrob(dir, {"run", "fast.cpp", "--world", "forward/room.toml", "--assignment", "nowhere"}).err,
+            "frob: unknown assignment 'nowhere': not a folder of assignments/ (see frob list), and no rubric.toml there\n");
+}
+
 TEST(GradeCli, AClassInShardsMergesToTheWholeClassesGradebook) {
   const fs::path dir = assignment("grade_cli_class");
   fs::create_directories(dir / "class" / "dana");

@@ -50,40 +50,24 @@ struct Ran {
 // contacts and reported result.
 Ran drive(worlds::Run& run, const worlds::WorldDef& world, std::int64_t steps) {
   const worlds::Simulation& sim = run.simulation();
-  Ran ran{.record = {.size = world.size,
-                     .walls = sim.walls(),
-                     .enclosureWalls = world.enclosed ? 4u : 0u,
-                     .points = world.points,
-                     .keys = world.keys,
-                     .dt = sim.dt()}};
-  for (std::size_t i = 0; i < sim.robotCount(); ++i) {
-    ran.record.robots.push_back(
-        {.name = sim.robotName(i), .radius = sim.robot(i).radius, .path = {sim.truePose(i).position}, .heading = {sim.truePose(i).heading}});
-  }
+  Ran ran;
+  RunRecorder recorder(sim, world);
   Diagnosis diagnosis(sim.walls(), world.size, sim.dt());
   for (std::int64_t k = 0; k < steps && run.failures().empty(); ++k) {
     run.step();
     ran.wheels.push_back(run.commands());
-    const double sensedAt = sim.time() - sim.dt();
+    recorder.stepped(sim);
     for (std::size_t i = 0; i < sim.robotCount(); ++i) {
-      Track& t = ran.record.robots[i];
       const SensorFrame& frame = sim.frame(i);
-      for (std::size_t b = 0; b < frame.bumps.size(); ++b) t.contacts.emplace_back(sensedAt, t.path.back());
-      if (sim.touching(i)) {  // touching through this step: extend the span that ended at its start, or begin one
-        if (t.touching.empty() || t.touching.back().second < sensedAt) t.touching.emplace_back(sensedAt, sim.time());
-        t.touching.back().second = sim.time();
-      }
-      t.path.push_back(sim.truePose(i).position);
-      t.heading.push_back(sim.truePose(i).heading);
       const double front = frame.sonar.empty() ? sim.spec(i).sonarMaxRange : frame.sonar[0];  // sonar 0 looks ahead
       diagnosis.observe(i, sim.time(), sim.truePose(i), run.commands()[i], front, sim.spec(i).sonarMaxRange);
       for (const TaskRecord& ended : run.timeline(i).drainEnded()) {
         diagnosis.taskEnded(i, ended);
-        if (ended.parent < 0 && ended.how == TaskEnd::Returned) t.returned = ended.detail, t.returnedAt = sim.time();
+        recorder.taskEnded(i, ended, sim.time());
       }
     }
   }
-  for (const worlds::ControllerFailure& f : run.failures()) ran.record.robots.at(f.robot).failure = f.message;
+  ran.record = std::move(recorder).finish(run.failures());
   for (std::size_t i = 0; i < sim.robotCount(); ++i) {
     for (std::string& h : diagnosis.hints(i, sim.robotName(i), run.timeline(i).running(), sim.time())) ran.hints.push_back(std::move(h));
   }
@@ -349,6 +333,37 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
   }
   writeKept(cache, reference, kept);
   return kept;
+}
+
+std::vector<Check> checksFor(const Rubric& rubric, const std::string& world) {
+  std::error_code ec;
+  const fs::path file = fs::weakly_canonical(world, ec);
+  const auto runsThere = [&](const Check& c) {
+    return std::any_of(c.worlds.begin(), c.worlds.end(),
+                       [&](const WorldRef& w) { return w.file.empty() ? w.name == world : fs::weakly_canonical(w.file, ec) == file; });
+  };
+  std::vector<Check> there;
+  std::copy_if(rubric.checks.begin(), rubric.checks.end(), std::back_inserter(there), runsThere);
+  return there.empty() ? rubric.checks : there;
+}
+
+std::vector<CriterionVerdict> judgeChecks(const std::vector<Check>& checks, const RunRecord& record) {
+  std::string failure;
+  for (const Track& t : record.robots) {
+    if (failure.empty() && !t.failure.empty()) failure = "the controller failed: " + t.failure;
+  }
+  const double ran = record.robots.empty() ? 0.0 : static_cast<double>(record.robots.front().path.size() - 1) * record.dt;
+  std::vector<CriterionVerdict> verdicts;
+  for (const Check& check : checks) {
+    const double seconds = std::min(check.seconds, ran);
+    const RunRecord judged = record.upTo(seconds);
+    for (const Criterion& c : check.criteria) {
+      Verdict v = failure.empty() ? judge(c, judged) : Verdict{.reason = failure};
+      verdicts.push_back(
+          {.check = check.name, .criterion = std::string(toString(c.kind)), .seconds = seconds, .passed = v.passed, .reason = std::move(v.reason)});
+    }
+  }
+  return verdicts;
 }
 
 Grade grade(const GradeDef& def, const fs::path& submission) {

@@ -342,6 +342,13 @@ Result<worlds::WorldDef> loadWorldRef(const WorldRef& w) {
   return *loaded;
 }
 
+std::string_view toString(Criterion::Kind kind) {
+  for (const CriterionSpec& c : kCriteria) {
+    if (c.kind == kind) return c.key;
+  }
+  return "criterion";
+}
+
 const char* toString(Visibility v) {
   switch (v) {
     case Visibility::Visible:

@@ -217,12 +217,15 @@ Result<Summary> runSession(const RunDef& def) {
     watch[i].summary.controller = c.entry.name + " (" + c.source + ")";
   }
 
+  std::optional<RunRecorder> recorder;
+  if (def.keepRecord) recorder.emplace(sim, sim.world());
   const render::FramePicker picker(sim.dt(), def.fps / def.speed);  // frames per simulated second
   render::Image image;
   while (sim.time() + 0.5 * sim.dt() < def.seconds && run.failures().empty()) {
     const std::int64_t step = sim.stepCount();
     run.step();
     const worlds::StepRecord& rec = run.recorder().steps().back();
+    if (recorder) recorder->stepped(sim);
     bool allFinished = true;
     for (std::size_t i = 0; i < n; ++i) {
       RobotWatch& w = watch[i];
@@ -241,6 +244,7 @@ Result<Summary> runSession(const RunDef& def) {
       diagnosis.observe(i, rec.time, r.truePose, r.wheels, r.sonar.empty() ? spec.sonarMaxRange : r.sonar[frontSonarOf(spec)], spec.sonarMaxRange);
       for (TaskRecord& ended : timeline.drainEnded()) {
         diagnosis.taskEnded(i, ended);
+        if (recorder) recorder->taskEnded(i, ended, sim.time());
         // The top task returning with nothing left running: this controller is done.
         if (ended.parent < 0 && ended.how == TaskEnd::Returned && timeline.running().empty()) w.summary.finishedAt = ended.end;
         if (!out.timeline.empty()) w.all.push_back(ended);
@@ -301,6 +305,7 @@ Result<Summary> runSession(const RunDef& def) {
   for (const worlds::ControllerFailure& f : run.failures()) {
     summary.robots.at(f.robot).failure = f.message;
   }
+  if (recorder) summary.record = std::move(*recorder).finish(run.failures());
   if (summary.failed()) {
     discard();  // the video and trace are dropped with their writers
     return summary;

@@ -248,6 +248,43 @@ TEST(Session, TraceHoldsTheRecordedValuesExactly) {
   }
 }
 
+// frob run --assignment judges a check of S seconds on the first S seconds of a longer run: that cut
+// must be the record of a run of S seconds, exactly. This robot meets the wall at about 2.5 s, pushes
+// on until its task returns at 4 s, and stands there.
+TEST(Session, ARecordCutToAChecksTimeIsTheRecordOfARunThatLong) {
+  worlds::WorldDef world = room();
+  world.robots.at(0).start.position = {4.5, 1.5};
+  const auto record = [&](double seconds) {
+    Result<Summary> s = runSession({.world = world,
+                                    .worldName = "room",
+                                    .controllers = {inlineController(makeController([] { return forwardFor(4.0); }))},
+                                    .seconds = seconds,
+                                    .wholeTime = true,
+                                    .keepRecord = true});
+    EXPECT_TRUE(s.ok()) << s.error();
+    return s.value().record.value();
+  };
+  const RunRecord whole = record(6.0);
+  const Track& all = whole.robots.at(0);
+  ASSERT_FALSE(all.contacts.empty());
+  ASSERT_FALSE(all.touching.empty());
+  EXPECT_EQ(all.returned, "");             // a task of no value returned, and was heard of
+  EXPECT_DOUBLE_EQ(all.returnedAt, 4.01);  // after the step that followed its instant
+  EXPECT_EQ(all.path.size(), 601u);
+  for (double seconds : {2.0, 3.0, 4.0, 5.0}) {
+    SCOPED_TRACE(seconds);
+    const Track& cut = whole.upTo(seconds).robots.at(0);
+    const Track& ran = record(seconds).robots.at(0);
+    EXPECT_EQ(cut.path, ran.path);
+    EXPECT_EQ(cut.heading, ran.heading);
+    EXPECT_EQ(cut.contacts, ran.contacts);
+    EXPECT_EQ(cut.touching, ran.touching);
+    EXPECT_EQ(cut.returned, ran.returned);
+    EXPECT_EQ(cut.returnedAt, ran.returnedAt);
+  }
+  EXPECT_TRUE(whole.upTo(2.0).robots.at(0).touching.empty());  // the wall is met later
+}
+
 TEST(Session, FailingControllerWritesNothing) {
   const fs::path csv = tempPath("session_fail.csv"), json = tempPath("session_fail.json");
   Controller c = [](const Robot&) { return lift([](double t) { return t < 0.3 ? Wheels{0.1, 0} : throw RoboErr("gave up"); }, time()); };

@@ -12,6 +12,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace frob::course {
@@ -123,6 +124,8 @@ using KeptWorlds = std::map<std::string, std::vector<int>>;
 /// A world of a check, loaded or generated.
 [[nodiscard]] Result<worlds::WorldDef> loadWorldRef(const WorldRef& world);
 
+/// A criterion's name as a rubric writes it ("waypoints", "collisions").
+[[nodiscard]] std::string_view toString(Criterion::Kind kind);
 /// Readable name of a visibility, as Gradescope spells it ("visible", "hidden", "after_due_date").
 [[nodiscard]] const char* toString(Visibility v);
 

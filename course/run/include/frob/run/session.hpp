@@ -10,6 +10,7 @@
 #include "frob/render/renderer.hpp"
 #include "frob/run/controller_file.hpp"
 #include "frob/run/host.hpp"
+#include "frob/run/run_record.hpp"
 #include "frob/worlds/run.hpp"
 
 #include <cstdint>
@@ -45,6 +46,7 @@ struct RunDef {
   std::optional<HostDef> host;                ///< set: the controllers run in a sandboxed host (each needs its module)
   double seconds = 60.0;                      ///< simulated seconds at most; ends sooner once every controller's task returned
   bool wholeTime = false;                     ///< run all `seconds` even after every task returned, as a graded run does
+  bool keepRecord = false;                    ///< keep the grader's record of the run in the summary, to judge it against a rubric
   RunOutputs outputs;                         ///< files to write
   int fps = 30;                               ///< frames per second of the video and frames
   double speed = 1.0;                         ///< the video plays this many times faster than simulated time
@@ -81,6 +83,7 @@ struct Summary {
   std::vector<std::string> written;     ///< the files written, in order
   std::vector<std::string> notes;       ///< what is worth saying besides, e.g. that output was cut
   std::vector<sandbox::Layer> sandbox;  ///< the controller host's layers (empty when not in a sandbox)
+  std::optional<RunRecord> record;      ///< what a rubric's criteria judge, when RunDef::keepRecord asked for it
   /// True when a controller failed.
   [[nodiscard]] bool failed() const;
 };
