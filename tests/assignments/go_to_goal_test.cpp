@@ -117,8 +117,8 @@ TEST(GoToGoalAssignment, HardCodedRouteFailsOnlyTheHiddenRooms) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "hard_coded_route.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kInOrder, 3}, {kInTime, 2}, {kSofa, 2}, {kOtherRooms, 0}}));
   EXPECT_EQ(failedIn(g, kOtherRooms), "generated lounge, hidden world 1\ngenerated lounge, hidden world 2\n");
-  EXPECT_THAT(reasons(g, kOtherRooms), HasSubstr("in hidden world 1: touched a wall at 29.3 s (3 contacts; 0 allowed)"));
-  EXPECT_THAT(reasons(g, kOtherRooms), HasSubstr("in hidden world 2: touched a wall at 27.7 s (2 contacts; 0 allowed)"));
+  EXPECT_THAT(reasons(g, kOtherRooms), HasSubstr("in hidden world 1: touched a wall at 29.3 s\n"));
+  EXPECT_THAT(reasons(g, kOtherRooms), HasSubstr("in hidden world 2: touched a wall at 27.7 s\n"));
 }
 
 }  // namespace

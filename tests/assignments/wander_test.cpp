@@ -95,9 +95,9 @@ TEST(WanderAssignment, QuarterTurnsToTheRightNeverLeaveTheHall) {
 TEST(WanderAssignment, StoppingOnTheBumperExploresButTouches) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "stops_on_bumper.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kHall, 2}, {kTouch, 0}, {kExplore, 3}, {kUnseen, 0}}));
-  EXPECT_THAT(reasons(g, kTouch), HasSubstr("in worlds/living_room.toml, seed 1: touched a wall at 10.7 s at (4.0, 5.8) (13 contacts; 0 allowed)"));
+  EXPECT_THAT(reasons(g, kTouch), HasSubstr("in worlds/living_room.toml, seed 1: touched a wall at 10.7 s at (4.0, 5.8) (12 collisions; 0 allowed)"));
   EXPECT_EQ(failedIn(g, kUnseen), "generated furnished_room, hidden world 1\ngenerated furnished_room, hidden world 2\n");
-  EXPECT_THAT(reasons(g, kUnseen), HasSubstr("in hidden world 1: touched a wall at 12.6 s (14 contacts; 0 allowed)"));
+  EXPECT_THAT(reasons(g, kUnseen), HasSubstr("in hidden world 1: touched a wall at 12.6 s (14 collisions; 0 allowed)"));
 }
 
 // Example 1 copied as it is: its goAhead also stops when anything is within 25 cm to a side, and

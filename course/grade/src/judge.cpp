@@ -43,6 +43,33 @@ std::size_t closestTo(const std::vector<Point2>& path, const Point2& p, std::siz
   return best;
 }
 
+// A touch this soon after the robot last touched something is that collision going on: a robot
+// still stopping bounces, or glances round a corner onto the next face (seconds).
+constexpr double kSameCollision = 0.5;
+
+// The contacts that began a collision: touching spans and contacts (each in the step before it was
+// sensed) merged where less than kSameCollision apart, the first contact of each.
+std::vector<std::pair<double, Point2>> collisionsOf(const Track& t, double dt) {
+  std::vector<std::pair<double, double>> touches = t.touching;
+  for (const auto& contact : t.contacts) touches.emplace_back(contact.first - dt, contact.first);
+  std::sort(touches.begin(), touches.end());
+  std::vector<std::pair<double, double>> merged;
+  for (const auto& touch : touches) {
+    if (!merged.empty() && touch.first < merged.back().second + kSameCollision - 1e-9) {
+      merged.back().second = std::max(merged.back().second, touch.second);
+    } else {
+      merged.push_back(touch);
+    }
+  }
+  std::vector<std::pair<double, Point2>> starts;
+  std::size_t group = 0, counted = merged.size();  // `counted`: the group of the last start
+  for (const auto& contact : t.contacts) {
+    while (merged[group].second < contact.first - 1e-9) ++group;
+    if (group != counted) starts.push_back(contact), counted = group;
+  }
+  return starts;
+}
+
 double perimeter(const WallDef& w) {
   const auto& v = w.points;
   switch (w.shape) {
@@ -217,12 +244,13 @@ class Judge {
   }
 
   std::string collisions(const Track& t) {
-    if (static_cast<int>(t.contacts.size()) <= c_.count) return c_.seconds > 0 ? touchingTime(t) : "";
-    const auto& [when, where] = t.contacts[static_cast<std::size_t>(c_.count)];
+    const std::vector<std::pair<double, Point2>> hits = collisionsOf(t, run_.dt);
+    if (static_cast<int>(hits.size()) <= c_.count) return c_.seconds > 0 ? touchingTime(t) : "";
+    const auto& [when, where] = hits[static_cast<std::size_t>(c_.count)];
     const worlds::WallIndex walls(run_.walls, run_.size, 1.0);
     const char* what = walls.distance(where) <= t.radius + 0.05 ? "a wall" : "another robot";
     std::string why = format("touched %s at %s at %s", what, secondsText(when).c_str(), at(where).c_str());
-    if (c_.count > 0 || t.contacts.size() > 1) why += format(" (%zu contacts; %d allowed)", t.contacts.size(), c_.count);
+    if (c_.count > 0 || hits.size() > 1) why += format(" (%zu collisions; %d allowed)", hits.size(), c_.count);
     return why;
   }
 

@@ -39,7 +39,7 @@ void RunRecorder::stepped(const worlds::Simulation& sim) {
     Track& t = record_.robots[i];
     for (std::size_t b = 0; b < sim.frame(i).bumps.size(); ++b) t.contacts.emplace_back(sensedAt, t.path.back());
     if (sim.touching(i)) {  // touching through this step: extend the span that ended at its start, or begin one
-      if (t.touching.empty() || t.touching.back().second < sensedAt) t.touching.emplace_back(sensedAt, sim.time());
+      if (t.touching.empty() || t.touching.back().second < sensedAt - 0.5 * sim.dt()) t.touching.emplace_back(sensedAt, sim.time());
       t.touching.back().second = sim.time();
     }
     t.path.push_back(sim.truePose(i).position);

@@ -113,11 +113,29 @@ TEST(Judge, AReportedEventMustHaveHappenedFirst) {
 TEST(Judge, CollisionsNameTheFirstOneOverTheLimit) {
   Track t = straight(1, 1.5, 0.5, 2);
   t.contacts = {{41.2, {3.1, 2.75}}, {50.0, {4.0, 2.75}}};
-  EXPECT_EQ(run({.kind = Kind::Collisions, .count = 0}, t).reason, "touched a wall at 41.2 s at (3.1, 2.8) (2 contacts; 0 allowed)");
-  EXPECT_EQ(run({.kind = Kind::Collisions, .count = 1}, t).reason, "touched a wall at 50.0 s at (4.0, 2.8) (2 contacts; 1 allowed)");
+  EXPECT_EQ(run({.kind = Kind::Collisions, .count = 0}, t).reason, "touched a wall at 41.2 s at (3.1, 2.8) (2 collisions; 0 allowed)");
+  EXPECT_EQ(run({.kind = Kind::Collisions, .count = 1}, t).reason, "touched a wall at 50.0 s at (4.0, 2.8) (2 collisions; 1 allowed)");
   EXPECT_TRUE(run({.kind = Kind::Collisions, .count = 2}, t).passed);
   t.contacts = {{3.0, {3.0, 1.5}}};  // in the middle of the room: it must have been another robot
   EXPECT_EQ(run({.kind = Kind::Collisions, .count = 0}, t).reason, "touched another robot at 3.0 s at (3.0, 1.5)");
+}
+
+// A robot commanded still after a bump keeps moving a little: it bounces off, or glances round the
+// corner it hit onto the next face, and its bumpers close again. That is the same collision, as are
+// two bumpers pressed in one step; a contact 0.5 s or more after the last touch ended is a new one.
+TEST(Judge, ABounceOrAGlanceRoundACornerIsTheSameCollision) {
+  Track t = straight(1, 1.5, 0.5, 2);
+  t.contacts = {{18.81, {3.1, 2.75}}, {18.81, {3.1, 2.75}}, {19.11, {3.0, 2.75}}};
+  t.touching = {{18.81, 18.90}, {19.11, 19.30}};
+  const Criterion once{.kind = Kind::Collisions, .count = 1};
+  EXPECT_TRUE(run(once, t).passed);
+  t.contacts.push_back({20.0, {3.0, 2.75}});  // sensed a step (0.1 s here) after it began, 0.6 s after the last touch: a new one
+  t.touching.push_back({19.9, 20.1});
+  EXPECT_EQ(run(once, t).reason, "touched a wall at 20.0 s at (3.0, 2.8) (2 collisions; 1 allowed)");
+  t.touching = {};  // contacts alone: each 0.5 s or more after the one before is new
+  EXPECT_EQ(run(once, t).reason, "touched a wall at 20.0 s at (3.0, 2.8) (2 collisions; 1 allowed)");
+  t.contacts.back().first = 19.6;
+  EXPECT_TRUE(run(once, t).passed);
 }
 
 // A bump at a corner the sonars cannot hear is brief; pushing along an obstacle is not.
@@ -129,7 +147,8 @@ TEST(Judge, CollisionsMayCapTheTimeSpentTouching) {
   EXPECT_TRUE(run(brief, t).passed);
   EXPECT_EQ(run({.kind = Kind::Collisions, .seconds = 2.0, .count = 2}, t).reason,
             "pressed its bumpers for 2.5 s in all, the longest touch from 20.0 s to 22.0 s; at most 2.0 s allowed");
-  EXPECT_EQ(run({.kind = Kind::Collisions, .seconds = 2.5, .count = 1}, t).reason, "touched a wall at 20.0 s at (4.0, 2.8) (2 contacts; 1 allowed)");
+  EXPECT_EQ(run({.kind = Kind::Collisions, .seconds = 2.5, .count = 1}, t).reason,
+            "touched a wall at 20.0 s at (4.0, 2.8) (2 collisions; 1 allowed)");
   t.touching.back().second = 30.0;
   EXPECT_FALSE(run(brief, t).passed);
   EXPECT_TRUE(run({.kind = Kind::Collisions, .count = 2}, t).passed) << "no time cap unless one is given";
