@@ -27,7 +27,7 @@ struct Criterion {
     Goal,          ///< within `distance` of point `point` by `seconds`
     Waypoints,     ///< within `distance` of each of `points`, in order, by `seconds`
     Stopped,       ///< moving slower than `speed` at the end; with an event, at every step from `within` s after it to the end
-    Collisions,    ///< at most `count` collisions (contacts less than 0.5 s after a touch are that touch), and when `seconds` > 0 at most that long touching in all
+    Collisions,    ///< at most `count` collisions (touches 0.5 s apart or more), and when `seconds` > 0 at most that long touching in all
     Clearance,     ///< the body never nearer a wall than `distance`
     WallDistance,  ///< the body `distance` ± `tolerance` from the nearest wall (on `side`, when given) for `fraction` of the run after `after` s
     Coverage,      ///< the robot's centre visited `fraction` of the free cells of size `cell`
