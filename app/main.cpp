@@ -117,6 +117,7 @@ struct RunArgs {
   std::optional<double> seconds;
   std::optional<std::uint64_t> seed;
   double dt = 0.01;
+  double settle = 2.0;  // seconds the run goes on, the robots still, once every task returned
   int fps = 30;
   std::optional<double> speed;
   course::RunOutputs outputs;
@@ -178,6 +179,7 @@ int runCommand(RunArgs a) {
   if (!world) return fail(world.error());
   def.world = std::move(world.value());
   def.seconds = a.seconds.value_or(defaults.seconds);
+  def.settleSeconds = a.settle;
   if (rubric && !a.seconds) {
     def.seconds = 0.0;
     for (const course::Check& c : course::checksFor(*rubric, def.worldName)) def.seconds = std::max(def.seconds, c.seconds);
@@ -296,6 +298,11 @@ int main(int argc, char** argv) {
   runCmd->add_option("--seconds", run.seconds, "Simulated seconds at most (default: the controller's)")->check(CLI::PositiveNumber);
   runCmd->add_option("--seed", run.seed, "Random seed (default: the world's)");
   runCmd->add_option("--dt", run.dt, "Simulation step, seconds")->capture_default_str()->check(CLI::Range(1e-4, 0.1));
+  runCmd
+      ->add_option("--settle", run.settle,
+                   "Seconds the run goes on once every controller's task has returned, the robots commanded still (to see them stop)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 600.0));
   runCmd->add_option("--video", run.outputs.video, "Write an MP4 video of the run");
   runCmd->add_option("--frames", run.outputs.frames, "Write one PNG per video frame into this folder");
   runCmd->add_option("--plot", run.outputs.plot, "Write plots of the run (sonar, goal distance, wheels, tasks) as PNG");

@@ -217,6 +217,7 @@ Result<Summary> runSession(const RunDef& def) {
     watch[i].summary.controller = c.entry.name + " (" + c.source + ")";
   }
 
+  std::optional<double> allFinishedAt;  // when the last controller's task returned: the settle time begins
   std::optional<RunRecorder> recorder;
   if (def.keepRecord) recorder.emplace(sim, sim.world());
   const render::FramePicker picker(sim.dt(), def.fps / def.speed);  // frames per simulated second
@@ -265,13 +266,20 @@ Result<Summary> runSession(const RunDef& def) {
       }
     }
     if (def.progress) def.progress(std::min(1.0, sim.time() / def.seconds));
-    if (allFinished && !def.wholeTime) break;
+    if (allFinished && !def.wholeTime) {
+      if (!allFinishedAt) {
+        allFinishedAt = 0.0;
+        for (const RobotWatch& w : watch) allFinishedAt = std::max(*allFinishedAt, *w.summary.finishedAt);
+      }
+      if (sim.time() + 0.5 * sim.dt() >= *allFinishedAt + def.settleSeconds) break;
+    }
   }
 
   Summary summary{.world = def.worldName,
                   .seed = sim.seed(),
                   .dt = sim.dt(),
                   .simulatedSeconds = sim.time(),
+                  .settledSeconds = allFinishedAt && def.settleSeconds > 0 ? sim.time() - *allFinishedAt : 0.0,
                   .steps = sim.stepCount(),
                   .trajectoryHash = run.recorder().trajectoryHash()};
   if (hosts) summary.notes = hosts->notes(), summary.sandbox = hosts->layers();

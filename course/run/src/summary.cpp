@@ -28,6 +28,9 @@ std::string formatSummary(const Summary& s, double wallSeconds) {
   std::string text = "world " + s.world + ", seed " + std::to_string(s.seed) + format(", dt %g s: %.2f s simulated", s.dt, s.simulatedSeconds);
   if (wallSeconds > 0) text += format(" in %.3g s wall (%.0fx real time)", wallSeconds, s.simulatedSeconds / wallSeconds);
   text += "\n";
+  if (s.settledSeconds > 0)
+    text += format("  every task had returned at %.2f s: the robots were commanded still for the last %.2f s\n",
+                   s.simulatedSeconds - s.settledSeconds, s.settledSeconds);
   for (const RobotSummary& r : s.robots) {
     text += "  " + r.name + ": " + r.controller + "\n";
     text += format("    distance %.2f m, collisions %.0f", r.distance, r.collisions);
@@ -80,6 +83,7 @@ std::string summaryJson(const Summary& s, double wallSeconds) {
                                 {"seed", s.seed},
                                 {"dt", s.dt},
                                 {"simulated_seconds", s.simulatedSeconds},
+                                {"settled_seconds", s.settledSeconds},
                                 {"steps", s.steps},
                                 {"wall_seconds", wallSeconds},
                                 {"real_time_factor", wallSeconds > 0 ? s.simulatedSeconds / wallSeconds : 0.0},

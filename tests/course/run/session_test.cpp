@@ -4,6 +4,7 @@
 
 #include "frob/frob.hpp"
 #include "frob/render/image.hpp"
+#include "frob/run/summary.hpp"
 #include "frob/worlds/world_file.hpp"
 
 #include <gtest/gtest.h>
@@ -59,6 +60,28 @@ TEST(Session, EndsWhenTheControllerTaskReturns) {
   EXPECT_EQ(s.value().steps, 151);  // steps 0..150: the task returns at the instant of step 150
   ASSERT_EQ(r.lastTasks.size(), 1u);
   EXPECT_EQ(r.lastTasks[0].how, TaskEnd::Returned);
+}
+
+// After the last task returns, a settle time: the run goes on with the robot commanded still, so that
+// "stands still 2 s after" can be seen; the summary says when the tasks had all returned.
+TEST(Session, ASettleTimeKeepsTheRunGoingWithTheRobotStill) {
+  Result<Summary> s = runSession({.world = room(),
+                                  .worldName = "room",
+                                  .controllers = {inlineController(makeController([] { return forwardFor(1.5); }))},
+                                  .seconds = 10,
+                                  .settleSeconds = 2.0,
+                                  .keepRecord = true});
+  ASSERT_TRUE(s.ok()) << s.error();
+  EXPECT_EQ(s.value().steps, 350);  // its task returned at the instant of step 150; then 2 s
+  EXPECT_NEAR(s.value().settledSeconds, 2.0, 1e-9);
+  EXPECT_DOUBLE_EQ(s.value().robots.at(0).finishedAt.value(), 1.5);
+  const std::vector<Point2>& path = s.value().record->robots.at(0).path;
+  ASSERT_EQ(path.size(), 351u);
+  EXPECT_GT((path[200] - path[151]).norm(), 0.01);  // it coasts to a stop (the drive's deceleration)
+  EXPECT_LT((path[350] - path[250]).norm(), 1e-6);  // and stands still for the last second
+  EXPECT_NE(formatSummary(s.value(), 0.0).find("every task had returned at 1.50 s: the robots were commanded still for the last 2.00 s\n"),
+            std::string::npos)
+      << formatSummary(s.value(), 0.0);
 }
 
 // A video with a budget fits in it whatever the run's length: the bitrate is capped for the run's

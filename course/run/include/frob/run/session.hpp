@@ -46,6 +46,7 @@ struct RunDef {
   std::optional<HostDef> host;                ///< set: the controllers run in a sandboxed host (each needs its module)
   double seconds = 60.0;                      ///< simulated seconds at most; ends sooner once every controller's task returned
   bool wholeTime = false;                     ///< run all `seconds` even after every task returned, as a graded run does
+  double settleSeconds = 0.0;                 ///< once every controller's task returned, the run goes on this long, the robots commanded still
   bool keepRecord = false;                    ///< keep the grader's record of the run in the summary, to judge it against a rubric
   RunOutputs outputs;                         ///< files to write
   int fps = 30;                               ///< frames per second of the video and frames
@@ -77,6 +78,7 @@ struct Summary {
   std::uint64_t seed = 0;               ///< the seed used
   double dt = 0.0;                      ///< step, seconds
   double simulatedSeconds = 0.0;        ///< logical time reached
+  double settledSeconds = 0.0;          ///< of those, how long the run went on after every controller's task returned (RunDef::settleSeconds)
   std::int64_t steps = 0;               ///< steps taken
   std::uint64_t trajectoryHash = 0;     ///< hash of every true pose (equal runs, equal hashes)
   std::vector<RobotSummary> robots;     ///< one per robot
