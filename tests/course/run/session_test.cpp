@@ -296,8 +296,8 @@ TEST(Session, ARecordCutToAChecksTimeIsTheRecordOfARunThatLong) {
   EXPECT_EQ(all.path.size(), 601u);
   for (double seconds : {2.0, 3.0, 4.0, 5.0}) {
     SCOPED_TRACE(seconds);
-    const Track& cut = whole.upTo(seconds).robots.at(0);
-    const Track& ran = record(seconds).robots.at(0);
+    const Track cut = whole.upTo(seconds).robots.at(0);
+    const Track ran = record(seconds).robots.at(0);
     EXPECT_EQ(cut.path, ran.path);
     EXPECT_EQ(cut.heading, ran.heading);
     EXPECT_EQ(cut.contacts, ran.contacts);
