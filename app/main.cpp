@@ -1,6 +1,7 @@
 // The frob command line: thin, it parses arguments and calls the libraries.
 #include "frob/base/layout.hpp"
 #include "frob/grade/grade.hpp"
+#include "frob/grade/judge.hpp"
 #include "frob/render/output_file.hpp"
 #include "frob/render/run_view.hpp"
 #include "frob/run/controller_file.hpp"

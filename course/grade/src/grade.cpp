@@ -335,37 +335,6 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
   return kept;
 }
 
-std::vector<Check> checksFor(const Rubric& rubric, const std::string& world) {
-  std::error_code ec;
-  const fs::path file = fs::weakly_canonical(world, ec);
-  const auto runsThere = [&](const Check& c) {
-    return std::any_of(c.worlds.begin(), c.worlds.end(),
-                       [&](const WorldRef& w) { return w.file.empty() ? w.name == world : fs::weakly_canonical(w.file, ec) == file; });
-  };
-  std::vector<Check> there;
-  std::copy_if(rubric.checks.begin(), rubric.checks.end(), std::back_inserter(there), runsThere);
-  return there.empty() ? rubric.checks : there;
-}
-
-std::vector<CriterionVerdict> judgeChecks(const std::vector<Check>& checks, const RunRecord& record) {
-  std::string failure;
-  for (const Track& t : record.robots) {
-    if (failure.empty() && !t.failure.empty()) failure = "the controller failed: " + t.failure;
-  }
-  const double ran = record.robots.empty() ? 0.0 : static_cast<double>(record.robots.front().path.size() - 1) * record.dt;
-  std::vector<CriterionVerdict> verdicts;
-  for (const Check& check : checks) {
-    const double seconds = std::min(check.seconds, ran);
-    const RunRecord judged = record.upTo(seconds);
-    for (const Criterion& c : check.criteria) {
-      Verdict v = failure.empty() ? judge(c, judged) : Verdict{.reason = failure};
-      verdicts.push_back(
-          {.check = check.name, .criterion = std::string(toString(c.kind)), .seconds = seconds, .passed = v.passed, .reason = std::move(v.reason)});
-    }
-  }
-  return verdicts;
-}
-
 Grade grade(const GradeDef& def, const fs::path& submission) {
   const auto start = std::chrono::steady_clock::now();
   Grade g{.assignment = def.assignment, .submission = submission.string(), .startedAt = utcNow()};

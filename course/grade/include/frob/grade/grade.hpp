@@ -120,22 +120,6 @@ struct Assignment {
 /// rubric.toml, or a rubric file.
 [[nodiscard]] Result<std::filesystem::path> findRubric(const std::string& name);
 
-/// How a run met one criterion of one check.
-struct CriterionVerdict {
-  std::string check;      ///< the check's name
-  std::string criterion;  ///< as the rubric names it: "waypoints", "collisions"
-  double seconds = 0.0;   ///< of the run judged: the check's, or the whole run when it is shorter
-  bool passed = false;
-  std::string reason;  ///< why it failed, as a grade says it; "" when it passed
-};
-/// The checks of `rubric` that run in `world` (a world file or a reference world's name); all of
-/// them when none does (a world of the student's own).
-[[nodiscard]] std::vector<Check> checksFor(const Rubric& rubric, const std::string& world);
-/// Every criterion of `checks`, judged on `record` as a grade judges a run of the check (on the
-/// run's first `Check::seconds`): what `frob run --assignment` tells a student of a run. A controller
-/// that failed fails them all, with its reason.
-[[nodiscard]] std::vector<CriterionVerdict> judgeChecks(const std::vector<Check>& checks, const RunRecord& record);
-
 /// Runs `run` of check `check` again with a video and plots of it (`outputs`), for a report, and
 /// gives the film's trajectory hash. The controller sees the same in a filmed run as in a graded one,
 /// so the film is the graded run again; one whose trajectory differs from the graded run's is refused.

@@ -6,6 +6,7 @@
 #include "frob/run/run_record.hpp"
 
 #include <string>
+#include <vector>
 
 namespace frob::course {
 
@@ -17,5 +18,21 @@ struct Verdict {
 
 /// Judges `run` against `criterion` for every robot (the first robot that fails it gives the reason).
 [[nodiscard]] Verdict judge(const Criterion& criterion, const RunRecord& run);
+
+/// How a run met one criterion of one check.
+struct CriterionVerdict {
+  std::string check;      ///< the check's name
+  std::string criterion;  ///< as the rubric names it: "waypoints", "collisions"
+  double seconds = 0.0;   ///< of the run judged: the check's, or the whole run when it is shorter
+  bool passed = false;
+  std::string reason;  ///< why it failed, as a grade says it; "" when it passed
+};
+/// The checks of `rubric` that run in `world` (a world file or a reference world's name); all of
+/// them when none does (a world of the student's own).
+[[nodiscard]] std::vector<Check> checksFor(const Rubric& rubric, const std::string& world);
+/// Every criterion of `checks`, judged on `record` as a grade judges a run of the check (on the
+/// run's first `Check::seconds`): what `frob run --assignment` tells a student of a run. A controller
+/// that failed fails them all, with its reason.
+[[nodiscard]] std::vector<CriterionVerdict> judgeChecks(const std::vector<Check>& checks, const RunRecord& record);
 
 }  // namespace frob::course
