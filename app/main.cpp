@@ -202,8 +202,8 @@ int runCommand(RunArgs a) {
   bar.finish();
   if (!summary) return fail(summary.error());
   const course::Summary& sum = summary.value();
-  const std::vector<course::Check> checks = rubric ? course::checksFor(*rubric, def.worldName) : std::vector<course::Check>{};
-  const std::vector<course::CriterionVerdict> verdicts = course::judgeChecks(checks, sum.record.value_or(course::RunRecord{}));
+  const std::vector<course::CriterionVerdict> verdicts =
+      rubric ? course::judgeChecks(course::checksFor(*rubric, def.worldName), *sum.record) : std::vector<course::CriterionVerdict>{};
   if (a.json) std::cout << (rubric ? withVerdicts(course::summaryJson(sum, wall), a.assignment, verdicts) : course::summaryJson(sum, wall));
   // A layer of the sandbox that this machine could not apply is said, never skipped silently.
   if (const std::string missing = course::missingLayers(sum.sandbox); !missing.empty() && !a.quiet) {
