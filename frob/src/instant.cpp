@@ -66,7 +66,7 @@ std::vector<ConeNode>::iterator find(std::vector<ConeNode>& cone, const NodeBase
 // Depth-first, inputs in the order the node reads them, each node listed after its inputs. Plans
 // are small, so the cone is searched linearly rather than hashed (a switch builds plans often).
 void planCone(const Input& input, std::vector<ConeNode>& cone) {
-  if (find(cone, input.node) != cone.end()) return;
+  if (input.node->constant() || find(cone, input.node) != cone.end()) return;
   ConeNode c{.node = input.node, .owners = input.owners, .inputs = {}};
   if (c.node->strict()) {
     c.node->strictInputs(c.inputs);
@@ -87,7 +87,9 @@ std::vector<PlanStep> planFor(const NodeBase& root) {
   // Readers come after what they read, so going backwards all the handles the plan holds on a node
   // are counted when it is reached: it is the plan's own if they are all its owners.
   auto countHandles = [&cone](const ConeNode& reader) {
-    for (const Input& i : reader.inputs) ++find(cone, i.node)->ownedByPlan;
+    for (const Input& i : reader.inputs) {
+      if (auto it = find(cone, i.node); it != cone.end()) ++it->ownedByPlan;  // constants are not in it
+    }
   };
   countHandles(cone[0]);
   std::vector<PlanStep> plan(cone.size(), PlanStep{nullptr, &PlanStep::last});

@@ -163,4 +163,8 @@ Reading<double> leftSonar(const Robot& r) { return r.sonar(r.sonarNearest(pi / 2
 Reading<double> rightSonar(const Robot& r) { return r.sonar(r.sonarNearest(-pi / 2)); }
 Reading<double> backSonar(const Robot& r) { return r.sonar(r.sonarNearest(pi)); }
 
+Behavior<Wheels> detail::numbers::wheels(const Behavior<double>& forward, const Behavior<double>& turn) {
+  return lift([](double f, double t) { return Wheels{f, t}; }, forward, turn);
+}
+
 }  // namespace frob

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
+#include <type_traits>
+#include <typeinfo>
 
 namespace frob {
 namespace {
@@ -228,6 +230,39 @@ TEST(Behavior, MinAndMaxTakeAnyNumberOfBehaviorsAndValues) {
   EXPECT_EQ(sample(lo, 0.1, 4), (std::vector<double>{0.0, 1.0, 2.0, 2.5}));
   std::vector<double> h = sample(hi, 0.5, 3);  // t = 0, 0.5, 1
   EXPECT_EQ(h, (std::vector<double>{1.0, 0.5, 1.0}));
+}
+
+// Of equal values the first is chosen, as std::min and std::max of a list choose: -0.0 and 0.0
+// compare equal, and the sign shows which one was taken.
+TEST(Behavior, MinAndMaxOfManyChooseTheFirstOfEquals) {
+  Behavior<double> zero = constant(0.0), negativeZero = constant(-0.0);
+  EXPECT_TRUE(std::signbit(sample(min(negativeZero, zero, 1.0), 1.0, 1)[0]));
+  EXPECT_FALSE(std::signbit(sample(min(zero, negativeZero, 1.0), 1.0, 1)[0]));
+  EXPECT_TRUE(std::signbit(sample(max(negativeZero, zero, -1.0), 1.0, 1)[0]));
+  EXPECT_FALSE(std::signbit(sample(max(zero, negativeZero, -1.0), 1.0, 1)[0]));
+}
+
+// Issue 29: expressions of numbers, truths and points are plain behaviors, each operator one node
+// made by a function compiled once in libfrob, so that a controller compiles no nested expression
+// types; a lifted function is one node type per signature, whatever the lambda.
+TEST(Behavior, ExpressionsOfNumbersTruthsAndPointsAreBehaviorsNotExpressionTypes) {
+  Behavior<double> t = time();
+  Behavior<Point2> p = lift([](double x) { return Point2(x, 2 * x); }, t);
+  static_assert(std::is_same_v<decltype(t * 2 + 1.0), Behavior<double>>);
+  static_assert(std::is_same_v<decltype(t < 1.0 && !(t > 3)), Behavior<bool>>);
+  static_assert(std::is_same_v<decltype(clamp(t, 0, 1.0) + min(t, 2.0, 3.0) + atan2(t, 1.0)), Behavior<double>>);
+  static_assert(std::is_same_v<decltype(p - Point2(1, 1)), Behavior<Point2>>);
+  static_assert(std::is_same_v<decltype(distance(p, Point2(0, 0)) + heading(p - p)), Behavior<double>>);
+  Behavior<double> a = lift([](double x) { return x + 1; }, t), b = lift([](double x) { return x * 3; }, t);
+  const auto typeOf = [](const Behavior<double>& x) -> const std::type_info& {
+    const detail::NodeBase& node = *x.node();
+    return typeid(node);
+  };
+  EXPECT_EQ(typeOf(a), typeOf(b));
+  EXPECT_EQ(typeOf(t + 1.0), typeOf(t * 2.0));
+  EXPECT_EQ(sample(t * 2 + 1.0, 1.0, 3), (std::vector<double>{1.0, 3.0, 5.0}));
+  EXPECT_EQ(sample(distance(p, Point2(0, 0)), 1.0, 2)[1], std::sqrt(5.0));
+  EXPECT_EQ(sample(lift([](bool x) { return x ? 1.0 : 0.0; }, t < 1.0 || t > 1.5), 1.0, 3), (std::vector<double>{1.0, 0.0, 1.0}));
 }
 
 struct Wall {

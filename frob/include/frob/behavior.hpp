@@ -76,9 +76,8 @@ class Behavior {
   std::shared_ptr<detail::BehaviorNode<T>> node_;
 };
 
-/// A pointwise expression over behaviors (the result of `lift` and of operators on behaviors),
-/// not yet a node of the graph: it becomes one node, for the whole expression, when stored in a
-/// Behavior<R>. Name a Behavior to share a value between several expressions.
+/// A value computed in place from its arguments at each instant, not yet a node of the graph (a
+/// sensor reading, which reads the robot's frame): it becomes one node when stored in a Behavior<R>.
 template <class R, class F, class... Args>
 class Pointwise {
  public:
@@ -99,7 +98,7 @@ class Pointwise {
   }
   /// This expression as one node of the graph.
   [[nodiscard]] Behavior<R> behavior() const { return Behavior<R>(std::make_shared<detail::PointwiseNode<R, Pointwise>>(*this)); }
-  /// Implicit conversion, so that `Behavior<double> b = x + y;` reads naturally.
+  /// Implicit conversion, so that `Behavior<double> d = sonar(r, 0);` reads naturally.
   operator Behavior<R>() const { return behavior(); }  // NOLINT(google-explicit-constructor)
   /// The value at instant `now`, as for a Behavior.
   R at(const Instant& now) const { return eval(now); }
@@ -138,12 +137,13 @@ template <class T>
 [[nodiscard]] inline Behavior<double> time() { return Behavior<double>(std::make_shared<detail::TimeNode>()); }
 
 /// Pointwise application of `f` to behaviors and plain values: lift(f, b1, 2.0, b3).
-/// The result is a Pointwise expression; it becomes a node when stored in a Behavior.
 template <class F, class... Args>
   requires std::invocable<F&, const ValueOf<Args>&...>
-[[nodiscard]] auto lift(F f, Args&&... args) {
+[[nodiscard]] Behavior<Stored<std::invoke_result_t<F&, const ValueOf<Args>&...>>> lift(F f, Args&&... args) {
   using R = Stored<std::invoke_result_t<F&, const ValueOf<Args>&...>>;
-  return Pointwise<R, F, detail::Arg<std::remove_cvref_t<Args>>...>(std::move(f), detail::makeArg(std::forward<Args>(args))...);
+  std::unique_ptr<void, void (*)(void*)> closure(new F(std::move(f)), &detail::deleteClosure<F>);
+  return Behavior<R>(std::make_shared<detail::LiftNode<R, ValueOf<Args>...>>(&detail::callClosure<R, F, ValueOf<Args>...>, std::move(closure),
+                                                                             detail::inputNode(std::forward<Args>(args))...));
 }
 
 template <class T>
@@ -160,48 +160,72 @@ auto Pointwise<R, F, Args...>::map(G g) const {
   return lift(std::move(g), *this);
 }
 
+}  // namespace frob
+
+#include "frob/detail/numbers.hpp"  // what the operators below call, which needs toBehavior
+
+namespace frob {
+
 // Pointwise operators mixing Behavior<T> and plain values. Each is constrained on its value types,
 // so `frontSonar(r) < "x"` fails to compile naming the invalid expression `a < b`.
-#define FROB_BEHAVIOR_BINARY_OPERATOR(op)                                                             \
-  template <class A, class B>                                                                         \
-    requires BehaviorOperands<A, B> && requires(const ValueOf<A>& a, const ValueOf<B>& b) { a op b; } \
-  [[nodiscard]] auto operator op(const A& a, const B& b) {                                            \
-    return lift([](const auto& x, const auto& y) { return x op y; }, a, b);                           \
+#define FROB_BEHAVIOR_BINARY_OPERATOR(op, name)                                                               \
+  template <class A, class B>                                                                                 \
+    requires BehaviorOperands<A, B> && requires(const ValueOf<A>& a, const ValueOf<B>& b) { a op b; }         \
+  [[nodiscard]] auto operator op(const A& a, const B& b) {                                                    \
+    if constexpr (requires { detail::numbers::name(detail::number(a), detail::number(b)); }) {                \
+      return detail::numbers::name(detail::number(a), detail::number(b));                                     \
+    } else if constexpr (requires { detail::numbers::name(detail::behaviorOf(a), detail::behaviorOf(b)); }) { \
+      return detail::numbers::name(detail::behaviorOf(a), detail::behaviorOf(b));                             \
+    } else {                                                                                                  \
+      return lift([](const auto& x, const auto& y) { return x op y; }, a, b);                                 \
+    }                                                                                                         \
   }
-FROB_BEHAVIOR_BINARY_OPERATOR(+)
-FROB_BEHAVIOR_BINARY_OPERATOR(-)
-FROB_BEHAVIOR_BINARY_OPERATOR(*)
-FROB_BEHAVIOR_BINARY_OPERATOR(/)
-FROB_BEHAVIOR_BINARY_OPERATOR(<)
-FROB_BEHAVIOR_BINARY_OPERATOR(<=)
-FROB_BEHAVIOR_BINARY_OPERATOR(>)
-FROB_BEHAVIOR_BINARY_OPERATOR(>=)
-FROB_BEHAVIOR_BINARY_OPERATOR(==)
-FROB_BEHAVIOR_BINARY_OPERATOR(!=)
-FROB_BEHAVIOR_BINARY_OPERATOR(&&)
-FROB_BEHAVIOR_BINARY_OPERATOR(||)
+FROB_BEHAVIOR_BINARY_OPERATOR(+, add)
+FROB_BEHAVIOR_BINARY_OPERATOR(-, subtract)
+FROB_BEHAVIOR_BINARY_OPERATOR(*, multiply)
+FROB_BEHAVIOR_BINARY_OPERATOR(/, divide)
+FROB_BEHAVIOR_BINARY_OPERATOR(<, less)
+FROB_BEHAVIOR_BINARY_OPERATOR(<=, lessEqual)
+FROB_BEHAVIOR_BINARY_OPERATOR(>, greater)
+FROB_BEHAVIOR_BINARY_OPERATOR(>=, greaterEqual)
+FROB_BEHAVIOR_BINARY_OPERATOR(==, equal)
+FROB_BEHAVIOR_BINARY_OPERATOR(!=, notEqual)
+FROB_BEHAVIOR_BINARY_OPERATOR(&&, logicalAnd)
+FROB_BEHAVIOR_BINARY_OPERATOR(||, logicalOr)
 #undef FROB_BEHAVIOR_BINARY_OPERATOR
 
 /// Pointwise negation.
 template <BehaviorType A>
   requires requires(const ValueOf<A>& a) { -a; }
 [[nodiscard]] auto operator-(const A& a) {
-  return lift([](const auto& x) { return -x; }, a);
+  if constexpr (detail::NumberOperand<A>) {
+    return detail::numbers::minus(toBehavior(a));
+  } else {
+    return lift([](const auto& x) { return -x; }, a);
+  }
 }
 
 /// Pointwise logical not.
 template <BehaviorType A>
   requires requires(const ValueOf<A>& a) { !a; }
 [[nodiscard]] auto operator!(const A& a) {
-  return lift([](const auto& x) { return !x; }, a);
+  if constexpr (std::is_same_v<ValueOf<A>, bool>) {
+    return detail::numbers::negate(toBehavior(a));
+  } else {
+    return lift([](const auto& x) { return !x; }, a);
+  }
 }
 
 // Pointwise maths on behaviors of numbers (plain numbers keep using <cmath>).
-#define FROB_BEHAVIOR_MATH_FUNCTION(name)                       \
-  template <BehaviorType A>                                     \
-    requires requires(const ValueOf<A>& a) { std::name(a); }    \
-  [[nodiscard]] auto name(const A& a) {                         \
-    return lift([](const auto& x) { return std::name(x); }, a); \
+#define FROB_BEHAVIOR_MATH_FUNCTION(name)                         \
+  template <BehaviorType A>                                       \
+    requires requires(const ValueOf<A>& a) { std::name(a); }      \
+  [[nodiscard]] auto name(const A& a) {                           \
+    if constexpr (detail::NumberOperand<A>) {                     \
+      return detail::numbers::name(toBehavior(a));                \
+    } else {                                                      \
+      return lift([](const auto& x) { return std::name(x); }, a); \
+    }                                                             \
   }
 FROB_BEHAVIOR_MATH_FUNCTION(sin)
 FROB_BEHAVIOR_MATH_FUNCTION(cos)
@@ -221,74 +245,118 @@ FROB_BEHAVIOR_MATH_FUNCTION(ceil)
 template <class A, class B>
   requires BehaviorOperands<A, B> && std::totally_ordered_with<ValueOf<A>, ValueOf<B>>
 [[nodiscard]] auto max(const A& a, const B& b) {
-  return lift([](const auto& x, const auto& y) { return x < y ? std::common_type_t<decltype(x), decltype(y)>(y) : x; }, a, b);
+  if constexpr (detail::NumberOperand<A> && detail::NumberOperand<B>) {
+    return detail::numbers::max(detail::number(a), detail::number(b));
+  } else {
+    return lift([](const auto& x, const auto& y) { return x < y ? std::common_type_t<decltype(x), decltype(y)>(y) : x; }, a, b);
+  }
 }
 
 /// Pointwise smaller of two (behaviors or values).
 template <class A, class B>
   requires BehaviorOperands<A, B> && std::totally_ordered_with<ValueOf<A>, ValueOf<B>>
 [[nodiscard]] auto min(const A& a, const B& b) {
-  return lift([](const auto& x, const auto& y) { return y < x ? std::common_type_t<decltype(x), decltype(y)>(y) : x; }, a, b);
+  if constexpr (detail::NumberOperand<A> && detail::NumberOperand<B>) {
+    return detail::numbers::min(detail::number(a), detail::number(b));
+  } else {
+    return lift([](const auto& x, const auto& y) { return y < x ? std::common_type_t<decltype(x), decltype(y)>(y) : x; }, a, b);
+  }
 }
 
 /// Pointwise largest of three or more (behaviors or values): max(sonar(r, 15), sonar(r, 0), sonar(r, 1)).
 template <class... Xs>
   requires(sizeof...(Xs) >= 3 && (BehaviorType<Xs> || ...)) && requires { typename std::common_type_t<ValueOf<Xs>...>; }
 [[nodiscard]] auto max(const Xs&... xs) {
-  return lift([](const ValueOf<Xs>&... v) { return std::max({static_cast<std::common_type_t<ValueOf<Xs>...>>(v)...}); }, xs...);
+  if constexpr ((detail::NumberOperand<Xs> && ...)) {
+    return detail::numbers::maxOf({detail::number(xs)...});
+  } else {
+    return lift([](const ValueOf<Xs>&... v) { return std::max({static_cast<std::common_type_t<ValueOf<Xs>...>>(v)...}); }, xs...);
+  }
 }
 
 /// Pointwise smallest of three or more (behaviors or values): min(sonar(r, 15), sonar(r, 0), sonar(r, 1)).
 template <class... Xs>
   requires(sizeof...(Xs) >= 3 && (BehaviorType<Xs> || ...)) && requires { typename std::common_type_t<ValueOf<Xs>...>; }
 [[nodiscard]] auto min(const Xs&... xs) {
-  return lift([](const ValueOf<Xs>&... v) { return std::min({static_cast<std::common_type_t<ValueOf<Xs>...>>(v)...}); }, xs...);
+  if constexpr ((detail::NumberOperand<Xs> && ...)) {
+    return detail::numbers::minOf({detail::number(xs)...});
+  } else {
+    return lift([](const ValueOf<Xs>&... v) { return std::min({static_cast<std::common_type_t<ValueOf<Xs>...>>(v)...}); }, xs...);
+  }
 }
 
 /// Pointwise `v` limited to [lo, hi].
 template <class V, class L, class H>
   requires BehaviorType<V> || BehaviorType<L> || BehaviorType<H>
 [[nodiscard]] auto clamp(const V& v, const L& lo, const H& hi) {
-  return lift([](double x, double l, double h) { return x < l ? l : (h < x ? h : x); }, v, lo, hi);
+  if constexpr (detail::NumberOperand<V> && detail::NumberOperand<L> && detail::NumberOperand<H>) {
+    return detail::numbers::clamp(detail::number(v), detail::number(lo), detail::number(hi));
+  } else {
+    return lift([](double x, double l, double h) { return x < l ? l : (h < x ? h : x); }, v, lo, hi);
+  }
 }
 
 /// Pointwise atan2(y, x), radians.
 template <class Y, class X>
   requires BehaviorOperands<Y, X>
 [[nodiscard]] auto atan2(const Y& y, const X& x) {
-  return lift([](double a, double b) { return std::atan2(a, b); }, y, x);
+  if constexpr (detail::NumberOperand<Y> && detail::NumberOperand<X>) {
+    return detail::numbers::atan2(detail::number(y), detail::number(x));
+  } else {
+    return lift([](double a, double b) { return std::atan2(a, b); }, y, x);
+  }
 }
 
 /// Pointwise `base` to the power `e`.
 template <class A, class B>
   requires BehaviorOperands<A, B>
 [[nodiscard]] auto pow(const A& base, const B& e) {
-  return lift([](double a, double b) { return std::pow(a, b); }, base, e);
+  if constexpr (detail::NumberOperand<A> && detail::NumberOperand<B>) {
+    return detail::numbers::pow(detail::number(base), detail::number(e));
+  } else {
+    return lift([](double a, double b) { return std::pow(a, b); }, base, e);
+  }
 }
 
 /// Pointwise length of a vector behavior.
 template <BehaviorType V>
 [[nodiscard]] auto norm(const V& v) {
-  return lift([](const Vec2& x) { return x.norm(); }, v);
+  if constexpr (std::is_same_v<ValueOf<V>, Point2>) {
+    return detail::numbers::norm(toBehavior(v));
+  } else {
+    return lift([](const Vec2& x) { return x.norm(); }, v);
+  }
 }
 
 /// Pointwise distance between two points (behaviors or values).
 template <class A, class B>
   requires BehaviorOperands<A, B>
 [[nodiscard]] auto distance(const A& a, const B& b) {
-  return lift([](const Point2& p, const Point2& q) { return (p - q).norm(); }, a, b);
+  if constexpr (std::is_same_v<ValueOf<A>, Point2> && std::is_same_v<ValueOf<B>, Point2>) {
+    return detail::numbers::distance(detail::behaviorOf(a), detail::behaviorOf(b));
+  } else {
+    return lift([](const Point2& p, const Point2& q) { return (p - q).norm(); }, a, b);
+  }
 }
 
 /// Pointwise direction of a vector behavior, radians in (-pi, pi].
 template <BehaviorType V>
 [[nodiscard]] auto heading(const V& v) {
-  return lift([](const Vec2& x) { return std::atan2(x.y(), x.x()); }, v);
+  if constexpr (std::is_same_v<ValueOf<V>, Point2>) {
+    return detail::numbers::heading(toBehavior(v));
+  } else {
+    return lift([](const Vec2& x) { return std::atan2(x.y(), x.x()); }, v);
+  }
 }
 
 /// Pointwise angle wrapped to (-pi, pi].
 template <BehaviorType A>
 [[nodiscard]] auto wrapAngle(const A& a) {
-  return lift([](double x) { return wrapAngle(x); }, a);
+  if constexpr (detail::NumberOperand<A>) {
+    return detail::numbers::wrapAngle(toBehavior(a));
+  } else {
+    return lift([](double x) { return wrapAngle(x); }, a);
+  }
 }
 
 }  // namespace frob

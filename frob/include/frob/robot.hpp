@@ -94,7 +94,11 @@ class Robot {
 template <class F, class T>
   requires std::convertible_to<ValueOf<F>, double> && std::convertible_to<ValueOf<T>, double>
 [[nodiscard]] auto wheels(const F& forward, const T& turn) {
-  return lift([](double f, double t) { return Wheels{f, t}; }, forward, turn);
+  if constexpr (detail::NumberOperand<F> && detail::NumberOperand<T>) {
+    return detail::numbers::wheels(detail::number(forward), detail::number(turn));
+  } else {
+    return lift([](double f, double t) { return Wheels{f, t}; }, forward, turn);
+  }
 }
 
 }  // namespace frob

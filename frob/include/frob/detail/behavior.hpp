@@ -63,46 +63,53 @@ auto plain(R&& r) {
 template <class T>
 class ConstantNode final : public BehaviorNode<T> {
  public:
-  explicit ConstantNode(T v) : value_(std::move(v)) {}
+  explicit ConstantNode(T v) { this->hold(std::move(v)); }
+  [[nodiscard]] bool constant() const override { return true; }
 
  protected:
-  T compute(const Instant&) override { return value_; }
+  T compute(const Instant&) override { return this->value(); }
+};
+
+// A lifted function's node, one type per signature R(Vs...): the function is kept type-erased (a
+// pointer to its call and its closure on the heap), so that each lambda a controller lifts costs a
+// call and a delete, not a node type of its own; the common signatures are precompiled.
+template <class F>
+void deleteClosure(void* f) {
+  delete static_cast<F*>(f);
+}
+template <class R, class F, class... Vs>
+R callClosure(const void* f, const Vs&... v) {
+  return R(plain(std::invoke(*static_cast<const F*>(f), v...)));
+}
+template <class R, class... Vs>
+class LiftNode final : public StrictNode<R, LiftNode<R, Vs...>> {
+ public:
+  using Call = R (*)(const void*, const Vs&...);
+  LiftNode(Call call, std::unique_ptr<void, void (*)(void*)> closure, std::shared_ptr<BehaviorNode<Vs>>... inputs)
+      : call_(call), closure_(std::move(closure)), inputs_(std::move(inputs)...) {}
+  R computeFresh(const Instant&) {
+    return std::apply([&](const auto&... in) { return call_(closure_.get(), in->value()...); }, inputs_);
+  }
+  void strictInputs(std::vector<Input>& out) const override {
+    std::apply([&](const auto&... in) { (out.push_back(inputOf(in)), ...); }, inputs_);
+  }
 
  private:
-  T value_;
+  Call call_;
+  std::unique_ptr<void, void (*)(void*)> closure_;
+  std::tuple<std::shared_ptr<BehaviorNode<Vs>>...> inputs_;
 };
 
-// One argument of a lifted function: a behavior sampled at the instant, a pointwise expression
-// evaluated in place, or a plain value. `fresh` is `get` for a node whose inputs a plan has
-// already brought up to date; `inputs` lists the nodes read.
+// The node a lifted argument is read from: a behavior's own, or a constant's for a plain value.
 template <class A>
-struct Arg {
-  A value;
-  const A& get(const Instant&) const { return value; }
-  const A& fresh(const Instant&) const { return value; }
-  void inputs(std::vector<Input>&) const {}
-};
-template <class T>
-struct Arg<Behavior<T>> {
-  std::shared_ptr<BehaviorNode<T>> node;
-  const T& get(const Instant& now) const { return node->at(now); }
-  const T& fresh(const Instant&) const { return node->value(); }
-  void inputs(std::vector<Input>& out) const { out.push_back(inputOf(node)); }
-};
-template <class R, class F, class... Args>
-struct Arg<Pointwise<R, F, Args...>> {
-  Pointwise<R, F, Args...> expr;
-  R get(const Instant& now) const { return expr.eval(now); }
-  R fresh(const Instant& now) const { return expr.evalFresh(now); }
-  void inputs(std::vector<Input>& out) const { expr.inputs(out); }
-};
-
-template <class A>
-Arg<std::remove_cvref_t<A>> makeArg(A&& a) {
-  if constexpr (IsBehavior<std::remove_cvref_t<A>>::value && !IsPointwise<std::remove_cvref_t<A>>::value) {
-    return {a.node()};
+auto inputNode(A&& a) {
+  using D = std::remove_cvref_t<A>;
+  if constexpr (IsPointwise<D>::value) {
+    return a.behavior().node();
+  } else if constexpr (IsBehavior<D>::value) {
+    return a.node();
   } else {
-    return {std::forward<A>(a)};
+    return std::shared_ptr<BehaviorNode<D>>(std::make_shared<ConstantNode<D>>(std::forward<A>(a)));
   }
 }
 

@@ -78,6 +78,8 @@ class NodeBase {
   [[nodiscard]] virtual PlanStep::Run planStep(bool checked) const { return checked ? &runStep<NodeBase, true> : &runStep<NodeBase, false>; }
   // True if the node reads the same inputs at every instant (strictInputs lists them).
   [[nodiscard]] virtual bool strict() const { return false; }
+  // True if the node holds one value from its creation: plans leave it out.
+  [[nodiscard]] virtual bool constant() const { return false; }
   // Appends the nodes a strict node reads at every instant, in the order it reads them. Other
   // nodes (switches, events) read their inputs only sometimes and pull them themselves.
   virtual void strictInputs(std::vector<Input>& out) const { (void)out; }

@@ -2,6 +2,7 @@
 // The machinery behind robot.hpp: how a sensor reading reads the robot's frame.
 
 #include "frob/detail/node.hpp"
+#include "frob/fwd.hpp"
 #include "frob/robot_values.hpp"
 
 #include <cstddef>
@@ -11,6 +12,11 @@
 
 namespace frob {
 namespace detail {
+
+// The paper's pairB on behaviors of numbers, compiled once in libfrob (see numbers.hpp).
+namespace numbers {
+Behavior<Wheels> wheels(const Behavior<double>& forward, const Behavior<double>& turn);
+}
 
 // Throws std::out_of_range for a sonar the frame lacks.
 [[noreturn]] void sonarOutOfRange(std::size_t index, std::size_t size);
