@@ -118,7 +118,7 @@ CompilerSetup compilerSetup(bool checked) {
     // Code that stops at its first mistake and says where: asserts on, line tables for the
     // report's stack, and -O1, at which the stack still names the student's functions.
     std::erase(s.flags, "-DNDEBUG");
-    std::replace(s.flags.begin(), s.flags.end(), std::string("-O2"), std::string("-O1"));
+    std::replace(s.flags.begin(), s.flags.end(), std::string("-O0"), std::string("-O1"));
     // DWARF 4: binutils 2.40's addr2line, which symbolizes the reports, misnames headers in clang's DWARF 5.
     s.flags.insert(s.flags.end(), {"-fsanitize=address,undefined", "-fno-sanitize-recover=all", "-fno-omit-frame-pointer", "-gline-tables-only",
                                    "-gdwarf-4", "-D_GLIBCXX_ASSERTIONS"});

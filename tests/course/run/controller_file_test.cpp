@@ -6,8 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <string>
 
 namespace frob::course {
 namespace {
@@ -51,6 +54,38 @@ TEST(ControllerFile, CompilesWithHeadersFromItsOwnFolderAndCachesTheModule) {
   EXPECT_EQ(again.value().module, c.value().module);
   // Nothing but the module is left in the cache: the build folder is gone.
   EXPECT_EQ(std::distance(fs::directory_iterator(dir / "cache"), fs::directory_iterator()), 1);
+}
+
+// The dynamic symbols of `module` that it defines (`defined`) or needs from its host, demangled.
+std::string dynamicSymbols(const fs::path& module, bool defined) {
+  const std::string command = std::string("nm -D -C ") + (defined ? "--defined-only " : "--undefined-only ") + module.string();
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(::popen(command.c_str(), "r"), &::pclose);
+  std::string out;
+  for (char buffer[4096]; pipe && std::fgets(buffer, sizeof buffer, pipe.get()) != nullptr;) out += buffer;
+  return out;
+}
+
+// Issue 29: a controller compiles only its own code; the task machinery of Task<Wheels> and the
+// operators on numbers were compiled once, with the precompiled header (-fpch-codegen), into the
+// host that loads it.
+TEST(ControllerFile, AControllerCompilesOnlyItsOwnCodeAndTakesTheRestFromItsHost) {
+  const fs::path dir = freshFolder("precompiled");
+  writeFile(dir / "go.cpp", R"(#include <frob/frob.hpp>
+using namespace frob;
+Task<Wheels> go() {
+  co_await mkTask([](const TaskState& ts) { return std::pair{wheels(sonar(ts.robot(), 0) * 0.5, 0.0), after(1.0)}; });
+}
+FROB_CONTROLLER(go)
+)");
+  Result<CompiledController> c = compileControllerFile(dir / "go.cpp", setupIn(dir));
+  ASSERT_TRUE(c.ok()) << c.error();
+  const std::string needs = dynamicSymbols(c.value().module, false), has = dynamicSymbols(c.value().module, true);
+  ASSERT_NE(has.find("frob_controller_v1"), std::string::npos) << has;
+  EXPECT_NE(needs.find("frob::detail::TaskPromise<frob::Wheels, void>::final_suspend()"), std::string::npos) << needs;
+  EXPECT_NE(needs.find("frob::makeController<frob::Task<frob::Wheels, void> (*)()>"), std::string::npos) << needs;
+  EXPECT_EQ(has.find("TaskPromise"), std::string::npos) << has;
+  EXPECT_NE(needs.find("frob::detail::numbers::multiply("), std::string::npos) << needs;
+  EXPECT_EQ(has.find("PointwiseNode"), std::string::npos) << has;
 }
 
 // A cached run shows the compiler's warnings again: a student who reruns still sees them.
