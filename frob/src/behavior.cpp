@@ -2,8 +2,10 @@
 // here: each is the lift a controller's own expression would otherwise instantiate.
 #include "frob/behavior.hpp"
 
-#include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <memory>
+#include <vector>
 
 namespace frob::detail::numbers {
 
@@ -100,7 +102,7 @@ namespace {
 // std::max and std::min of an initializer list choose.
 class ExtremumNode final : public StrictNode<double, ExtremumNode> {
  public:
-  ExtremumNode(const std::vector<B>& all, bool larger) : larger_(larger) {
+  ExtremumNode(std::initializer_list<B> all, bool larger) : larger_(larger) {
     for (const B& b : all) inputs_.push_back(b.node());
   }
   double computeFresh(const Instant&) {
@@ -121,8 +123,8 @@ class ExtremumNode final : public StrictNode<double, ExtremumNode> {
 };
 }  // namespace
 
-B maxOf(const std::vector<B>& all) { return B(std::make_shared<ExtremumNode>(all, true)); }
-B minOf(const std::vector<B>& all) { return B(std::make_shared<ExtremumNode>(all, false)); }
+B maxOf(std::initializer_list<B> all) { return B(std::make_shared<ExtremumNode>(all, true)); }
+B minOf(std::initializer_list<B> all) { return B(std::make_shared<ExtremumNode>(all, false)); }
 B clamp(const B& v, const B& lo, const B& hi) {
   return lift([](double x, double l, double h) { return x < l ? l : (h < x ? h : x); }, v, lo, hi);
 }

@@ -7,8 +7,8 @@
 
 #include "frob/geometry.hpp"
 
+#include <initializer_list>
 #include <type_traits>
-#include <vector>
 
 namespace frob::detail {
 template <class A>
@@ -65,8 +65,8 @@ B ceil(const B& a);
 B wrapAngle(const B& a);
 B max(const B& a, const B& b);
 B min(const B& a, const B& b);
-B maxOf(const std::vector<B>& all);
-B minOf(const std::vector<B>& all);
+B maxOf(std::initializer_list<B> all);
+B minOf(std::initializer_list<B> all);
 B clamp(const B& v, const B& lo, const B& hi);
 B atan2(const B& y, const B& x);
 B pow(const B& base, const B& e);
