@@ -16,7 +16,7 @@
 
 namespace frob {
 
-/// True for behaviors: `Behavior<T>` and the pointwise expressions built from them.
+/// True for behaviors: `Behavior<T>` and sensor readings (Pointwise).
 template <class T>
 concept BehaviorType = detail::IsBehavior<std::remove_cvref_t<T>>::value;
 
@@ -112,7 +112,7 @@ class Pointwise {
   std::tuple<Args...> args_;
 };
 
-/// The behavior a behavior-like value stands for: itself, or its pointwise expression as one node.
+/// The behavior a behavior-like value stands for: itself, or a reading as one node.
 template <BehaviorType B>
 [[nodiscard]] Behavior<ValueOf<B>> toBehavior(const B& b) {
   if constexpr (detail::IsPointwise<std::remove_cvref_t<B>>::value) {

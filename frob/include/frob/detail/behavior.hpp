@@ -1,6 +1,6 @@
 #pragma once
 // The machinery behind behavior.hpp: type traits for behaviors, the nodes constant and time
-// behaviors become, and how a lifted function reads each of its arguments.
+// behaviors become, and the node of a lifted function (one type per signature).
 
 #include "frob/detail/node.hpp"
 #include "frob/geometry.hpp"
@@ -113,7 +113,7 @@ auto inputNode(A&& a) {
   }
 }
 
-// The node a pointwise expression becomes: one node for the whole expression tree.
+// The node a reading (a Pointwise) becomes.
 template <class R, class Expr>
 class PointwiseNode final : public StrictNode<R, PointwiseNode<R, Expr>> {
  public:
