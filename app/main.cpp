@@ -7,6 +7,7 @@
 #include "frob/run/controller_file.hpp"
 #include "frob/run/examples.hpp"
 #include "frob/run/host.hpp"
+#include "frob/run/project.hpp"
 #include "frob/run/session.hpp"
 #include "frob/run/summary.hpp"
 #include "frob/worlds/generate.hpp"
@@ -40,6 +41,7 @@ constexpr const char* kExamples = R"(Examples:
   frob run a.cpp b.cpp --world arena        one controller per robot
   frob render maze --out maze.png           a picture of a world
   frob list                                 the worlds and examples there are
+  frob init my_project                      a project of your own, set up for clangd's completion
 )";
 
 // Prints "frob: <message>" on stderr and gives the exit status of a failure.
@@ -270,7 +272,21 @@ int listCommand() {
   }
   std::cout << "\nAssignments (frob grade NAME my.cpp --visible-only; handouts in " << shown(files.assignments) << "/NAME/handout.md):\n";
   for (const course::Assignment& a : course::assignments()) std::printf("  %-16s %s\n", a.name.c_str(), a.title.c_str());
-  std::cout << "\nA project of your own, with GoogleTest tests of its tasks: copy " << shown(files.studentTemplate) << " (see its README.md)\n";
+  std::cout << "\nA project of your own, with GoogleTest tests of its tasks and editor completion: frob init my_project (the template: "
+            << shown(files.studentTemplate) << ")\n";
+  return 0;
+}
+
+// `frob init [folder]`: the student template and the editor's flags in `folder`.
+int initCommand(const std::string& folder) {
+  Result<std::vector<course::ProjectFile>> files = course::initProject(folder);
+  if (!files) return fail(files.error());
+  for (const course::ProjectFile& f : files.value()) {
+    std::cout << (f.written ? "  wrote " : "  kept   ") << f.path.string() << (f.written ? "" : " (already there)") << "\n";
+  }
+  std::cout << "\nRun the controller:  cd " << folder << " && frob run wander.cpp --video wander.mp4\n"
+            << "Editor completion:   compile_flags.txt tells clangd (Debian: apt install clangd-16) where frob's headers are;\n"
+            << "                     in VS Code, install the clangd extension and set \"clangd.path\": \"clangd-16\"\n";
   return 0;
 }
 
@@ -382,12 +398,17 @@ The rubric format and the instructors' guide: course/grading.md)");
 
   CLI::App* listCmd = cli.add_subcommand("list", "List the reference worlds and the course examples");
 
+  std::string initFolder = ".";
+  CLI::App* initCmd = cli.add_subcommand("init", "Start a controller project: the student template, and compile_flags.txt for clangd");
+  initCmd->add_option("folder", initFolder, "Where (made if needed; files already there are kept)")->capture_default_str();
+
   CLI11_PARSE(cli, argc, argv);
   if (runCmd->parsed()) return frob::app::runCommand(run);
   if (renderCmd->parsed()) return frob::app::renderCommand(renderWorld, renderOut, renderSize);
   if (gradeCmd->parsed()) return frob::app::gradeCommand(grade);
   if (generateCmd->parsed()) return frob::app::generateCommand(kind, worldSeed, worldOut);
   if (listCmd->parsed()) return frob::app::listCommand();
+  if (initCmd->parsed()) return frob::app::initCommand(initFolder);
   std::cout << cli.help();
   return 0;
 }

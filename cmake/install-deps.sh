@@ -3,6 +3,7 @@
 set -euo pipefail
 packages=(
   cmake ninja-build pkg-config ccache clang-format-16   # build tools; the house style
+  clangd-16                                        # editor completion (frob init's test)
   clang-16 libclang-rt-16-dev                      # the compiler (see README: GCC 12 breaks coroutines), its sanitizers
   binutils                                         # addr2line: names the line in a checked run's report
   libeigen3-dev libbox2d-dev libassimp-dev         # maths, physics, meshes

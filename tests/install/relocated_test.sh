@@ -43,7 +43,7 @@ contains list.txt "arena"
 contains list.txt "06_bug"
 contains list.txt "go_to_goal"
 contains list.txt "frob run $prefix/share/frob/examples/NAME.cpp"
-contains list.txt "copy $prefix/share/frob/template"
+contains list.txt "frob init my_project (the template: $prefix/share/frob/template)"
 lacks list.txt "cannot"
 
 # An assignment of the prefix graded (its starter scores, visible checks only).

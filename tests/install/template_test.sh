@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs to a temporary prefix, moves it, copies the student project template out of it, and
-# configures, builds and tests it with find_package(frob CONFIG) against the moved prefix.
+# Installs to a temporary prefix, moves it, makes a project from the student template with the
+# moved prefix's `frob init` (its editor flags naming the prefix's headers), and configures, builds
+# and tests it with find_package(frob CONFIG) against the moved prefix.
 # Usage: template_test.sh CMAKE CTEST BUILD_DIR CXX MAKE_PROGRAM
 cmake=$1 ctest=$2 build=$3 cxx=$4 make_program=$5
 source "$(dirname "$0")/common.sh"
@@ -9,8 +10,10 @@ make_work
 "$cmake" --install "$build" --prefix "$work/installed" > "$work/install.log"
 mv "$work/installed" "$work/moved"
 prefix="$work/moved"
-cp -r "$prefix/share/frob/template" "$work/project"
+"$prefix/bin/frob" init "$work/project" > init.log 2>&1 || { cat init.log; fail "frob init"; }
 cd "$work/project"
+contains compile_flags.txt "-I$prefix/include"
+lacks compile_flags.txt "frob-sdk"
 
 "$cmake" -S . -B build -G Ninja -DCMAKE_MAKE_PROGRAM="$make_program" -DCMAKE_CXX_COMPILER="$cxx" \
   -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF > configure.log 2>&1 || { cat configure.log; fail "configure"; }
