@@ -72,6 +72,15 @@ std::string describe(const std::exception_ptr& e, TaskEnd* why) {
   }
 }
 
+namespace print {
+std::string joined(const std::vector<std::string>& items) {
+  constexpr std::size_t kShown = 8;
+  std::string out;
+  for (std::size_t k = 0; k < items.size() && k < kShown; ++k) out += (k == 0 ? "" : ", ") + items[k];
+  return items.size() > kShown ? out + ", ..." : out;
+}
+}  // namespace print
+
 std::string typeNameIn(std::string_view signature) {
   // clang: "std::string frob::detail::typeName() [T = Wall]"; GCC: "... [with T = Wall; ...]".
   std::size_t from = signature.find("T = ");

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <limits>
 #include <ostream>
+#include <tuple>
+#include <variant>
 
 // Results a student's task may return, named as a student names them (global, not in frob).
 namespace {
@@ -392,15 +394,26 @@ TEST(Task, TheTimelinePrintsAResultAsItsTypeReads) {
     (void)co_await give(Gap{1.5});
     (void)co_await give(Seen{3});
     (void)co_await give(std::optional<Side>());
+    (void)co_await give(std::pair{Side::left, 2.5});
+    (void)co_await give(std::tuple{1, std::string("two"), std::optional<int>(3)});
+    (void)co_await give(std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9});
+    (void)co_await give(std::variant<int, Side>(Side::right));
+    (void)co_await give(Point2(3.0, -2.5));
+    (void)co_await give(Outcome<std::string>{.value = "home"});
+    (void)co_await give(Outcome<void>{.value = Unit{}});
+    (void)co_await give(Outcome<int>{.error = RoboErr("lost the wall")});
   };
   Robot r = idleRobot();
-  (void)samples(runTask(r, seq()), 0.1, 8);
+  (void)samples(runTask(r, seq()), 0.1, 17);
   std::vector<std::string> details;
   for (const TaskRecord& rec : r.debugChannel()->timeline().drainEnded()) {
     if (rec.name == "give") details.push_back(rec.detail);
   }
-  // Its operator<< if it has one (a bool's reads true), else the type's name.
-  EXPECT_EQ(details, (std::vector<std::string>{"true", "right", "Colour", "Gap", "3 seen", "none"}));
+  // Its operator<< if it has one (a bool's reads true); what a std type holds; an enum's type and
+  // number; a withTask Outcome as it ended; else the type's name.
+  EXPECT_EQ(details,
+            (std::vector<std::string>{"true", "right", "Colour(1)", "Gap", "3 seen", "none", "(left, 2.5)", "(1, two, 3)",
+                                      "[1, 2, 3, 4, 5, 6, 7, 8, ...]", "right", "(3, -2.5)", "returned home", "returned", "failed: lost the wall"}));
 }
 
 Task<Wheels> tick() {

@@ -8,6 +8,7 @@
 #include "frob/detail/call_site.hpp"
 #include "frob/errors.hpp"
 #include "frob/event.hpp"
+#include "frob/geometry.hpp"
 #include "frob/task_state.hpp"
 
 #include <atomic>
@@ -17,12 +18,15 @@
 #include <exception>
 #include <functional>
 #include <optional>
+#include <ranges>
 #include <source_location>
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 namespace frob {
@@ -63,6 +67,8 @@ template <class R>
 concept Streamable = requires(std::ostream& os, const R& v) {
   { os << v } -> std::same_as<std::ostream&>;
 };
+// "a, b, c"; at most the first eight, then "...".
+[[nodiscard]] std::string joined(const std::vector<std::string>& items);
 }  // namespace print
 
 // "frob::Wheels" from the signature of typeName<frob::Wheels>() (its __PRETTY_FUNCTION__).
@@ -72,12 +78,19 @@ std::string typeName() {
   return typeNameIn(__PRETTY_FUNCTION__);
 }
 
-// Printable form of a task's result for the timeline, as the type reads: its operator<< (a bool as
-// true or false), its toString, an optional's value or "none", else the type's name.
+// Printable form of a task's result for the timeline and summaries, as the value reads: its
+// operator<< (a bool as true or false), its toString; else, for the usual std types, what they hold
+// (an optional's value or "none", "(a, b)" for a pair or tuple, "[a, b]" for a container, a
+// variant's value, a point's "(x, y)"), a withTask Outcome as "returned X" or "failed: why", an
+// enum's type and number "Side(1)", else the type's name.
 template <class R>
 std::string printable(const R& v) {
   if constexpr (std::is_same_v<R, Unit>) {
     return "";
+  } else if constexpr (std::is_base_of_v<Eigen::DenseBase<R>, R>) {  // Eigen's own << writes a column
+    std::string out = "(";
+    for (Eigen::Index k = 0; k < v.size(); ++k) out += (k == 0 ? "" : ", ") + printable(v(k));
+    return out + ")";
   } else if constexpr (print::Streamable<R>) {
     std::ostringstream os;
     os << std::boolalpha << v;
@@ -89,6 +102,24 @@ std::string printable(const R& v) {
                          *v;
                        }) {
     return v.has_value() ? printable(*v) : std::string("none");
+  } else if constexpr (requires {
+                         v.ok();
+                         v.value;
+                         v.error->what();
+                       }) {
+    if (!v.ok()) return "failed: " + std::string(v.error ? v.error->what() : "");
+    const std::string value = v.value ? printable(*v.value) : "";
+    return value.empty() ? "returned" : "returned " + value;
+  } else if constexpr (requires { std::tuple_size<R>::value; }) {
+    return std::apply([](const auto&... x) { return "(" + print::joined({printable(x)...}) + ")"; }, v);
+  } else if constexpr (requires { std::variant_size<R>::value; }) {
+    return std::visit([](const auto& x) { return printable(x); }, v);
+  } else if constexpr (std::ranges::input_range<const R>) {
+    std::vector<std::string> items;
+    for (const auto& x : v) items.push_back(printable(x));
+    return "[" + print::joined(items) + "]";
+  } else if constexpr (std::is_enum_v<R>) {
+    return typeName<R>() + "(" + std::to_string(static_cast<long long>(v)) + ")";
   } else {
     return typeName<R>();
   }
