@@ -284,7 +284,7 @@ int initCommand(const std::string& folder) {
   for (const course::ProjectFile& f : files.value()) {
     std::cout << (f.written ? "  wrote " : "  kept   ") << f.path.string() << (f.written ? "" : " (already there)") << "\n";
   }
-  std::cout << "\nRun the controller:  cd " << folder << " && frob run wander.cpp --video wander.mp4\n"
+  std::cout << "\nRun the controller:  " << (folder == "." ? "" : "cd " + folder + " && ") << "frob run wander.cpp --video wander.mp4\n"
             << "Editor completion:   compile_flags.txt tells clangd (Debian: apt install clangd-16) where frob's headers are;\n"
             << "                     in VS Code, install the clangd extension and set \"clangd.path\": \"clangd-16\"\n";
   return 0;

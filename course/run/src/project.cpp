@@ -4,6 +4,7 @@
 #include "frob/render/output_file.hpp"
 #include "frob/run/controller_file.hpp"
 
+#include <algorithm>
 #include <fstream>
 
 namespace frob::course {
@@ -31,18 +32,22 @@ Result<std::vector<ProjectFile>> initProject(const fs::path& folder) {
   if (ec) return Status::failure("cannot create the folder '" + folder.string() + "': " + ec.message());
   std::vector<ProjectFile> files;
   const fs::path from = layout().studentTemplate;
+  std::vector<fs::path> sources;  // in a stable order, for the command's report
   for (const fs::directory_entry& e : fs::recursive_directory_iterator(from, ec)) {
-    if (!e.is_regular_file()) continue;
-    const fs::path to = folder / fs::relative(e.path(), from);
+    if (e.is_regular_file()) sources.push_back(fs::relative(e.path(), from));
+  }
+  if (ec) return Status::failure("cannot read the student template '" + from.string() + "': " + ec.message());
+  std::sort(sources.begin(), sources.end());
+  for (const fs::path& source : sources) {
+    const fs::path to = folder / source;
     const bool absent = !fs::exists(to);
     if (absent) {
       fs::create_directories(to.parent_path(), ec);
-      if (!ec) fs::copy_file(e.path(), to, ec);
+      if (!ec) fs::copy_file(from / source, to, ec);
       if (ec) return Status::failure("cannot write '" + to.string() + "': " + ec.message());
     }
     files.push_back({to, absent});
   }
-  if (ec) return Status::failure("cannot read the student template '" + from.string() + "': " + ec.message());
 
   const fs::path flagsFile = folder / "compile_flags.txt";
   {
