@@ -64,6 +64,6 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION education)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
   "libc6, libstdc++6, libgcc-s1, zlib1g, libbox2d2, libassimp5, libdraco7, libminizip1, libtomlplusplus3, libpng16-16, libfreetype6, fonts-dejavu-core, libosmesa6, libavcodec59, libavformat59, libavutil57, libswscale6, libzip4, libseccomp2, libssl3, clang-16, libstdc++-12-dev, libeigen3-dev, libclang-rt-16-dev, binutils")
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "cmake, ninja-build, libgtest-dev")  # the student project template
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "cmake, ninja-build, libgtest-dev, clangd-16")  # the student project template; frob init's editor completion
 set(CPACK_GENERATOR DEB)
 include(CPack)
