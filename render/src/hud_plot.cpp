@@ -100,6 +100,15 @@ void drawPlots(Canvas& c, const FontAtlas& fonts, const PlotSet& plots, double n
   for (std::size_t pi = 0; pi < n; ++pi) {
     const Plot& plot = plots.plots[pi];
     const double y0 = chartTop(pi), y1 = y0 + ph;
+    // Title and legend at the chart's top, wrapping onto more lines when the chart is narrow; the
+    // values are drawn below them, so that no series runs through the legend.
+    double lx = fonts.draw(c, Font::Sans, {left + 4, y0 + asc + 1}, plot.title, ink) + 8, ly = y0 + asc + 1;
+    for (std::size_t si = 0; si < plot.series.size(); ++si) {
+      const std::string& name = plot.series[si].name;
+      if (lx + fonts.width(Font::Sans, name) > right && lx > left + 4) lx = left + 4, ly += lh;
+      lx = fonts.draw(c, Font::Sans, {lx, ly}, name, rgba8(palette::series(plot.series[si], si))) + 8;
+    }
+    const double valuesTop = std::min(ly + (lh - asc) + 2, y1 - 4);
     // Value range from the whole data (not just up to now) so axes stay still during a video.
     double lo = 1e300, hi = -1e300;
     for (const Series& s : plot.series)
@@ -109,19 +118,11 @@ void drawPlots(Canvas& c, const FontAtlas& fonts, const PlotSet& plots, double n
     if (plot.yMax) hi = *plot.yMax;
     if (!(hi > lo)) lo = (lo > 1e299 ? 0.0 : lo) - 1.0, hi = lo + 2.0;
     if (!plot.yMin && !plot.yMax) std::tie(lo, hi) = niceRange(lo, hi);
-    auto yOf = [&](double v) { return y1 - (std::clamp(v, lo, hi) - lo) / (hi - lo) * (y1 - y0); };
+    auto yOf = [&](double v) { return y1 - (std::clamp(v, lo, hi) - lo) / (hi - lo) * (y1 - valuesTop); };
     if (lo < 0 && hi > 0) c.line({left, yOf(0)}, {right, yOf(0)}, 1, faint, false);
     c.polyline(std::vector<Vec2>{{left, y0}, {left, y1}, {right, y1}}, 1, axis);
-    fonts.draw(c, Font::Sans, {vp.x + 4, y0 + asc}, tick(hi), ink);
+    fonts.draw(c, Font::Sans, {vp.x + 4, valuesTop + asc}, tick(hi), ink);
     fonts.draw(c, Font::Sans, {vp.x + 4, y1}, tick(lo), ink);
-    // Title and legend on the chart's first line.
-    // Title and legend, wrapping onto more lines when the chart is narrow.
-    double lx = fonts.draw(c, Font::Sans, {left + 4, y0 + asc + 1}, plot.title, ink) + 8, ly = y0 + asc + 1;
-    for (std::size_t si = 0; si < plot.series.size(); ++si) {
-      const std::string& name = plot.series[si].name;
-      if (lx + fonts.width(Font::Sans, name) > right && lx > left + 4) lx = left + 4, ly += lh;
-      lx = fonts.draw(c, Font::Sans, {lx, ly}, name, rgba8(palette::series(plot.series[si], si))) + 8;
-    }
     // Each series, reduced to first/min/max/last per pixel column so long runs stay cheap.
     for (std::size_t si = 0; si < plot.series.size(); ++si) {
       const Series& s = plot.series[si];
