@@ -142,6 +142,16 @@ void drawRobot(Canvas& c, const RobotView& r, const Mapping& m, Color col) {
   }
 }
 
+// Whether a robot's picture writes `label` within 30 nominal pixels of `at` (canvas units).
+bool pictureWrites(const FrameScene& scene, const std::string& label, const Vec2& at, const Mapping& m) {
+  for (const RobotView& r : scene.robots) {
+    for (const Shape& s : r.picture.shapes()) {
+      if (s.kind == Shape::Kind::Text && s.text == label && !s.points.empty() && (m.map(s.points[0]) - at).norm() < 30 * m.pixel) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 Color palette::robot(const RobotView& r, std::size_t index) { return r.color.value_or(kRobotColors[index % std::size(kRobotColors)]); }
@@ -234,13 +244,15 @@ void drawGround(Canvas& c, const FontAtlas& fonts, const RenderDef& def, const F
   const Rgba8 wallInk = rgba8(palette::wall);
   for (const Wall& w : scene.walls) c.line(m.map(w.a), m.map(w.b), std::max(w.thickness * m.scale, 2 * m.pixel), wallInk);
 
-  // Named points: a diamond and a label.
+  // Named points: a diamond and a label, unless a task's picture writes that label there itself.
   for (const Marker& p : scene.points) {
     const Color col = p.color.value_or(palette::point);
     const Vec2 q = m.map(p.at);
     const double s = 5 * m.pixel;
     c.quad(q + Vec2(0, -s), q + Vec2(s, 0), q + Vec2(0, s), q + Vec2(-s, 0), rgba8(col));
-    if (!p.name.empty()) text(p.at + Vec2(7 * m.pixel / m.scale, -4 * m.pixel / m.scale), p.name, darker(col));
+    if (!p.name.empty() && !pictureWrites(scene, p.name, q, m)) {
+      text(p.at + Vec2(7 * m.pixel / m.scale, -4 * m.pixel / m.scale), p.name, darker(col));
+    }
   }
 
   if (staticEnd != nullptr) *staticEnd = c.vertices().size();

@@ -211,6 +211,30 @@ TEST(Features, WallsObstaclesAndNamedPoints) {
   EXPECT_GE(countNear(img, int(a.x()) + 6, int(a.y()) - 14, int(a.x()) + 40, int(a.y()) + 2, label), 10) << "label";
 }
 
+// Issue 30: a task that marks a waypoint with its name (go_to_goal's "wp1") wrote it over the
+// world's own label of that point, a few pixels apart. The picture's label is drawn alone. (A
+// longer name than "wp1" here: more glyph cores to count.)
+TEST(Features, APointsLabelIsDrawnOnceWhenAPictureWritesItThere) {
+  Renderer r = make(kBare);
+  const Rgba8 label = rgba8({palette::point.r * 0.6f, palette::point.g * 0.6f, palette::point.b * 0.6f});
+  const auto labelPixels = [&](const std::string& written, Point2 where) {
+    FrameScene s = bareFloor();
+    s.points = {{"goal", Point2(2.0, 2.0), {}}};
+    RobotView v = robotAt(Point2(0.5, 3.5), 0);
+    v.picture = withColor(red, paintAt(where, text(written)));
+    s.robots.push_back(v);
+    const Image img = r.render(s);
+    const Vec2 a = r.worldToPixel(s, Point2(2.0, 2.0));
+    return std::pair{countNear(img, int(a.x()) + 6, int(a.y()) - 14, int(a.x()) + 40, int(a.y()) + 2, label),
+                     countNear(img, int(a.x()), int(a.y()) - 14, int(a.x()) + 40, int(a.y()) + 2, rgba8(red))};
+  };
+  const auto [worldLabel, pictureLabel] = labelPixels("goal", Point2(2.0, 2.0));
+  EXPECT_EQ(worldLabel, 0) << "the world's label under the picture's";
+  EXPECT_GE(pictureLabel, 5) << "the picture's label";
+  EXPECT_GE(labelPixels("wp1", Point2(1.0, 1.0)).first, 10) << "a picture writing something else leaves the world's label";
+  EXPECT_GE(labelPixels("goal", Point2(1.0, 1.0)).first, 10) << "and so does one writing it elsewhere";
+}
+
 TEST(Features, GridLinesAndTheirLabels) {
   RenderDef def = kBare;
   def.grid = true;
@@ -299,6 +323,30 @@ TEST(Features, PlotAxesAndLabels) {
   // The chart's first line: its title in black, then the legend in each series' colour.
   EXPECT_GE(countNear(img, 45, 0, 319, 40, rgba8(black)), 10) << "title";
   EXPECT_GE(countNear(img, 45, 0, 319, 40, rgba8(red)), 10) << "legend";
+}
+
+// Issue 30: a value near the top of the range ran through the legend. The rows the legend's text
+// covers (red text, left half: the series has no samples there) and the rows the series covers
+// (right part, no text there) must not meet.
+TEST(Features, NoSeriesRunsThroughTheLegend) {
+  Renderer r = make({.width = 320, .height = 200});
+  PlotSet p;
+  Series high{"level", {}, red};
+  for (int i = 80; i <= 100; ++i) high.samples.push_back({i * 0.1, 1.9});  // 5% below the top of 0..2, from 8 s
+  p.plots = {{"chart", {high}, 0.0, 2.0}};
+  p.tEnd = 10.0;
+  const Image img = r.renderPlots(p);
+  const auto redRows = [&](int x0, int x1) {
+    std::vector<int> rows;
+    for (int y = 0; y < img.height; ++y) {
+      if (countNear(img, x0, y, x1, y, rgba8(red), 40) > 0) rows.push_back(y);  // antialiased edges too
+    }
+    return rows;
+  };
+  const std::vector<int> legend = redRows(44, 160), series = redRows(260, 310);
+  ASSERT_FALSE(legend.empty());
+  ASSERT_FALSE(series.empty());
+  EXPECT_LT(legend.back(), series.front()) << "the legend's last row " << legend.back() << ", the series' first " << series.front();
 }
 
 }  // namespace
