@@ -89,11 +89,13 @@ Status writeTimeline(const std::string& path, const std::vector<std::string>& ro
   nlohmann::json events = nlohmann::json::array();
   for (std::size_t pid = 0; pid < records.size(); ++pid) {
     events.push_back({{"ph", "M"}, {"name", "process_name"}, {"pid", pid}, {"args", {{"name", robots.at(pid)}}}});
-    // Tasks sorted by start (outer first) go on the first track where they nest inside what is open.
+    // Tasks sorted by start, outer first (a task and the one it wraps may share their start and end),
+    // go on the first track where they nest inside what is open.
     std::vector<const TaskRecord*> tasks;
     for (const TaskRecord& r : records[pid]) tasks.push_back(&r);
-    std::stable_sort(tasks.begin(), tasks.end(),
-                     [](const TaskRecord* a, const TaskRecord* b) { return a->start != b->start ? a->start < b->start : a->end > b->end; });
+    std::stable_sort(tasks.begin(), tasks.end(), [](const TaskRecord* a, const TaskRecord* b) {
+      return a->start != b->start ? a->start < b->start : a->end != b->end ? a->end > b->end : a->depth < b->depth;
+    });
     std::vector<std::vector<double>> openEnds;  // per track, the ends of the tasks open on it, innermost last
     for (const TaskRecord* t : tasks) {
       std::size_t track = 0;
@@ -111,13 +113,13 @@ Status writeTimeline(const std::string& path, const std::vector<std::string>& ro
                         {"tid", track},
                         {"ts", std::llround(t->start * 1e6)},
                         {"dur", std::llround((t->end - t->start) * 1e6)},
-                        {"args", {{"where", t->where}, {"ended", toString(t->how)}, {"detail", t->detail}}}});
+                        {"args", {{"where", t->where}, {"ended", toString(t->how)}, {"detail", t->detail}, {"depth", t->depth}}}});
     }
   }
   const nlohmann::json doc = {{"displayTimeUnit", "ms"}, {"traceEvents", events}};
   {
     std::ofstream out(render::partialPath(path));
-    out << doc.dump(1) << '\n';
+    out << doc.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';  // a task name that is not UTF-8 gets U+FFFD
     if (!out) {
       render::discardPartial(path);
       return Status::failure("timeline: writing '" + path + "' failed");

@@ -40,6 +40,22 @@ TEST(Timeline, OverlappingTasksGetTracksOfTheirOwn) {
   EXPECT_EQ(span["turn"], (std::pair<long, long>{4'000'000, 6'000'000}));  // microseconds of simulated time
 }
 
+// withPicture(curve) and the curve it wraps start and end together: the wrapper comes first, so that
+// Perfetto (which nests equal spans in their order) draws it outside; a name that is not UTF-8 is
+// written with U+FFFD, not refused.
+TEST(Timeline, AWrapperWithTheSameSpanNestsOutsideWhatItWraps) {
+  const fs::path path = fs::path(::testing::TempDir()) / "wrapped.json";
+  TaskRecord inner = task(2, 1, "curve\xff", 1, 3), outer = task(1, 0, "withPicture(curve)", 1, 3), top = task(0, -1, "tour", 0, 5);
+  inner.depth = 2, outer.depth = 1;
+  ASSERT_TRUE(writeTimeline(path.string(), {"r"}, {{inner, outer, top}}).ok());
+  const nlohmann::json doc = nlohmann::json::parse(std::ifstream(path));
+  std::vector<std::string> order;
+  for (const nlohmann::json& e : doc["traceEvents"]) {
+    if (e["ph"] == "X") order.push_back(e["name"]);
+  }
+  EXPECT_EQ(order, (std::vector<std::string>{"tour", "withPicture(curve)", "curve\xEF\xBF\xBD"}));
+}
+
 TEST(Trace, TaskNamesWithCommasAreQuoted) {
   const fs::path path = fs::path(::testing::TempDir()) / "quoted.csv";
   fs::remove(path);
