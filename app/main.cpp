@@ -38,6 +38,7 @@ constexpr const char* kExamples = R"(Examples:
   frob run                                  the demo: BUG in the obstacle field, written to bug.mp4
   frob run my_controller.cpp --video my.mp4 compile and run your controller, watch the video
   frob run bug --seconds 30 --trace bug.csv run a course example by name, write a per-step trace
+  frob run my_controller.cpp --html run.html open run.html in a browser: any instant of the run, its tasks and values
   frob run a.cpp b.cpp --world arena        one controller per robot
   frob render maze --out maze.png           a picture of a world
   frob list                                 the worlds and examples there are
@@ -330,6 +331,9 @@ int main(int argc, char** argv) {
       ->delimiter(',');
   runCmd->add_option("--trace", run.outputs.trace, "Write a CSV row per robot per step");
   runCmd->add_option("--timeline", run.outputs.timeline, "Write the task timeline as JSON for ui.perfetto.dev or chrome://tracing");
+  runCmd->add_option(
+      "--html", run.outputs.html,
+      "Write the run viewer: one page to open in a browser, with a time slider, the task stack, every value and the plots at any instant");
   runCmd->add_option("--fps", run.fps, "Frames per second of video and frames")->capture_default_str()->check(CLI::Range(1, 240));
   runCmd->add_option("--speed", run.speed, "The video plays this many times faster than simulated time (default 1; the demo 4)")
       ->check(CLI::Range(0.1, 100.0));

@@ -7,6 +7,7 @@ find_package(tomlplusplus 3 REQUIRED CONFIG)
 find_package(CLI11 2 REQUIRED CONFIG)
 find_package(nlohmann_json 3 REQUIRED CONFIG)
 find_package(PNG REQUIRED)
+find_package(ZLIB REQUIRED)                                  # the run viewer page's data
 find_package(Freetype REQUIRED)
 find_package(Threads REQUIRED)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)

@@ -10,6 +10,7 @@ packages=(
   libseccomp-dev                                   # the controller host's system-call filter
   libzip-dev                                       # the Gradescope autograder zip
   libssl-dev                                       # HMAC signatures of graded runs' wheel logs
+  zlib1g-dev                                       # the run viewer page's packed data
   libosmesa6-dev libpng-dev libfreetype-dev fonts-dejavu-core   # offscreen rendering and text
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev   # video encoding
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev           # world files, command line, JSON

@@ -28,7 +28,7 @@ apt-get update -qq
 DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
   cmake ninja-build pkg-config clang-15 libeigen3-dev libbox2d-dev libassimp-dev libosmesa6-dev libpng-dev \
   libfreetype-dev fonts-dejavu-core libavcodec-dev libavformat-dev libavutil-dev libswscale-dev \
-  libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libseccomp-dev libzip-dev libssl-dev
+  libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libseccomp-dev libzip-dev libssl-dev zlib1g-dev
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER=clang-15 -DCMAKE_CXX_COMPILER=clang++-15 \
   -DFROB_BUILD_TESTS=OFF
 cmake --build build

@@ -4,6 +4,8 @@
 #include "frob/render/run_view.hpp"
 #include "frob/render/video.hpp"
 #include "frob/run/diagnose.hpp"
+#include "frob/run/format.hpp"
+#include "run_page.hpp"
 #include "session_outputs.hpp"
 
 #include <algorithm>
@@ -83,11 +85,20 @@ render::VideoDef videoDef(const RunDef& def) {
   return v;
 }
 
+// The run viewer page's heading: "wander.cpp in lounge".
+std::string pageTitle(const RunDef& def) {
+  std::string title;
+  for (const LoadedController& c : def.controllers) {
+    title += (title.empty() ? "" : ", ") + std::filesystem::path(c.source).filename().string();
+  }
+  return title + " in " + def.worldName;
+}
+
 // What a run keeps of one robot as it goes.
 struct RobotWatch {
   RobotSummary summary;
   std::deque<TaskRecord> lastEnded;  // the newest kLastTasks ended tasks
-  std::vector<TaskRecord> all;       // every task, when a timeline is written
+  std::vector<TaskRecord> all;       // every task, when a timeline or page is written
   std::optional<Point2> previous;    // last true position
 };
 
@@ -136,7 +147,7 @@ Status validate(const RunDef& def) {
                              std::to_string(ring - 1) + ")");
     }
   }
-  for (const auto& [path, what] : {std::pair{out.plot, "plot"}, {out.trace, "trace"}, {out.timeline, "timeline"}}) {
+  for (const auto& [path, what] : {std::pair{out.plot, "plot"}, {out.trace, "trace"}, {out.timeline, "timeline"}, {out.html, "html"}}) {
     if (path.empty()) continue;
     if (Status s = render::checkWritable(path, what); !s) return s;
   }
@@ -167,9 +178,10 @@ Result<Summary> runSession(const RunDef& def) {
   if (Status s = validate(def); !s) return s;
   const RunOutputs& out = def.outputs;
   const bool drawFrames = !out.video.empty() || !out.frames.empty();
+  const bool allTasks = !out.timeline.empty() || !out.html.empty();
   std::optional<RobotHosts> hosts;
-  // Every step is read as it comes (summary, trace, frames, plots), so only the newest is kept.
-  worlds::Run run(def.world, def.options, driverFor(def, hosts, drawFrames || !out.plot.empty()), {.window = 1});
+  // Every step is read as it comes (summary, trace, frames, plots, page), so only the newest is kept.
+  worlds::Run run(def.world, def.options, driverFor(def, hosts, drawFrames || !out.plot.empty() || !out.html.empty()), {.window = 1});
   const worlds::Simulation& sim = run.simulation();
   const std::size_t n = sim.robotCount();
   const bool checked = def.host && def.host->checked;
@@ -202,6 +214,12 @@ Result<Summary> runSession(const RunDef& def) {
     Result<TraceFile> t = TraceFile::open(out.trace, sonars);
     if (!t) return t.status();
     trace.emplace(std::move(t.value()));
+  }
+  std::optional<RunPage> page;
+  if (!out.html.empty()) {
+    Result<RunPage> p = RunPage::open(out.html, sim, def.view.sonarHalfAngle);
+    if (!p) return p.status();
+    page.emplace(std::move(p.value()));
   }
   // Nothing half-written stays behind when the run stops early.
   auto discard = [&] {
@@ -248,7 +266,7 @@ Result<Summary> runSession(const RunDef& def) {
         if (recorder) recorder->taskEnded(i, ended, sim.time());
         // The top task returning with nothing left running: this controller is done.
         if (ended.parent < 0 && ended.how == TaskEnd::Returned && timeline.running().empty()) w.summary.finishedAt = ended.end;
-        if (!out.timeline.empty()) w.all.push_back(ended);
+        if (allTasks) w.all.push_back(ended);
         w.lastEnded.push_back(std::move(ended));
         if (w.lastEnded.size() > kLastTasks) w.lastEnded.pop_front();
       }
@@ -256,6 +274,7 @@ Result<Summary> runSession(const RunDef& def) {
       allFinished = allFinished && w.summary.finishedAt.has_value();
     }
     if (view) view->update(run);
+    if (page) page->step(rec);
     for (int k = drawFrames ? picker.framesAt(step) : 0; k > 0; --k) {
       renderer->renderInto(view->scene(), view->plots(), image);
       if (video) {
@@ -304,8 +323,8 @@ Result<Summary> runSession(const RunDef& def) {
                                 "division by zero, naming your file and line");
     }
     for (TaskRecord r : running) {
-      r.end = sim.time();
-      if (!out.timeline.empty()) w.all.push_back(r);
+      r.end = sim.time();  // its bar ends with the run; the page shows it as still running
+      if (allTasks) w.all.push_back(r);
       w.summary.lastTasks.push_back(std::move(r));
     }
     summary.robots.push_back(std::move(w.summary));
@@ -329,12 +348,23 @@ Result<Summary> runSession(const RunDef& def) {
     if (Status s = trace->commit(); !s) return s;
     summary.written.push_back(out.trace);
   }
+  std::vector<std::vector<TaskRecord>> tasks;
+  for (RobotWatch& w : watch) tasks.push_back(std::move(w.all));
   if (!out.timeline.empty()) {
     std::vector<std::string> names;
-    std::vector<std::vector<TaskRecord>> records;
-    for (std::size_t i = 0; i < n; ++i) names.push_back(summary.robots[i].name), records.push_back(std::move(watch[i].all));
-    if (Status s = writeTimeline(out.timeline, names, records); !s) return s;
+    for (const RobotSummary& r : summary.robots) names.push_back(r.name);
+    if (Status s = writeTimeline(out.timeline, names, tasks); !s) return s;
     summary.written.push_back(out.timeline);
+  }
+  if (page) {
+    RunPageEnd end{.title = pageTitle(def),
+                   .subtitle = format("seed %llu, %.2f s in %lld steps, trajectory %016llx.", (unsigned long long)summary.seed,
+                                      summary.simulatedSeconds, (long long)summary.steps, (unsigned long long)summary.trajectoryHash),
+                   .tasks = std::move(tasks)};
+    for (const RobotSummary& r : summary.robots) end.controllers.push_back(r.controller), end.finishedAt.push_back(r.finishedAt);
+    Result<std::uint64_t> bytes = page->write(end);
+    if (!bytes) return bytes.status();
+    summary.written.push_back(format("%s (%.0f kB)", out.html.c_str(), static_cast<double>(bytes.value()) / 1000.0));
   }
   if (!out.plot.empty()) {
     render::PlotSet plots = view->plots();

@@ -30,11 +30,12 @@ struct RunOutputs {
   std::string plot;              ///< PNG of the plotted signals over the whole run
   std::string trace;             ///< CSV, one row per robot per step: poses, wheels, sonars, bumper, current task
   std::string timeline;          ///< task timeline as Chrome/Perfetto trace-event JSON
+  std::string html;              ///< the run viewer: one self-contained page that replays the run in a browser, with a time slider
   /// More charts in the plots and the video: "s4" for sonar 4, or the name of a value the tasks
   /// publish (withPlot). Empty: every published value.
   std::vector<std::string> plotSignals;
   /// True when no file is asked for.
-  [[nodiscard]] bool empty() const { return video.empty() && frames.empty() && plot.empty() && trace.empty() && timeline.empty(); }
+  [[nodiscard]] bool empty() const { return video.empty() && frames.empty() && plot.empty() && trace.empty() && timeline.empty() && html.empty(); }
 };
 
 /// A run to make. Fill with designated initializers.
