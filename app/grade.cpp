@@ -83,10 +83,10 @@ Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const cours
     std::error_code ec;
     fs::create_directories(dir, ec);
     const std::string stem = (dir / fs::path(run->log.empty() ? "first_failure" : run->log.stem().string())).string();
-    course::RunOutputs out{.video = stem + ".mp4", .videoBytes = kReportVideoBytes, .plot = stem + ".png"};
+    course::RunOutputs out{.video = stem + ".mp4", .videoBytes = kReportVideoBytes, .plot = stem + ".png", .html = stem + ".html"};
     media.caption = "The first failing run: " + check + ", in " + run->world + " with seed " + std::to_string(run->seed) + ": " + run->reason;
     if (Result<std::uint64_t> film = course::filmRun(def, g.submission, check, *run, out)) {
-      media.video = out.video, media.plot = out.plot;
+      media.video = out.video, media.plot = out.plot, media.viewer = out.html;
       media.caption += course::format(" The film is the graded run: its trajectory hash, %016" PRIx64 ", is the graded run's, %016" PRIx64 ".",
                                       film.value(), run->trajectoryHash);
     } else {

@@ -63,6 +63,20 @@ TEST(GradeCli, ASubmissionThatFailsStillExitsZeroWithItsScore) {
 // A machine that cannot make namespaces (here a user namespace that allows none inside it, as a
 // chroot or a container's seccomp profile may) still grades, and the instructor is told on stderr;
 // nothing a student reads (results, scores) says which layer is missing.
+// The report's film is the first failing visible run, filmed again and proven the graded one by its
+// hash: its video, its plot, and the run viewer of that run in a frame; the films' files go away.
+TEST(GradeCli, TheReportShowsTheFailingRunInTheViewer) {
+  const fs::path dir = assignment("grade_cli_report");
+  std::ofstream(dir / "slow.cpp") << driver("0.1");
+  const FrobResult r = runFrob(dir, {"grade", "forward", "slow.cpp", "--report", "r.html"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string page = readFile(dir / "r.html");
+  EXPECT_NE(page.find("<video controls src=\"data:video/mp4;base64,"), std::string::npos);
+  EXPECT_NE(page.find("<iframe class=\"viewer\" sandbox=\"allow-scripts\""), std::string::npos);
+  EXPECT_NE(page.find("id=&quot;run-data&quot;"), std::string::npos) << "the frame holds no viewer page with its run";
+  EXPECT_NE(page.find("The film is the graded run"), std::string::npos);
+}
+
 TEST(GradeCli, ASandboxLayerThisMachineLacksIsSaidToTheInstructorOnly) {
   const fs::path dir = assignment("grade_cli_layers");
   std::ofstream(dir / "fast.cpp") << driver("0.5");

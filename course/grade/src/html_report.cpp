@@ -28,12 +28,28 @@ Status writeHtmlReport(const Grade& g, const HtmlMedia& media, const std::filesy
     plot = base64(bytes.value());
   }
 
+  // The run viewer's page keeps its own policy; the frame inherits this page's, which must let
+  // exactly the viewer's script run too (named by the hash in the viewer's policy).
+  std::string viewer, viewerScript;
+  if (!media.viewer.empty()) {
+    Result<std::string> page = readWhole(media.viewer, "html report");
+    if (!page) return page.status();
+    const std::size_t at = page.value().find("script-src 'sha256-"), end = page.value().find('\'', at + 19);
+    if (page.value().compare(0, 15, "<!DOCTYPE html>") != 0 || at == std::string::npos || end == std::string::npos) {
+      return Status::failure("html report: '" + media.viewer.string() + "' is not a run viewer page (frob run --html)");
+    }
+    viewerScript = page.value().substr(at + 11, end + 1 - (at + 11));
+    viewer = markupEscape(page.value(), true);
+  }
+
   const std::string title = markupEscape(g.assignment + ": " + g.submission);
   std::string html =
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-      // Nothing from elsewhere and no scripts, even if something slipped past the escaping.
+      // Nothing from elsewhere and no script but the viewer's, even if something slipped past the escaping.
       "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; img-src data:; media-src data:; "
-      "style-src 'unsafe-inline'\">\n"
+      "style-src 'unsafe-inline'" +
+      (viewerScript.empty() ? std::string() : "; script-src " + viewerScript) +
+      "\">\n"
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       "<title>" +
       title +
@@ -47,6 +63,7 @@ Status writeHtmlReport(const Grade& g, const HtmlMedia& media, const std::filesy
       ".visibility { color: #666; font-size: 0.85em; }\n"
       "pre { background: #f4f4f4; padding: 0.8em; overflow-x: auto; }\n"
       "figure { margin: 1.5em 0; } video, img { display: block; max-width: 100%; margin-bottom: 0.5em; }\n"
+      "iframe.viewer { display: block; width: 100%; height: 90vh; border: 1px solid #bbb; margin-bottom: 0.5em; }\n"
       "</style>\n</head>\n<body>\n";
   html += "<h1>" + title + "</h1>\n";
   html += "<p class=\"total\">Total: <strong>" + number(g.score()) + " / " + number(g.maxScore()) + "</strong> points</p>\n";
@@ -72,8 +89,11 @@ Status writeHtmlReport(const Grade& g, const HtmlMedia& media, const std::filesy
     for (const std::string& note : g.notes) html += "<li>" + markupEscape(note) + "</li>\n";
     html += "</ul>\n";
   }
-  if (!video.empty() || !plot.empty()) {
+  if (!video.empty() || !plot.empty() || !viewer.empty()) {
     html += "<figure>\n";
+    // Scripts only, in an opaque origin: the viewer can reach neither this page nor anything else.
+    if (!viewer.empty())
+      html += "<iframe class=\"viewer\" sandbox=\"allow-scripts\" title=\"the run, to step through\" srcdoc=\"" + viewer + "\"></iframe>\n";
     if (!video.empty()) html += "<video controls src=\"data:video/mp4;base64," + video + "\"></video>\n";
     if (!plot.empty()) html += "<img src=\"data:image/png;base64," + plot + "\" alt=\"plot of the run\">\n";
     if (!media.caption.empty()) html += "<figcaption>" + markupEscape(media.caption) + "</figcaption>\n";

@@ -1,24 +1,22 @@
 // The HTML report: as written (self-contained, escaped, its media inline), and as Debian's headless
 // Chromium renders it (a screenshot, its DOM, and the video's state once the page has loaded).
+#include "../../support/chromium.hpp"
+#include "frob/frob.hpp"
 #include "frob/grade/grade_report.hpp"
 #include "frob/render/image.hpp"
 #include "frob/render/video.hpp"
+#include "frob/run/session.hpp"
+#include "frob/worlds/world_file.hpp"
 #include "grade_samples.hpp"
 
 #include <nlohmann/json.hpp>
 
-#include <fcntl.h>
 #include <gtest/gtest.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
-
-extern char** environ;
 
 namespace frob::course {
 namespace {
@@ -26,6 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 using namespace frob::course::testing;
 using nlohmann::json;
+using support::chromium, support::Ran, support::requireChromium;
 
 // ---- The HTML report, as written ----------------------------------------------------------------
 
@@ -62,6 +61,22 @@ Report writeReport(const std::string& name) {
   const Status s = writeHtmlReport(r.grade, {.video = r.video, .plot = r.plot, .caption = "the first failing run: maze, seed 3 <&>"}, r.html);
   EXPECT_TRUE(s.ok()) << s.error();
   return r;
+}
+
+// A run viewer page of a short run whose task is named with markup, as the report's film has.
+fs::path writeViewer(const fs::path& dir) {
+  const fs::path page = dir / "film.html";
+  const worlds::WorldDef world = *worlds::parseWorld("size = [4.0, 3.0]\n[[robot]]\nname = \"r\"\nstart = [1.0, 1.5]\n", "w.toml");
+  const Controller drive = makeController([] {
+    return mkTask([](const TaskState&) { return std::pair{wheels(0.3, 0.2), after(2.0)}; }).named("drive \"</iframe><script>alert(1)</script>");
+  });
+  const Result<Summary> s = runSession({.world = world,
+                                        .worldName = "w",
+                                        .controllers = {{.entry = {.name = "inline", .make = drive}, .source = "film.cpp"}},
+                                        .seconds = 3,
+                                        .outputs = {.html = page.string()}});
+  EXPECT_TRUE(s.ok()) << s.error();
+  return page;
 }
 
 TEST(HtmlReport, SelfContainedAndEscaped) {
@@ -120,61 +135,15 @@ TEST(HtmlReport, BadMediaAreNamedAndNothingIsWritten) {
             "html report: '" + (dir / "text.mp4").string() + "' is not an MP4 video (it has no ftyp box)");
   EXPECT_EQ(writeHtmlReport(sample(), {.plot = dir / "text.png"}, out).error(),
             "html report: '" + (dir / "text.png").string() + "' is not a PNG image");
+  writeFile(dir / "other.html", "<!DOCTYPE html><p>a page, but not a run viewer</p>");
+  EXPECT_EQ(writeHtmlReport(sample(), {.viewer = dir / "other.html"}, out).error(),
+            "html report: '" + (dir / "other.html").string() + "' is not a run viewer page (frob run --html)");
   EXPECT_FALSE(fs::exists(out));
   EXPECT_EQ(writeHtmlReport(sample(), {}, "/nonexistent/r.html").error(),
             "html report: cannot write '/nonexistent/r.html': directory '/nonexistent' does not exist");
 }
 
 // ---- The HTML report in Chromium ----------------------------------------------------------------
-
-constexpr const char* kChromium = "/usr/bin/chromium";
-
-struct Ran {
-  int status = -1;
-  std::string err;
-};
-
-// Runs headless Chromium on `page` with `flags`, stdout to `out`, at most 60 s (then it and its
-// children are killed by timeout(1), which gives them a process group of their own).
-Ran chromium(const fs::path& dir, const std::vector<std::string>& flags, const fs::path& page, const fs::path& out) {
-  std::vector<std::string> all{"/usr/bin/timeout",
-                               "-k",
-                               "10",
-                               "60",
-                               kChromium,
-                               "--headless",
-                               "--no-sandbox",
-                               "--disable-gpu",
-                               "--no-first-run",
-                               "--user-data-dir=" + (dir / "profile").string()};
-  all.insert(all.end(), flags.begin(), flags.end());
-  all.push_back("file://" + fs::absolute(page).string());
-  std::vector<char*> argv;
-  for (std::string& a : all) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  const std::string err = (dir / "chromium_stderr.txt").string();
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  pid_t pid = 0;
-  Ran r;
-  if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) == 0) {
-    int status = 0;
-    waitpid(pid, &status, 0);
-    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  }
-  posix_spawn_file_actions_destroy(&actions);
-  r.err = readFile(err);
-  return r;
-}
-
-// Fails (never skips) when Chromium is missing: the report's rendering would go untested.
-void requireChromium() {
-  ASSERT_TRUE(fs::exists(kChromium)) << kChromium << " is missing: the HTML report is tested in headless Chromium; "
-                                     << "install it with `apt-get install chromium` (cmake/install-deps.sh lists it)";
-}
 
 // Pixels of `img` within 40 of `rgb` in every channel.
 int pixelsNear(const render::Image& img, const std::uint8_t (&rgb)[3]) {
@@ -237,6 +206,41 @@ TEST(HtmlReportInChromium, DomHasTheRowsTheTextAndTheDataUris) {
   EXPECT_TRUE(unbase64(std::string_view(plot).substr(plotPrefix.size())) == readFile(r.plot)) << "the plot's data URI is not the PNG";
   EXPECT_EQ(select(dom.get(), "//video/@controls").size(), 1u);
   EXPECT_EQ(one(dom.get(), "//figcaption"), "the first failing run: maze, seed 3 <&>");
+}
+
+// The run viewer is the page's one script: in a frame with scripts but no origin of its own, its
+// page whole in the frame's srcdoc (the task named with markup stays inside it), allowed by its hash.
+TEST(HtmlReportInChromium, TheRunViewerRunsInItsFrame) {
+  requireChromium();
+  const fs::path dir = scratch("chromium_viewer");
+  const fs::path viewer = writeViewer(dir), html = dir / "report.html";
+  ASSERT_TRUE(writeHtmlReport(sample(), {.viewer = viewer, .caption = "the first failing run"}, html).ok());
+  const Ran dump = chromium(dir, {"--dump-dom"}, html, dir / "dom.html");
+  ASSERT_EQ(dump.status, 0) << dump.err;
+  const Doc dom = parseHtml(readFile(dir / "dom.html"));
+  ASSERT_TRUE(dom);
+  EXPECT_EQ(select(dom.get(), "//iframe/@sandbox"), std::vector<std::string>{"allow-scripts"});
+  EXPECT_TRUE(one(dom.get(), "//iframe/@srcdoc") == readFile(viewer)) << "the frame does not hold the viewer's page as written";
+  EXPECT_TRUE(select(dom.get(), "//script").empty());
+  // The frame shares the page's renderer (no site isolation), so the virtual time budget covers its
+  // script too: the viewer has drawn its floor (#f7f5ed) over much of the frame.
+  const fs::path shot = dir / "shot.png";
+  const Ran ran = chromium(dir,
+                           {"--screenshot=" + shot.string(), "--window-size=1000,1400", "--hide-scrollbars", "--virtual-time-budget=20000",
+                            "--disable-site-isolation-trials", "--disable-features=IsolateOrigins,site-per-process"},
+                           html, dir / "stdout.txt");
+  ASSERT_EQ(ran.status, 0) << ran.err;
+  const Result<render::Image> img = render::readPng(shot.string());
+  ASSERT_TRUE(img.ok()) << img.error();
+  constexpr std::uint8_t kFloor[3] = {247, 245, 237};
+  int floor = 0;
+  for (int y = 0; y < img.value().height; ++y) {
+    for (int x = 0; x < img.value().width; ++x) {
+      const std::uint8_t* p = img.value().pixel(x, y);
+      if (p[0] == kFloor[0] && p[1] == kFloor[1] && p[2] == kFloor[2]) ++floor;
+    }
+  }
+  EXPECT_GT(floor, 50'000) << "the viewer drew no floor: its script did not run";
 }
 
 // The page has no scripts (its Content-Security-Policy forbids them). A test copy adds one that, at

@@ -44,13 +44,15 @@ namespace frob::course {
 
 /// Media embedded in the HTML report; an empty path means none.
 struct HtmlMedia {
-  std::filesystem::path video;  ///< an MP4 (H.264) of a run, embedded as a data: URI
-  std::filesystem::path plot;   ///< a PNG plot, embedded as a data: URI
-  std::string caption;          ///< what they show ("the first failing run: maze, seed 3")
+  std::filesystem::path video;   ///< an MP4 (H.264) of a run, embedded as a data: URI
+  std::filesystem::path plot;    ///< a PNG plot, embedded as a data: URI
+  std::filesystem::path viewer;  ///< a run viewer page of the same run (RunOutputs::html), embedded in a sandboxed frame
+  std::string caption;           ///< what they show ("the first failing run: maze, seed 3")
 };
 
-/// Writes one self-contained HTML page (no scripts, no outside resources): the total, the checks
-/// as a table with the failed runs' reasons, the compile error and notes, and the media of `media`.
+/// Writes one self-contained HTML page (no outside resources, and no script but the run viewer's
+/// own, allowed by its hash, in a frame of its own): the total, the checks as a table with the
+/// failed runs' reasons, the compile error and notes, and the media of `media`.
 [[nodiscard]] Status writeHtmlReport(const Grade& grade, const HtmlMedia& media, const std::filesystem::path& path);
 
 }  // namespace frob::course
