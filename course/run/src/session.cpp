@@ -91,7 +91,7 @@ std::string pageTitle(const RunDef& def) {
   for (const LoadedController& c : def.controllers) {
     title += (title.empty() ? "" : ", ") + std::filesystem::path(c.source).filename().string();
   }
-  return title + " in " + def.worldName;
+  return title + " in " + std::filesystem::path(def.worldName).filename().string();
 }
 
 // What a run keeps of one robot as it goes.

@@ -182,6 +182,8 @@ TEST(RunPage, TheSlidersInstantShowsTheRecordedPoseWheelsAndTaskStack) {
     const std::vector<std::string> stack = select(page.dom.get(), "//ol[@id='stack']/li");
     EXPECT_EQ(stack, timelineStackAt(w.timeline, row.time));
     EXPECT_EQ(stack.empty() ? std::string() : stack.back(), row.task == kMarkup ? kMarkupShown : row.task);  // the trace keeps the bytes
+    // After the top task returned, the settle time: the page says so.
+    EXPECT_EQ(one(page.dom.get(), "//p[@id='status']"), t > 9.0 ? "Its task returned at 9.00 s: the robot is commanded still." : "");
   }
 }
 
