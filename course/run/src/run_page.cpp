@@ -26,10 +26,12 @@ namespace {
 #include "run_viewer_page.inc"
 
 // Pictures kept at every change until they take this much (a rough count of their JSON), then at
-// most one per kSparsePictureSamples, and none past four times as much.
-constexpr std::uint64_t kPictureBudget = 12'000'000;
+// most one per kSparsePictureSamples, and none past twice as much.
+constexpr std::uint64_t kPictureBudget = 6'000'000;
 constexpr std::int64_t kSparsePictureSamples = 10;
-constexpr std::size_t kMaxPublished = 24;  // published values kept per robot
+constexpr std::size_t kMaxPublished = 24;         // published values kept per robot
+constexpr std::uint64_t kTaskBudget = 6'000'000;  // bytes of task names, places and results kept per robot
+constexpr std::size_t kDetailBytes = 256;         // of a task's result or error, what the page keeps
 
 std::int64_t thousandths(double v) { return std::isfinite(v) ? std::llround(std::clamp(v, -1e9, 1e9) * 1000.0) : 0; }
 double millis(double v) { return static_cast<double>(thousandths(v)) / 1000.0; }
@@ -154,7 +156,10 @@ void RunPage::keepPicture(Track& t, const Picture& picture) {
   // The drawn shapes, when they changed (and, past the budget, not too often).
   Picture drawn = drawnPart(picture);
   if (drawn == t.shown && !t.pictures.empty()) return;
-  if (pictureBytes_ > 4 * kPictureBudget) return;
+  if (pictureBytes_ > 2 * kPictureBudget) {
+    picturesStopped_ = true;
+    return;
+  }
   if (pictureBytes_ > kPictureBudget && !t.pictures.empty() && samples_ - t.pictures.back().first < kSparsePictureSamples) return;
   t.pictures.emplace_back(samples_, shapesOf(drawn, pictureBytes_));
   t.shown = std::move(drawn);
@@ -186,9 +191,9 @@ Result<std::uint64_t> RunPage::write(const RunPageEnd& end) const {
   nlohmann::json doc = world_;
   std::string subtitle = end.subtitle;
   if (pictureBytes_ > kPictureBudget)
-    subtitle += " Pictures were kept at most every " + std::to_string(kSparsePictureSamples) + " steps once they grew large.";
+    subtitle += " Pictures were kept at most every " + std::to_string(kSparsePictureSamples) + " steps once they grew large" +
+                (picturesStopped_ ? ", and then no more." : ".");
   doc["title"] = end.title;
-  doc["subtitle"] = subtitle;
   doc["dt"] = dt_;
   doc["t0"] = t0_.value_or(0.0);
   doc["samples"] = samples_;
@@ -210,8 +215,15 @@ Result<std::uint64_t> RunPage::write(const RunPageEnd& end) const {
     r["controller"] = i < end.controllers.size() ? end.controllers[i] : "";
     r["finishedAt"] = i < end.finishedAt.size() && end.finishedAt[i] ? nlohmann::json(*end.finishedAt[i]) : nlohmann::json();
     nlohmann::json tasks = nlohmann::json::array();
+    std::uint64_t taskBytes = 0;
     if (i < end.tasks.size()) {
       for (const TaskRecord& task : end.tasks[i]) {
+        taskBytes += 64 + task.name.size() + task.where.size() + std::min(task.detail.size(), kDetailBytes);
+        if (taskBytes > kTaskBudget) {
+          subtitle += " Only the first " + std::to_string(tasks.size()) + " of " + std::to_string(end.tasks[i].size()) + " tasks of " +
+                      doc["robots"][i]["name"].get<std::string>() + " are shown.";
+          break;
+        }
         const bool running = task.how == TaskEnd::Running;
         tasks.push_back({{"name", task.name},
                          {"where", task.where},
@@ -219,11 +231,12 @@ Result<std::uint64_t> RunPage::write(const RunPageEnd& end) const {
                          {"start", task.start},
                          {"end", running ? nlohmann::json() : nlohmann::json(task.end)},
                          {"how", toString(task.how)},
-                         {"detail", task.detail}});
+                         {"detail", task.detail.substr(0, kDetailBytes)}});
       }
     }
     r["tasks"] = std::move(tasks);
   }
+  doc["subtitle"] = subtitle;
   // The controller's strings may hold any bytes: what is not UTF-8 becomes U+FFFD.
   const std::string json = doc.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   uLongf packedSize = compressBound(json.size());

@@ -71,7 +71,7 @@ class RunPage {
   std::optional<double> t0_;  // time of the first instant taken in
   std::int64_t samples_ = 0;
   std::uint64_t pictureBytes_ = 0;  // a rough size of the pictures kept so far, to cap them
-  std::vector<std::string> notes_;  // what was cut, said in the page
+  bool picturesStopped_ = false;    // a picture changed past the cap and was not kept
 };
 
 }  // namespace frob::course

@@ -214,6 +214,39 @@ TEST(RunPage, ARunOf120SecondsAt100HzFitsIn2MBAndTheSameRunWritesTheSamePage) {
   EXPECT_TRUE(support::readText(a.html.string()) == support::readText(b.html.string()));
 }
 
+// A controller that sends more than a page can show: a task of a 3 kB name every step, and a picture
+// of 400 shapes that changes every step. The page keeps what it can, says what it left out, and
+// stays a few megabytes.
+Task<Wheels> flood(const Robot& r) {
+  for (int i = 0;; ++i) {
+    std::vector<Shape> shapes;
+    for (int k = 0; k < 400; ++k) {
+      shapes.push_back({.kind = Shape::Kind::Polyline, .points = {Point2(i % 97 * 0.01, k * 0.01), Point2(k * 0.013, i % 89 * 0.01), Point2(1, 1)}});
+    }
+    co_await withPicture(constant(Picture(std::move(shapes))), leg(0.1, 0.2, 0.01, std::to_string(i) + std::string(3000, 'n')));
+  }
+}
+
+TEST(RunPage, WhatAControllerFloodsItWithIsCutAndSaidSo) {
+  requireChromium();
+  Written w{.dir = fs::path(::testing::TempDir()) / "run_page_test" / "flood", .html = {}, .trace = {}, .timeline = {}, .summary = {}};
+  fs::remove_all(w.dir);
+  fs::create_directories(w.dir);
+  w.html = w.dir / "run.html";
+  Result<Summary> s = runSession({.world = room(),
+                                  .worldName = "room",
+                                  .controllers = {inlineController(makeController(flood))},
+                                  .seconds = 30,
+                                  .outputs = {.html = w.html.string()}});
+  ASSERT_TRUE(s.ok()) << s.error();
+  EXPECT_LE(fs::file_size(w.html), 6'000'000u);
+  const Page page = openAt(w, 29.0);
+  EXPECT_EQ(page.console, "");
+  const std::string subtitle = one(page.dom.get(), "//p[@id='subtitle']");
+  EXPECT_NE(subtitle.find("Pictures were kept at most every 10 steps once they grew large, and then no more."), std::string::npos) << subtitle;
+  EXPECT_NE(subtitle.find(" tasks of r are shown."), std::string::npos) << subtitle;
+}
+
 TEST(RunPage, APageThatCannotBeWrittenIsAnErrorBeforeTheRun) {
   Result<Summary> s = runSession({.world = room(),
                                   .worldName = "room",
