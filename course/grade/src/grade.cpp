@@ -210,6 +210,15 @@ namespace {
 // the sandbox's missing layers added to `g`.
 void runCheck(const GradeDef& def, const CompiledController& compiled, const Check& check, const WorldRef& ref, const worlds::WorldDef& world,
               RunGrade& r, Grade& g) {
+  struct Slot {  // one of the class's run slots, held for the run
+    std::counting_semaphore<>* slots;
+    explicit Slot(std::counting_semaphore<>* s) : slots(s) {
+      if (slots != nullptr) slots->acquire();
+    }
+    ~Slot() {
+      if (slots != nullptr) slots->release();
+    }
+  } slot(def.runSlots.get());
   Result<RobotHosts> hosts = RobotHosts::start({compiled.module}, {compiled.source}, {0}, world.robots.size(), def.host);
   if (!hosts) {
     r.reason = hosts.error();

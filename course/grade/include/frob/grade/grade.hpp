@@ -14,7 +14,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
+#include <semaphore>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,10 @@ struct GradeDef {
   std::filesystem::path logs;  ///< a folder for each run's wheel log (for --replay); empty: none
   CompilerSetup compiler = compilerSetup();
   std::optional<KeptWorlds> kept;  ///< the secret's hidden worlds to grade in; unset: those of fairHiddenWorlds()
+  /// Runs allowed at once, shared by the grades of a class (gradeAll sets it): a run's processes
+  /// spin while they wait for each other, so runs that share a core slow each other down more than
+  /// they gain; compiles are not limited. Unset: any number.
+  std::shared_ptr<std::counting_semaphore<>> runSlots;
 };
 
 /// The hidden worlds no student can find unfair: for each check that draws worlds from the secret,

@@ -37,7 +37,7 @@ struct HostDef {
   std::uint64_t fileBytes = 16ULL << 20;         ///< largest file it may write in its scratch folder
   std::uint64_t scratchBytes = 64ULL << 20;      ///< all the files it writes there
   std::uint64_t tasks = 64;                      ///< its processes and threads at once
-  std::uint64_t spinNanoseconds = 50'000;        ///< the grader spins this long for a reply before it sleeps; 0 when runs share the cores
+  std::uint64_t spinNanoseconds = 50'000;        ///< the grader spins this long for a reply before it sleeps
   std::function<void(std::string_view)> output;  ///< where its output goes; empty: this process's stderr
   bool checked = false;                          ///< its modules were compiled with compilerSetup(true): load the sanitizers' runtime,
                                                  ///< watch memory instead of limiting address space, and explain their reports
