@@ -36,6 +36,7 @@ Color palette::series(const Series& s, std::size_t index) { return s.color.value
 void drawHud(Canvas& c, const FontAtlas& fonts, const FrameScene& scene, const Viewport& vp) {
   std::vector<std::pair<std::string, Color>> lines;
   lines.emplace_back(format("t = %.2f s", scene.time), white);
+  if (!scene.note.empty()) lines.emplace_back(scene.note, white);
   for (std::size_t i = 0; i < scene.robots.size(); ++i) {
     const RobotView& r = scene.robots[i];
     const std::string name = r.name.empty() ? format("robot %zu", i) : r.name;

@@ -289,6 +289,7 @@ Result<Summary> runSession(const RunDef& def) {
       if (!allFinishedAt) {
         allFinishedAt = 0.0;
         for (const RobotWatch& w : watch) allFinishedAt = std::max(*allFinishedAt, *w.summary.finishedAt);
+        if (view) view->setNote(format("every task returned at %.2f s: commanded still", *allFinishedAt));
       }
       if (sim.time() + 0.5 * sim.dt() >= *allFinishedAt + def.settleSeconds) break;
     }

@@ -84,6 +84,37 @@ TEST(Session, ASettleTimeKeepsTheRunGoingWithTheRobotStill) {
       << formatSummary(s.value(), 0.0);
 }
 
+// The settle time is shown in the frames too: a line under the time in the HUD, whose dark box
+// is one text line taller once every task has returned.
+TEST(Session, TheFramesSayWhenTheRobotsAreCommandedStill) {
+  const fs::path frames = fs::path(::testing::TempDir()) / "settle_frames";
+  fs::remove_all(frames);
+  Result<Summary> s = runSession({.world = room(),
+                                  .worldName = "room",
+                                  .controllers = {inlineController(makeController([] { return forwardFor(1.0); }))},
+                                  .seconds = 10,
+                                  .settleSeconds = 1.0,
+                                  .outputs = {.frames = frames.string()},
+                                  .fps = 10});
+  ASSERT_TRUE(s.ok()) << s.error();
+  // Rows of the HUD's box down its left edge (black at 62% over the world: every channel dark).
+  const auto hudRows = [&](int frame) {
+    const Result<render::Image> img =
+        render::readPng((frames / ("frame_" + std::string(6 - std::to_string(frame).size(), '0') + std::to_string(frame) + ".png")).string());
+    EXPECT_TRUE(img.ok()) << img.error();
+    int rows = 0;
+    for (int y = 8; img.ok() && y < img.value().height; ++y, ++rows) {
+      const std::uint8_t* p = img.value().pixel(8, y);
+      if (p[0] > 120 || p[1] > 120 || p[2] > 120) break;
+    }
+    return rows;
+  };
+  const int before = hudRows(5), settling = hudRows(15);  // at 0.5 s, driving; at 1.5 s, settling
+  EXPECT_GT(before, 20);
+  EXPECT_GE(settling - before, 10) << "no line was added for the settle time";
+  EXPECT_LE(settling - before, 30);
+}
+
 // A video with a budget fits in it whatever the run's length: the bitrate is capped for the run's
 // seconds (a grade report's film). Without one the same run takes several times as much.
 TEST(Session, AVideoWithABudgetFitsInIt) {

@@ -64,6 +64,8 @@ class RunView {
 
   /// The latest recorded instant (before the first update(): the world with robots at their starts).
   [[nodiscard]] const FrameScene& scene() const { return scene_; }
+  /// Sets the line the HUD shows under the time from now on (FrameScene::note).
+  void setNote(std::string note) { scene_.note = std::move(note); }
   /// The plots up to the latest instant, with the task switches of the plotted robot.
   [[nodiscard]] const PlotSet& plots() const { return plots_; }
   /// The names of the values the plotted robot's tasks published, charted or not, in order of appearance.

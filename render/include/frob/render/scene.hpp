@@ -69,6 +69,7 @@ struct FrameScene {
   std::vector<Pillar> pillars;    ///< filled round obstacles
   std::vector<Marker> points;     ///< labelled points
   std::vector<RobotView> robots;  ///< robots, drawn in order
+  std::string note;               ///< a line under the time in the HUD (e.g. that the run is settling); may be empty
 };
 
 /// The index of the sonar whose direction is closest to straight ahead, or -1 if there is none.
