@@ -99,12 +99,13 @@ Task<Wheels> faceGoal(Point2 goal) {
 }
 
 // After a bump at `angle` (radians from our heading; the corner of a block met at a slant is
-// silent to the sonars): reverse a little if it is in front, then turn 45 degrees away from it.
+// silent to the sonars): reverse, longer if it is in front, then turn 45 degrees away from it.
+// The wheels take about 0.6 s to go from full speed ahead to reversing (the robot slides along
+// what it hit meanwhile), so a shorter reverse never leaves the obstacle: the robot would turn
+// on the spot against it, touching it all the while.
 Task<Wheels> recoverFrom(double angle) {
-  double reverse = 0.8 * std::max(0.0, std::cos(angle));  // seconds of reversing at 0.2 m/s
-  if (reverse > 0.05) {
-    co_await mkTask([reverse](const TaskState&) { return std::pair{wheels(-0.2, 0.0), after(reverse)}; });
-  }
+  double reverse = 0.8 + 0.4 * std::max(0.0, std::cos(angle));  // seconds of reversing at 0.2 m/s
+  co_await mkTask([reverse](const TaskState&) { return std::pair{wheels(-0.2, 0.0), after(reverse)}; });
   double turn = angle >= 0 ? -1.0 : 1.0;  // rad/s, away from the bump, for 45_deg (0.79) s: about 45 degrees
   co_await mkTask([turn](const TaskState&) { return std::pair{wheels(0.0, turn), after(45_deg)}; });
 }
@@ -197,16 +198,33 @@ Task<Wheels> followWall() {
 // The paper's atPlace: occurs when the robot is within `within` of `p`.
 Event<Unit> atPlace(const Robot& r, Point2 p, double within) { return predicate(distance(place(r), p) < within); }
 
+// Nothing within 1.5 m towards `bearing` (radians from our heading): the sonar facing it and its
+// two neighbours hear no echo nearer.
+Behavior<bool> clearTowards(const Robot& r, Behavior<double> bearing) {
+  std::vector<double> angles = r.spec().sonarAngles;
+  return lift(
+      [angles](double towards, const std::vector<double>& range) {
+        int n = static_cast<int>(angles.size()), facing = 0;
+        for (int i = 1; i < n; ++i) {
+          if (std::abs(wrapAngle(angles[i] - towards)) < std::abs(wrapAngle(angles[facing] - towards))) facing = i;
+        }
+        return std::min({range[(facing + n - 1) % n], range[facing], range[(facing + 1) % n]}) > 1.5;
+      },
+      bearing, sonars(r));
+}
+
 // The leave rule: we may stop going round when we are at least 30 cm nearer the goal than where
 // we met the obstacle (dHit) AND the goal lies on the open side, more than 120 degrees from the
-// direction of the wall. On a convex obstacle this happens just before the point nearest the
-// goal, so the robot drives about half way round instead of one and a half times.
+// direction of the wall, or nothing stands within 1.5 m towards it. On a convex obstacle this
+// happens just before the point nearest the goal, so the robot drives about half way round
+// instead of one and a half times. Round a small block the follower swings wide and hears no
+// wall for a while: then only the clear way to the goal lets it leave.
 Event<bool> mayLeave(const Robot& r, Point2 g, double dHit) {
   Behavior<double> goalBearing = wrapAngle(heading(g - place(r)) - orientation(r));
   auto openSide = lift(
       [](double bearing, const Wall& w) { return w.distance < 1.0 && std::abs(wrapAngle(bearing - w.direction)) > 120_deg; },
       goalBearing, wallOnLeft(r));
-  return predicate(distance(place(r), g) < dHit - 30_cm && openSide).map([] { return true; });
+  return predicate(distance(place(r), g) < dHit - 30_cm && (openSide || clearTowards(r, goalBearing))).map([] { return true; });
 }
 
 // ---- Step 5. circleOnce and circleOnceP (the paper's, with the leave rule) --------------------
@@ -237,10 +255,12 @@ Task<Wheels, std::pair<bool, Point2>> circleOnceP(Point2 g) {
   co_return co_await withB(closestP, circleOnce(g));
 }
 
-// circleTo: follow the wall until we are at `p` (drawn as a green dot meanwhile).
-Task<Wheels> circleTo(Point2 p) {
+// circleTo: follow the wall until we are as near the goal as `p` (within 10 cm), drawn as a green
+// dot meanwhile. Not "until we are at p": the next time round the follower may pass p wider.
+Task<Wheels> circleTo(Point2 p, Point2 g) {
   TaskState ts = co_await getTaskState();
-  co_await withPicture(paintAt(p, withColor(green, disc(12_cm))), withExit(atPlace(ts.robot(), p, 30_cm), followWall()));
+  Event<Unit> asNear = predicate(distance(place(ts.robot()), g) < distance(p, g) + 10_cm);
+  co_await withPicture(paintAt(p, withColor(green, disc(12_cm))), withExit(asNear, followWall()));
 }
 
 // ---- Step 6. Going round, with a time limit ---------------------------------------------------
@@ -250,7 +270,7 @@ Task<Wheels> circleTo(Point2 p) {
 Task<Wheels> roundObstacle(Point2 g) {
   co_await turnToWall();
   auto [leftEarly, closest] = co_await circleOnceP(g);
-  if (!leftEarly) co_await circleTo(closest);
+  if (!leftEarly) co_await circleTo(closest, g);
 }
 
 Task<Wheels> bug(Point2 g);

@@ -92,12 +92,13 @@ Task<Wheels> faceGoal(Point2 goal) {
 }
 
 // After a bump at `angle` (radians from our heading; the corner of a block met at a slant is
-// silent to the sonars): reverse a little if it is in front, then turn 45 degrees away from it.
+// silent to the sonars): reverse, longer if it is in front, then turn 45 degrees away from it.
+// The wheels take about 0.6 s to go from full speed ahead to reversing (the robot slides along
+// what it hit meanwhile), so a shorter reverse never leaves the obstacle: the robot would turn
+// on the spot against it, touching it all the while.
 Task<Wheels> recoverFrom(double angle) {
-  double reverse = 0.8 * std::max(0.0, std::cos(angle));  // seconds of reversing at 0.2 m/s
-  if (reverse > 0.05) {
-    co_await mkTask([reverse](const TaskState&) { return std::pair{wheels(-0.2, 0.0), after(reverse)}; });
-  }
+  double reverse = 0.8 + 0.4 * std::max(0.0, std::cos(angle));  // seconds of reversing at 0.2 m/s
+  co_await mkTask([reverse](const TaskState&) { return std::pair{wheels(-0.2, 0.0), after(reverse)}; });
   double turn = angle >= 0 ? -1.0 : 1.0;  // rad/s, away from the bump, for 45_deg (0.79) s: about 45 degrees
   co_await mkTask([turn](const TaskState&) { return std::pair{wheels(0.0, turn), after(45_deg)}; });
 }

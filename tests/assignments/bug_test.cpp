@@ -69,6 +69,39 @@ TEST(BugAssignment, SolutionGetsFullMarksOnEveryCheck) {
   EXPECT_EQ(g.score(), 12.0);
 }
 
+// Two fields the solution used to fail (with these run seeds), each for its own reason: round a
+// small block its follower swung wide, heard no wall, and never let the leave rule fire (nor came
+// back near the point it had found nearest the goal); at a block's corner, met at a slant, it
+// reversed for less time than its wheels take to stop and turned on the spot against the block,
+// pressing its bumpers for more than the bound check's 3 s in all.
+TEST(BugAssignment, SolutionLeavesASmallBlockAndBacksOffACornerItBumps) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "bug_test_fields";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "rubric.toml") << R"(title = "two fields"
+seconds = 120
+[[check]]
+name = "small block"
+points = 1
+generated = { kind = "obstacles", seeds = [384947559] }
+seeds = [207198145]
+goal = { within = 0.3 }
+collisions = { max = 4 }
+[[check]]
+name = "corner"
+points = 1
+generated = { kind = "obstacles", seeds = [630629015] }
+seeds = [27195284]
+bug1_bound = { point = "goal", within = 0.3 }
+collisions = { max = 8, seconds = 3 }
+)";
+  Result<course::Rubric> rubric = course::loadRubric(dir / "rubric.toml");
+  ASSERT_TRUE(rubric.ok()) << rubric.error();
+  course::GradeDef def{.rubric = rubric.value(), .assignment = kAssignment, .secret = kTestSecret};
+  def.compiler.cacheDir = FROB_TEST_CACHE_DIR;
+  course::Grade g = course::grade(def, assignmentFile(kAssignment, "solution.cpp"));
+  EXPECT_EQ(scores(g), (Scores{{"small block", 1}, {"corner", 1}})) << reasons(g, "small block") << reasons(g, "corner");
+}
+
 // The starter drives at the goal and stops at the first obstacle: it compiles and runs, and earns
 // nothing yet.
 TEST(BugAssignment, StarterScoresNothing) {
