@@ -97,7 +97,7 @@ class Pointwise {
     std::apply([&](const auto&... a) { (a.inputs(out), ...); }, args_);
   }
   /// This expression as one node of the graph.
-  [[nodiscard]] Behavior<R> behavior() const { return Behavior<R>(std::make_shared<detail::PointwiseNode<R, Pointwise>>(*this)); }
+  [[nodiscard]] Behavior<R> behavior() const { return Behavior<R>(detail::makeNode<detail::PointwiseNode<R, Pointwise>>(*this)); }
   /// Implicit conversion, so that `Behavior<double> d = sonar(r, 0);` reads naturally.
   operator Behavior<R>() const { return behavior(); }  // NOLINT(google-explicit-constructor)
   /// The value at instant `now`, as for a Behavior.
@@ -125,7 +125,7 @@ template <BehaviorType B>
 template <class T>
 template <class U>
   requires ValueFor<U, T>
-Behavior<T>::Behavior(U&& v) : node_(std::make_shared<detail::ConstantNode<T>>(T(std::forward<U>(v)))) {}
+Behavior<T>::Behavior(U&& v) : node_(detail::makeNode<detail::ConstantNode<T>>(T(std::forward<U>(v)))) {}
 
 /// The constant behavior `v`.
 template <class T>
@@ -134,7 +134,7 @@ template <class T>
 }
 
 /// Seconds since this behavior started (its first sample): 0 when the task that first reads it starts.
-[[nodiscard]] inline Behavior<double> time() { return Behavior<double>(std::make_shared<detail::TimeNode>()); }
+[[nodiscard]] inline Behavior<double> time() { return Behavior<double>(detail::makeNode<detail::TimeNode>()); }
 
 /// Pointwise application of `f` to behaviors and plain values: lift(f, b1, 2.0, b3).
 template <class F, class... Args>
@@ -142,7 +142,7 @@ template <class F, class... Args>
 [[nodiscard]] Behavior<Stored<std::invoke_result_t<F&, const ValueOf<Args>&...>>> lift(F f, Args&&... args) {
   using R = Stored<std::invoke_result_t<F&, const ValueOf<Args>&...>>;
   std::unique_ptr<void, void (*)(void*)> closure(new F(std::move(f)), &detail::deleteClosure<F>);
-  return Behavior<R>(std::make_shared<detail::LiftNode<R, ValueOf<Args>...>>(&detail::callClosure<R, F, ValueOf<Args>...>, std::move(closure),
+  return Behavior<R>(detail::makeNode<detail::LiftNode<R, ValueOf<Args>...>>(&detail::callClosure<R, F, ValueOf<Args>...>, std::move(closure),
                                                                              detail::inputNode(std::forward<Args>(args))...));
 }
 

@@ -10,28 +10,28 @@ namespace frob {
 template <BehaviorType B>
 [[nodiscard]] Behavior<ValueOf<B>> integral(const B& b) {
   using T = ValueOf<B>;
-  return Behavior<T>(std::make_shared<detail::IntegralNode<T>>(toBehavior(b).node()));
+  return Behavior<T>(detail::makeNode<detail::IntegralNode<T>>(toBehavior(b).node()));
 }
 
 /// The rate of change of `b` (backward difference over one step); zero at the first sample.
 template <BehaviorType B>
 [[nodiscard]] Behavior<ValueOf<B>> derivative(const B& b) {
   using T = ValueOf<B>;
-  return Behavior<T>(std::make_shared<detail::DerivativeNode<T>>(toBehavior(b).node()));
+  return Behavior<T>(detail::makeNode<detail::DerivativeNode<T>>(toBehavior(b).node()));
 }
 
 /// The value of `b` at the instant `key` was smallest since this behavior started.
 template <BehaviorType K, BehaviorType B>
 [[nodiscard]] Behavior<ValueOf<B>> atMin(const K& key, const B& b) {
   using Node = detail::AtExtremumNode<ValueOf<K>, ValueOf<B>>;
-  return Behavior<ValueOf<B>>(std::make_shared<Node>(toBehavior(key).node(), toBehavior(b).node(), false));
+  return Behavior<ValueOf<B>>(detail::makeNode<Node>(toBehavior(key).node(), toBehavior(b).node(), false));
 }
 
 /// The value of `b` at the instant `key` was largest since this behavior started.
 template <BehaviorType K, BehaviorType B>
 [[nodiscard]] Behavior<ValueOf<B>> atMax(const K& key, const B& b) {
   using Node = detail::AtExtremumNode<ValueOf<K>, ValueOf<B>>;
-  return Behavior<ValueOf<B>>(std::make_shared<Node>(toBehavior(key).node(), toBehavior(b).node(), true));
+  return Behavior<ValueOf<B>>(detail::makeNode<Node>(toBehavior(key).node(), toBehavior(b).node(), true));
 }
 
 }  // namespace frob

@@ -40,7 +40,7 @@ namespace frob {
 template <BehaviorType B, class T = ValueOf<B>>
   requires requires(const T& v) { isFinite(v); }
 [[nodiscard]] Behavior<T> checkFinite(const B& b, std::string what) {
-  return Behavior<T>(std::make_shared<detail::CheckFiniteNode<T>>(toBehavior(b).node(), std::move(what)));
+  return Behavior<T>(detail::makeNode<detail::CheckFiniteNode<T>>(toBehavior(b).node(), std::move(what)));
 }
 
 }  // namespace frob

@@ -50,7 +50,7 @@ class Event {
     requires std::invocable<F&, const T&> || std::invocable<F&>
   [[nodiscard]] auto map(F f) const {
     using R = Stored<typename detail::MapResult<F, T>::type>;
-    return Event<R>(std::make_shared<detail::MapNode<R, T, F>>(node_, std::move(f)));
+    return Event<R>(detail::makeNode<detail::MapNode<R, T, F>>(node_, std::move(f)));
   }
   /// Each occurrence carrying `v` instead of its own value (the paper's `e -=> v`).
   template <class U>
@@ -61,7 +61,7 @@ class Event {
   template <class P>
     requires std::predicate<P&, const T&>
   [[nodiscard]] Event filter(P p) const {
-    return Event(std::make_shared<detail::FilterNode<T, P>>(node_, std::move(p)));
+    return Event(detail::makeNode<detail::FilterNode<T, P>>(node_, std::move(p)));
   }
 
  private:
@@ -71,13 +71,13 @@ class Event {
 /// The paper's `e .|. e'`: occurrences of either; when both occur at the same instant, `a`'s wins.
 template <class T>
 [[nodiscard]] Event<T> operator|(const Event<T>& a, const Event<T>& b) {
-  return Event<T>(std::make_shared<detail::OrNode<T>>(a.node(), b.node()));
+  return Event<T>(detail::makeNode<detail::OrNode<T>>(a.node(), b.node()));
 }
 
 /// The paper's `neverE`: an event that never occurs.
 template <class T = Unit>
 [[nodiscard]] Event<T> never() {
-  return Event<T>(std::make_shared<detail::NeverNode<T>>());
+  return Event<T>(detail::makeNode<detail::NeverNode<T>>());
 }
 
 /// Occurs when `condition` becomes true, including at its first sample if it already holds; it
@@ -85,13 +85,13 @@ template <class T = Unit>
 /// of the run (its dt: 0.01 s in the simulator unless the world says otherwise): a condition true
 /// only between two samples never fires.
 [[nodiscard]] inline Event<Unit> predicate(const Behavior<bool>& condition) {
-  return Event<Unit>(std::make_shared<detail::PredicateNode>(condition.node()));
+  return Event<Unit>(detail::makeNode<detail::PredicateNode>(condition.node()));
 }
 
 /// Only the first occurrence of `e`.
 template <class T>
 [[nodiscard]] Event<T> once(const Event<T>& e) {
-  return Event<T>(std::make_shared<detail::OnceNode<T>>(e.node()));
+  return Event<T>(detail::makeNode<detail::OnceNode<T>>(e.node()));
 }
 
 /// At each occurrence of `e`, its value paired with `b`'s value at that instant.
@@ -99,7 +99,7 @@ template <class T, class B>
   requires BehaviorType<B>
 [[nodiscard]] Event<std::pair<T, ValueOf<B>>> snapshot(const Event<T>& e, const B& b) {
   using U = ValueOf<B>;
-  return Event<std::pair<T, U>>(std::make_shared<detail::SnapshotNode<T, U>>(e.node(), toBehavior(b).node()));
+  return Event<std::pair<T, U>>(detail::makeNode<detail::SnapshotNode<T, U>>(e.node(), toBehavior(b).node()));
 }
 
 /// Occurs once, `seconds` (>= 0) after it starts (its first sample).

@@ -11,7 +11,7 @@ namespace frob {
 /// one instant makes sampling it throw FrobError naming the task and the simulated time.
 template <class A, class B>
 [[nodiscard]] Behavior<A> runTask(TaskState ts, Task<A, B> t, std::type_identity_t<Behavior<A>> final) {
-  return Behavior<A>(std::make_shared<detail::RunnerNode<A, B>>(std::move(ts), std::move(t), std::move(final)));
+  return Behavior<A>(detail::makeNode<detail::RunnerNode<A, B>>(std::move(ts), std::move(t), std::move(final)));
 }
 
 /// runTask for robot `r` from where it stands; after the task ends the output is zero (stop).

@@ -10,19 +10,19 @@ namespace frob {
 /// which starts at that instant (its integrals and timers begin there).
 template <BehaviorType B, class T = ValueOf<B>>
 [[nodiscard]] Behavior<T> untilB(const B& b, const Event<Behavior<T>>& e) {
-  return Behavior<T>(std::make_shared<detail::SwitchNode<T>>(toBehavior(b).node(), e.node(), false));
+  return Behavior<T>(detail::makeNode<detail::SwitchNode<T>>(toBehavior(b).node(), e.node(), false));
 }
 
 /// Follows `b`, then at every occurrence of `e` the behavior it carries, started at that instant.
 template <BehaviorType B, class T = ValueOf<B>>
 [[nodiscard]] Behavior<T> switcher(const B& b, const Event<Behavior<T>>& e) {
-  return Behavior<T>(std::make_shared<detail::SwitchNode<T>>(toBehavior(b).node(), e.node(), true));
+  return Behavior<T>(detail::makeNode<detail::SwitchNode<T>>(toBehavior(b).node(), e.node(), true));
 }
 
 /// The paper's `stepper`: `init` until `e` occurs, then the value of its latest occurrence.
 template <class T>
 [[nodiscard]] Behavior<T> hold(std::type_identity_t<T> init, const Event<T>& e) {
-  return Behavior<T>(std::make_shared<detail::HoldNode<T>>(std::move(init), e.node()));
+  return Behavior<T>(detail::makeNode<detail::HoldNode<T>>(std::move(init), e.node()));
 }
 
 }  // namespace frob

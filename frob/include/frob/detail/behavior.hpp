@@ -109,7 +109,7 @@ auto inputNode(A&& a) {
   } else if constexpr (IsBehavior<D>::value) {
     return a.node();
   } else {
-    return std::shared_ptr<BehaviorNode<D>>(std::make_shared<ConstantNode<D>>(std::forward<A>(a)));
+    return makeNode<ConstantNode<D>>(std::forward<A>(a));
   }
 }
 

@@ -88,6 +88,16 @@ class NodeBase {
   std::uint64_t stamp_ = 0;
 };
 
+// A new node as the handle its kind is read through (BehaviorNode<T> or EventNode<T>), owned by
+// the one kind of control block every node shares (a NodeBase pointer, freed by its virtual
+// destructor): a controller's compile makes no shared_ptr machinery per node type.
+template <class Node, class... A>
+auto makeNode(A&&... a) {
+  using Interface = std::remove_pointer_t<decltype(interfaceOf(static_cast<Node*>(nullptr)))>;
+  Node* node = new Node(std::forward<A>(a)...);
+  return std::shared_ptr<Interface>(std::shared_ptr<NodeBase>(static_cast<NodeBase*>(node)), node);
+}
+
 template <class Node, bool checked>
 void runStep(const PlanStep* step, const Instant& now, std::uint64_t id) {
   if (!checked || step->node->stamp() != id) static_cast<Node*>(step->node)->refreshAt(now, id);
@@ -232,6 +242,12 @@ class StartTime {
   double start_ = 0.0;
   bool started_ = false;
 };
+
+// The kind a node is read through, for makeNode (declared only: its type is all that is used).
+template <class T>
+BehaviorNode<T>* interfaceOf(BehaviorNode<T>*);
+template <class T>
+EventNode<T>* interfaceOf(EventNode<T>*);
 
 }  // namespace detail
 }  // namespace frob

@@ -38,7 +38,8 @@ struct Strand {
 
 template <class A, class B>
 Strand<A, B> startStrand(const TaskState& state, std::int64_t parentRecord, Task<A, B> t) {
-  auto runner = std::make_shared<RunnerNode<A, B>>(state, std::move(t), Behavior<A>(zeroOf<A>()), parentRecord, true);
+  auto runner =
+      std::static_pointer_cast<RunnerNode<A, B>>(makeNode<RunnerNode<A, B>>(state, std::move(t), Behavior<A>(zeroOf<A>()), parentRecord, true));
   return {runner, Behavior<A>(runner)};
 }
 
@@ -84,7 +85,7 @@ class StrandOutputNode final : public BehaviorNode<A> {
 
 template <class A, class B>
 Event<Outcome<B>> endOf(const Strand<A, B>& s) {
-  return Event<Outcome<B>>(std::make_shared<StrandEndNode<A, B>>(s));
+  return Event<Outcome<B>>(makeNode<StrandEndNode<A, B>>(s));
 }
 
 using Watcher = std::function<void(const Instant&)>;
@@ -130,9 +131,9 @@ Task<A2, B2> feeding(F1 first, F2 second) {
   Strand<A1, B1> strand = startStrand(ctx->state, record, std::invoke(first, secondOut));
   ScopeEntry<Watcher> keep(ctx->watchers, keepSampling(strand.output));
   if constexpr (std::is_void_v<B2>) {
-    co_await std::invoke(second, Behavior<A1>(std::make_shared<StrandOutputNode<A1, B1>>(strand)), endOf(strand));
+    co_await std::invoke(second, Behavior<A1>(makeNode<StrandOutputNode<A1, B1>>(strand)), endOf(strand));
   } else {
-    co_return co_await std::invoke(second, Behavior<A1>(std::make_shared<StrandOutputNode<A1, B1>>(strand)), endOf(strand));
+    co_return co_await std::invoke(second, Behavior<A1>(makeNode<StrandOutputNode<A1, B1>>(strand)), endOf(strand));
   }
 }
 
@@ -197,7 +198,7 @@ Task<A> spawningLoop(PF p, QF q, M m) {
   std::int64_t record = co_await GetRecord{};
   auto strands = std::make_shared<std::vector<Strand<A, BQ>>>();
   ScopeEntry<std::function<Behavior<A>(Behavior<A>)>> merged(
-      ctx->filters, [strands, m](Behavior<A> own) { return Behavior<A>(std::make_shared<MergeStrandsNode<A, BQ, M>>(std::move(own), strands, m)); });
+      ctx->filters, [strands, m](Behavior<A> own) { return Behavior<A>(makeNode<MergeStrandsNode<A, BQ, M>>(std::move(own), strands, m)); });
   ScopeEntry<Watcher> keep(ctx->watchers, [strands](const Instant& now) {
     for (const auto& s : *strands) s.output.at(now);
     for (const auto& s : *strands) {

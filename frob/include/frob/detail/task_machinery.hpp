@@ -148,7 +148,7 @@ struct RunContext {
   // The run's output one instant late (withMyResult, withTask); the runner records it from now on.
   Behavior<A> delayedOutput() {
     if (!output) output = std::make_shared<OutputCell<A>>();
-    return Behavior<A>(std::make_shared<DelayedNode<A>>(output));
+    return Behavior<A>(makeNode<DelayedNode<A>>(output));
   }
   // `b` with every enclosing filter applied, innermost first.
   Behavior<A> filtered(Behavior<A> b) const {
