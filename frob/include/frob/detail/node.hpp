@@ -88,9 +88,9 @@ class NodeBase {
   std::uint64_t stamp_ = 0;
 };
 
-// A new node as the handle its kind is read through (BehaviorNode<T> or EventNode<T>), owned by
-// the one kind of control block every node shares (a NodeBase pointer, freed by its virtual
-// destructor): a controller's compile makes no shared_ptr machinery per node type.
+// A new node as the handle its kind is read through (BehaviorNode<T> or EventNode<T>), owned
+// through a shared_ptr<NodeBase> (freed by the virtual destructor), one control block type for
+// every node the headers make: a controller's compile makes no shared_ptr machinery per node type.
 template <class Node, class... A>
 auto makeNode(A&&... a) {
   using Interface = std::remove_pointer_t<decltype(interfaceOf(static_cast<Node*>(nullptr)))>;
