@@ -118,13 +118,13 @@ class ExtremumNode final : public StrictNode<double, ExtremumNode> {
   }
 
  private:
-  std::vector<std::shared_ptr<BehaviorNode<double>>> inputs_;
+  std::vector<NodeRef<BehaviorNode<double>>> inputs_;
   bool larger_;
 };
 }  // namespace
 
-B maxOf(std::initializer_list<B> all) { return B(std::make_shared<ExtremumNode>(all, true)); }
-B minOf(std::initializer_list<B> all) { return B(std::make_shared<ExtremumNode>(all, false)); }
+B maxOf(std::initializer_list<B> all) { return B(makeNode<ExtremumNode>(all, true)); }
+B minOf(std::initializer_list<B> all) { return B(makeNode<ExtremumNode>(all, false)); }
 B clamp(const B& v, const B& lo, const B& hi) {
   return lift([](double x, double l, double h) { return x < l ? l : (h < x ? h : x); }, v, lo, hi);
 }

@@ -40,12 +40,12 @@ std::optional<std::int64_t> TimerNode::compute(const Instant& now) {
 
 Event<Unit> after(double seconds) {
   FROB_ASSERT(seconds >= 0, "after: the delay must be zero or more seconds");
-  return Event<std::int64_t>(std::make_shared<detail::TimerNode>(seconds, false)).map([] { return Unit{}; });
+  return Event<std::int64_t>(detail::makeNode<detail::TimerNode>(seconds, false)).map([] { return Unit{}; });
 }
 
 Event<std::int64_t> every(double seconds) {
   FROB_ASSERT(seconds > 0, "every: the period must be more than zero seconds");
-  return Event<std::int64_t>(std::make_shared<detail::TimerNode>(seconds, true));
+  return Event<std::int64_t>(detail::makeNode<detail::TimerNode>(seconds, true));
 }
 
 namespace detail {

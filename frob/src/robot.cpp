@@ -44,7 +44,7 @@ class FixedFrameNode final : public detail::BehaviorNode<const SensorFrame*> {
 template <class T>
 class FrameListEvent final : public detail::EventNode<T> {
  public:
-  FrameListEvent(std::shared_ptr<detail::BehaviorNode<const SensorFrame*>> frame, std::vector<T> SensorFrame::*list)
+  FrameListEvent(detail::NodeRef<detail::BehaviorNode<const SensorFrame*>> frame, std::vector<T> SensorFrame::*list)
       : frame_(std::move(frame)), list_(list) {}
 
  protected:
@@ -55,18 +55,18 @@ class FrameListEvent final : public detail::EventNode<T> {
   }
 
  private:
-  std::shared_ptr<detail::BehaviorNode<const SensorFrame*>> frame_;
+  detail::NodeRef<detail::BehaviorNode<const SensorFrame*>> frame_;
   std::vector<T> SensorFrame::*list_;
 };
 
-std::shared_ptr<FrameNode> makeFrameNode(FrameSource source) {
+detail::NodeRef<detail::BehaviorNode<const SensorFrame*>> makeFrameNode(FrameSource source) {
   FROB_ASSERT(static_cast<bool>(source), "Robot: the frame source is empty");
-  return std::make_shared<FrameNode>(std::move(source));
+  return detail::makeNode<FrameNode>(std::move(source));
 }
 
-std::shared_ptr<FixedFrameNode> makeFixedFrameNode(std::shared_ptr<const SensorFrame> frame) {
+detail::NodeRef<detail::BehaviorNode<const SensorFrame*>> makeFixedFrameNode(std::shared_ptr<const SensorFrame> frame) {
   FROB_ASSERT(frame != nullptr, "Robot: the frame is null");
-  return std::make_shared<FixedFrameNode>(std::move(frame));
+  return detail::makeNode<FixedFrameNode>(std::move(frame));
 }
 
 // A frame source that computes readings from functions of time.
@@ -109,7 +109,7 @@ RobotSpec nomadSpec(int count) {
   return spec;
 }
 
-Robot::Robot(RobotSpec spec, std::shared_ptr<detail::BehaviorNode<const SensorFrame*>> frameNode, bool inPlace) {
+Robot::Robot(RobotSpec spec, detail::NodeRef<detail::BehaviorNode<const SensorFrame*>> frameNode, bool inPlace) {
   FROB_ASSERT(!spec.sonarAngles.empty(), "Robot: the spec has no sonars");
   Behavior<const SensorFrame*> frame(frameNode);
   sensors_ = std::make_shared<const Sensors>(Sensors{
@@ -117,8 +117,8 @@ Robot::Robot(RobotSpec spec, std::shared_ptr<detail::BehaviorNode<const SensorFr
       .frame = frame,
       .inPlace = inPlace,
       .sonars = lift([](const SensorFrame* s) { return s->sonar; }, frame),
-      .bumper = Event<BumperHit>(std::make_shared<FrameListEvent<BumperHit>>(frameNode, &SensorFrame::bumps)),
-      .keyboard = Event<char>(std::make_shared<FrameListEvent<char>>(frameNode, &SensorFrame::keys)),
+      .bumper = Event<BumperHit>(detail::makeNode<FrameListEvent<BumperHit>>(frameNode, &SensorFrame::bumps)),
+      .keyboard = Event<char>(detail::makeNode<FrameListEvent<char>>(frameNode, &SensorFrame::keys)),
   });
 }
 

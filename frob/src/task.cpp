@@ -107,11 +107,11 @@ std::string tooDeepMessage(const std::vector<std::string>& chain, int limit) {
          self + "()); instead: the new call then takes the old one's place.";
 }
 
-bool UsedOccurrences::fresh(const void* node, const Instant& at) const {
+bool UsedOccurrences::fresh(const NodeBase* node, const Instant& at) const {
   return instant_ != at.id || std::none_of(nodes_.begin(), nodes_.end(), [node](const auto& n) { return n.get() == node; });
 }
 
-void UsedOccurrences::use(std::shared_ptr<const void> node, const Instant& at) {
+void UsedOccurrences::use(std::shared_ptr<NodeBase> node, const Instant& at) {
   if (instant_ != at.id) nodes_.clear(), instant_ = at.id;
   nodes_.push_back(std::move(node));
 }

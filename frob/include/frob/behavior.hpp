@@ -44,7 +44,7 @@ T zeroOf() {
 
 /// A plain value from which a constant Behavior<T> can be made (not a behavior, not a graph node).
 template <class U, class T>
-concept ValueFor = !BehaviorType<U> && !std::convertible_to<U, std::shared_ptr<detail::NodeBase>> && std::constructible_from<T, U&&>;
+concept ValueFor = !BehaviorType<U> && !detail::IsNodeRef<std::remove_cvref_t<U>>::value && std::constructible_from<T, U&&>;
 
 /// A value defined at every instant. Cheap to copy: copies share one node of the graph.
 template <class T>
@@ -61,19 +61,19 @@ class Behavior {
     requires ValueFor<U, T>
   Behavior(U&& v);  // NOLINT(google-explicit-constructor): implicit lifting is the point
   /// A behavior computed by `node` (for library and host code).
-  explicit Behavior(std::shared_ptr<detail::BehaviorNode<T>> node) : node_(std::move(node)) {}
+  explicit Behavior(detail::NodeRef<detail::BehaviorNode<T>> node) : node_(std::move(node)) {}
 
   /// The value at instant `now`, computed at most once per instant.
   const T& at(const Instant& now) const { return node_->at(now); }
   /// The node behind this behavior.
-  [[nodiscard]] const std::shared_ptr<detail::BehaviorNode<T>>& node() const { return node_; }
+  [[nodiscard]] const detail::NodeRef<detail::BehaviorNode<T>>& node() const { return node_; }
   /// Pointwise `f` of this behavior's value; `f` may be a member pointer: `wall.map(&Wall::distance)`.
   template <class F>
     requires std::invocable<F&, const T&>
   [[nodiscard]] auto map(F f) const;
 
  private:
-  std::shared_ptr<detail::BehaviorNode<T>> node_;
+  detail::NodeRef<detail::BehaviorNode<T>> node_;
 };
 
 /// A value computed in place from its arguments at each instant, not yet a node of the graph (a
@@ -141,9 +141,11 @@ template <class F, class... Args>
   requires std::invocable<F&, const ValueOf<Args>&...>
 [[nodiscard]] Behavior<Stored<std::invoke_result_t<F&, const ValueOf<Args>&...>>> lift(F f, Args&&... args) {
   using R = Stored<std::invoke_result_t<F&, const ValueOf<Args>&...>>;
-  std::unique_ptr<void, void (*)(void*)> closure(new F(std::move(f)), &detail::deleteClosure<F>);
-  return Behavior<R>(detail::makeNode<detail::LiftNode<R, ValueOf<Args>...>>(&detail::callClosure<R, F, ValueOf<Args>...>, std::move(closure),
-                                                                             detail::inputNode(std::forward<Args>(args))...));
+  detail::Closure closure(new F(std::move(f)), &detail::deleteClosure<F>);
+  using Call = detail::LiftCall<R, F, detail::Inputs<ValueOf<Args>...>>;
+  return Behavior<R>(detail::makeNode<detail::LiftNode<R, sizeof...(Args)>>(
+      &Call::call, std::move(closure),
+      std::array<std::shared_ptr<detail::NodeBase>, sizeof...(Args)>{detail::inputNode(std::forward<Args>(args))...}));
 }
 
 template <class T>

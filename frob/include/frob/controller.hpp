@@ -40,10 +40,10 @@ struct ControllerEntry {
 template <class F>
 [[nodiscard]] Controller makeController(F f) {
   if constexpr (std::is_invocable_v<F, const Robot&>) {
-    return [f](const Robot& r) { return detail::controllerWheels(r, std::invoke(f, r)); };
+    return [f](const Robot& r) { return detail::controllerWheels(r, f(r)); };
   } else {
     static_assert(std::is_invocable_v<F>, "FROB_CONTROLLER: the function must take a const Robot& or nothing");
-    return [f](const Robot& r) { return detail::controllerWheels(r, std::invoke(f)); };
+    return [f](const Robot& r) { return detail::controllerWheels(r, f()); };
   }
 }
 

@@ -38,19 +38,20 @@ class Event {
   using value_type = T;
 
   /// An event computed by `node` (for library and host code).
-  explicit Event(std::shared_ptr<detail::EventNode<T>> node) : node_(std::move(node)) {}
+  explicit Event(detail::NodeRef<detail::EventNode<T>> node) : node_(std::move(node)) {}
 
   /// The occurrence at instant `now`, if any; checked at most once per instant.
   const std::optional<T>& at(const Instant& now) const { return node_->at(now); }
   /// The node behind this event.
-  [[nodiscard]] const std::shared_ptr<detail::EventNode<T>>& node() const { return node_; }
+  [[nodiscard]] const detail::NodeRef<detail::EventNode<T>>& node() const { return node_; }
 
   /// The paper's `e ==> f`: each occurrence's value transformed by `f` (which may also take no argument).
   template <class F>
     requires std::invocable<F&, const T&> || std::invocable<F&>
   [[nodiscard]] auto map(F f) const {
     using R = Stored<typename detail::MapResult<F, T>::type>;
-    return Event<R>(detail::makeNode<detail::MapNode<R, T, F>>(node_, std::move(f)));
+    detail::Closure closure(new F(std::move(f)), &detail::deleteClosure<F>);
+    return Event<R>(detail::makeNode<detail::MapNode<R, T>>(node_, &detail::callMap<R, T, F>, std::move(closure)));
   }
   /// Each occurrence carrying `v` instead of its own value (the paper's `e -=> v`).
   template <class U>
@@ -65,7 +66,7 @@ class Event {
   }
 
  private:
-  std::shared_ptr<detail::EventNode<T>> node_;
+  detail::NodeRef<detail::EventNode<T>> node_;
 };
 
 /// The paper's `e .|. e'`: occurrences of either; when both occur at the same instant, `a`'s wins.

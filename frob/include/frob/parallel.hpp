@@ -42,7 +42,10 @@ template <class F1, class F2>
   using A1 = typename T1::output_type;
   using B1 = typename T1::result_type;
   using B2 = typename std::invoke_result_t<F2&, Behavior<A1>, Event<Outcome<B1>>>::result_type;
-  return detail::feeding<A2, A1, B1, B2>(std::move(t1f), std::move(t2f)).at(loc).named("withTask");
+  return detail::feeding<A2, A1, B1, B2>(detail::Erased<Task<A1, B1>, Behavior<A2>>(std::move(t1f)),
+                                         detail::Erased<Task<A2, B2>, Behavior<A1>, Event<Outcome<B1>>>(std::move(t2f)))
+      .at(loc)
+      .named("withTask");
 }
 
 /// Lyons' P | Q: `p` and `q` run in parallel, the output is merge(p's output, q's output) while
@@ -67,7 +70,9 @@ template <class A, class BP, class BQ, class M>
 template <class PF, class QF>
 [[nodiscard]] auto syncLoop(PF pf, QF qf, std::source_location loc = detail::callSite()) {
   using A = typename std::invoke_result_t<PF&>::output_type;
-  return detail::loop<A>(std::move(pf), std::move(qf)).at(loc).named("syncLoop");
+  using P = std::invoke_result_t<PF&>;
+  using Q = std::invoke_result_t<QF&>;
+  return detail::loop<A>(detail::Erased<P>(std::move(pf)), detail::Erased<Q>(std::move(qf))).at(loc).named("syncLoop");
 }
 
 /// Lyons' P <>< Q (asynchronous loop): p; then q starts beside the rest of the loop, which runs
@@ -77,7 +82,10 @@ template <class PF, class QF, class M>
 [[nodiscard]] auto asyncLoop(PF pf, QF qf, M merge, std::source_location loc = detail::callSite()) {
   using A = typename std::invoke_result_t<PF&>::output_type;
   using BQ = typename std::invoke_result_t<QF&>::result_type;
-  return detail::spawningLoop<A, BQ>(std::move(pf), std::move(qf), std::move(merge)).at(loc).named("asyncLoop");
+  using P = std::invoke_result_t<PF&>;
+  return detail::spawningLoop<A, BQ>(detail::Erased<P>(std::move(pf)), detail::Erased<Task<A, BQ>>(std::move(qf)), std::move(merge))
+      .at(loc)
+      .named("asyncLoop");
 }
 
 }  // namespace frob

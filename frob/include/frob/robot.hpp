@@ -71,7 +71,7 @@ class Robot {
   [[nodiscard]] const std::shared_ptr<DebugChannel>& debugChannel() const { return debug_; }
 
  private:
-  Robot(RobotSpec spec, std::shared_ptr<detail::BehaviorNode<const SensorFrame*>> frameNode, bool inPlace);
+  Robot(RobotSpec spec, detail::NodeRef<detail::BehaviorNode<const SensorFrame*>> frameNode, bool inPlace);
   struct Sensors;
   std::shared_ptr<const Sensors> sensors_;
   std::shared_ptr<DebugChannel> debug_ = std::make_shared<DebugChannel>();

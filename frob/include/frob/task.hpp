@@ -92,7 +92,9 @@ template <class F>
   if constexpr (detail::checkTaskParts<detail::MkTaskParts<F>>()) {
     using A = detail::MkTaskOutput<F>;
     using E = detail::MkTaskExit<F>;
-    return detail::atomicTask<A, detail::MkTaskResult<F>, E>(std::move(f)).at(loc);
+    using Make = detail::Erased<detail::AtomicParts<A, E>, const TaskState&>;
+    detail::Closure closure(new F(std::move(f)), &detail::deleteClosure<F>);
+    return detail::atomicTask<A, detail::MkTaskResult<F>, E>(Make(&detail::makeAtomicParts<A, E, F>, std::move(closure))).at(loc);
   }
 }
 

@@ -38,7 +38,7 @@ template <class A, class B, class H>
   requires std::invocable<H&, const RoboErr&>
 [[nodiscard]] Task<A, B> taskCatch(Task<A, B> t, H handler, std::source_location loc = detail::callSite()) {
   std::string inner = t.name();
-  return detail::catching(std::move(t), std::move(handler)).at(loc).named("taskCatch(" + inner + ")");
+  return detail::catching(std::move(t), detail::Erased<Task<A, B>, const RoboErr&>(std::move(handler))).at(loc).named("taskCatch(" + inner + ")");
 }
 
 /// The paper's addError: `error` fails every subtask of `t` while `t` runs (scoped), with a
@@ -79,7 +79,7 @@ template <class F, class A, class B>
 [[nodiscard]] auto withB(F f, Task<A, B> t, std::source_location loc = detail::callSite()) {
   using C = ValueOf<std::invoke_result_t<F&, const TaskState&>>;
   std::string name = "withB(" + t.name() + ")";
-  return detail::beside<C>(std::move(f), std::move(t)).at(loc).named(std::move(name));
+  return detail::beside<C>(detail::Erased<Behavior<C>, const TaskState&>(std::move(f)), std::move(t)).at(loc).named(std::move(name));
 }
 
 /// The paper's withMyResult: the task `f(mine)` where `mine` is that task's own output, one
@@ -89,7 +89,7 @@ template <class F>
 [[nodiscard]] auto withMyResult(F f, std::source_location loc = detail::callSite()) {
   using A = detail::FedOutput<F>;
   using B = typename std::invoke_result_t<F&, Behavior<A>>::result_type;
-  return detail::fedBack<A, B>(std::move(f)).at(loc).named("withMyResult");
+  return detail::fedBack<A, B>(detail::Erased<Task<A, B>, Behavior<A>>(std::move(f))).at(loc).named("withMyResult");
 }
 
 /// The paper's withFilter: every output of `t` and its subtasks passes through `f`, either a

@@ -2,12 +2,13 @@
 // The machinery behind behavior.hpp: type traits for behaviors, the nodes constant and time
 // behaviors become, and the node of a lifted function (one type per signature).
 
+#include "frob/detail/erased.hpp"
 #include "frob/detail/node.hpp"
 #include "frob/geometry.hpp"
 
+#include <array>
 #include <functional>
 #include <memory>
-#include <tuple>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -70,46 +71,57 @@ class ConstantNode final : public BehaviorNode<T> {
   T compute(const Instant&) override { return this->value(); }
 };
 
-// A lifted function's node, one type per signature R(Vs...): the function is kept type-erased (a
-// pointer to its call and its closure on the heap), so that each lambda a controller lifts costs a
-// call and a delete, not a node type of its own; the common signatures are precompiled.
-template <class F>
-void deleteClosure(void* f) {
-  delete static_cast<F*>(f);
-}
+// A lifted function's node, one type per result type R and number of inputs N: the function is
+// type-erased (see erased.hpp), with a call that reads the inputs, so that a lambda costs no node
+// type of its own (nor one per signature); the common result types are precompiled.
+template <class... Vs>
+struct Inputs {};
+// Calls closure F with the values of its inputs, which are BehaviorNode<Vs>... in order.
+template <class R, class F, class Vs, class I = void>
+struct LiftCall;
 template <class R, class F, class... Vs>
-R callClosure(const void* f, const Vs&... v) {
-  return R(plain(std::invoke(*static_cast<const F*>(f), v...)));
-}
-template <class R, class... Vs>
-class LiftNode final : public StrictNode<R, LiftNode<R, Vs...>> {
- public:
-  using Call = R (*)(const void*, const Vs&...);
-  LiftNode(Call call, std::unique_ptr<void, void (*)(void*)> closure, std::shared_ptr<BehaviorNode<Vs>>... inputs)
-      : call_(call), closure_(std::move(closure)), inputs_(std::move(inputs)...) {}
-  R computeFresh(const Instant&) {
-    return std::apply([&](const auto&... in) { return call_(closure_.get(), in->value()...); }, inputs_);
+struct LiftCall<R, F, Inputs<Vs...>, void> : LiftCall<R, F, Inputs<Vs...>, std::index_sequence_for<Vs...>> {};
+template <class R, class F, class... Vs, std::size_t... I>
+struct LiftCall<R, F, Inputs<Vs...>, std::index_sequence<I...>> {
+  static R call(const void* closure, NodeBase* const* in) {
+    const F& f = *static_cast<const F*>(closure);
+    if constexpr (std::is_member_pointer_v<F>) {
+      return R(plain(std::invoke(f, static_cast<BehaviorNode<Vs>*>(in[I])->value()...)));
+    } else {
+      return R(plain(f(static_cast<BehaviorNode<Vs>*>(in[I])->value()...)));
+    }
   }
+};
+template <class R, std::size_t N>
+class LiftNode final : public StrictNode<R, LiftNode<R, N>> {
+ public:
+  using Call = R (*)(const void* closure, NodeBase* const* inputs);
+  LiftNode(Call call, Closure closure, std::array<std::shared_ptr<NodeBase>, N> inputs)
+      : call_(call), closure_(std::move(closure)), owners_(std::move(inputs)) {
+    for (std::size_t i = 0; i < N; ++i) inputs_[i] = owners_[i].get();
+  }
+  R computeFresh(const Instant&) { return call_(closure_.get(), inputs_.data()); }
   void strictInputs(std::vector<Input>& out) const override {
-    std::apply([&](const auto&... in) { (out.push_back(inputOf(in)), ...); }, inputs_);
+    for (const std::shared_ptr<NodeBase>& in : owners_) out.push_back(inputOf(in));
   }
 
  private:
   Call call_;
-  std::unique_ptr<void, void (*)(void*)> closure_;
-  std::tuple<std::shared_ptr<BehaviorNode<Vs>>...> inputs_;
+  Closure closure_;
+  std::array<std::shared_ptr<NodeBase>, N> owners_;
+  std::array<NodeBase*, N> inputs_{};  // the nodes of owners_
 };
 
 // The node a lifted argument is read from: a behavior's own, or a constant's for a plain value.
 template <class A>
-auto inputNode(A&& a) {
+std::shared_ptr<NodeBase> inputNode(A&& a) {
   using D = std::remove_cvref_t<A>;
   if constexpr (IsPointwise<D>::value) {
-    return a.behavior().node();
+    return a.behavior().node().owner();
   } else if constexpr (IsBehavior<D>::value) {
-    return a.node();
+    return a.node().owner();
   } else {
-    return makeNode<ConstantNode<D>>(std::forward<A>(a));
+    return makeNode<ConstantNode<D>>(std::forward<A>(a)).owner();
   }
 }
 

@@ -15,7 +15,7 @@ namespace detail {
 template <class T>
 class IntegralNode final : public StrictNode<T, IntegralNode<T>> {
  public:
-  explicit IntegralNode(std::shared_ptr<BehaviorNode<T>> b) : b_(std::move(b)), sum_(zeroOf<T>()) {}
+  explicit IntegralNode(NodeRef<BehaviorNode<T>> b) : b_(std::move(b)), sum_(zeroOf<T>()) {}
   void strictInputs(std::vector<Input>& out) const override { out.push_back(inputOf(b_)); }
   T computeFresh(const Instant& now) {
     const T& v = b_->value();
@@ -27,7 +27,7 @@ class IntegralNode final : public StrictNode<T, IntegralNode<T>> {
   }
 
  private:
-  std::shared_ptr<BehaviorNode<T>> b_;
+  NodeRef<BehaviorNode<T>> b_;
   T sum_;
   T previous_ = zeroOf<T>();
   double previousTime_ = 0.0;
@@ -38,7 +38,7 @@ class IntegralNode final : public StrictNode<T, IntegralNode<T>> {
 template <class T>
 class DerivativeNode final : public StrictNode<T, DerivativeNode<T>> {
  public:
-  explicit DerivativeNode(std::shared_ptr<BehaviorNode<T>> b) : b_(std::move(b)) {}
+  explicit DerivativeNode(NodeRef<BehaviorNode<T>> b) : b_(std::move(b)) {}
   void strictInputs(std::vector<Input>& out) const override { out.push_back(inputOf(b_)); }
   T computeFresh(const Instant& now) {
     const T& v = b_->value();
@@ -50,7 +50,7 @@ class DerivativeNode final : public StrictNode<T, DerivativeNode<T>> {
   }
 
  private:
-  std::shared_ptr<BehaviorNode<T>> b_;
+  NodeRef<BehaviorNode<T>> b_;
   T previous_ = zeroOf<T>();
   double previousTime_ = std::numeric_limits<double>::infinity();  // no difference at the first sample
 };
@@ -59,7 +59,7 @@ class DerivativeNode final : public StrictNode<T, DerivativeNode<T>> {
 template <class K, class T>
 class AtExtremumNode final : public StrictNode<T, AtExtremumNode<K, T>> {
  public:
-  AtExtremumNode(std::shared_ptr<BehaviorNode<K>> key, std::shared_ptr<BehaviorNode<T>> b, bool wantMax)
+  AtExtremumNode(NodeRef<BehaviorNode<K>> key, NodeRef<BehaviorNode<T>> b, bool wantMax)
       : key_(std::move(key)), b_(std::move(b)), wantMax_(wantMax) {}
   void strictInputs(std::vector<Input>& out) const override {
     out.push_back(inputOf(key_));
@@ -76,8 +76,8 @@ class AtExtremumNode final : public StrictNode<T, AtExtremumNode<K, T>> {
   }
 
  private:
-  std::shared_ptr<BehaviorNode<K>> key_;
-  std::shared_ptr<BehaviorNode<T>> b_;
+  NodeRef<BehaviorNode<K>> key_;
+  NodeRef<BehaviorNode<T>> b_;
   bool wantMax_;
   std::optional<K> bestKey_;
   std::optional<T> best_;

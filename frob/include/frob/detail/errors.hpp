@@ -15,7 +15,7 @@ namespace detail {
 template <class T>
 class CheckFiniteNode final : public BehaviorNode<T> {
  public:
-  CheckFiniteNode(std::shared_ptr<BehaviorNode<T>> b, std::string what) : b_(std::move(b)), what_(std::move(what)) {}
+  CheckFiniteNode(NodeRef<BehaviorNode<T>> b, std::string what) : b_(std::move(b)), what_(std::move(what)) {}
 
  protected:
   T compute(const Instant& now) override {
@@ -25,7 +25,7 @@ class CheckFiniteNode final : public BehaviorNode<T> {
   }
 
  private:
-  std::shared_ptr<BehaviorNode<T>> b_;
+  NodeRef<BehaviorNode<T>> b_;
   std::string what_;
 };
 

@@ -34,12 +34,17 @@ struct MapResult<F, T> {
   using type = std::invoke_result_t<F&, const T&>;
 };
 
-template <class F, class T>
-decltype(auto) callWith(F& f, const T& v) {
-  if constexpr (std::invocable<F&, const T&>) {
-    return std::invoke(f, v);
+// Calls map function F, kept in `closure`, with an occurrence's value `v` (or with nothing, for
+// a function that takes nothing); std::invoke only for member pointers, others directly.
+template <class R, class T, class F>
+R callMap(void* closure, const T& v) {
+  F& f = *static_cast<F*>(closure);
+  if constexpr (std::is_member_pointer_v<F>) {
+    return R(plain(std::invoke(f, v)));
+  } else if constexpr (std::invocable<F&, const T&>) {
+    return R(plain(f(v)));
   } else {
-    return std::invoke(f);
+    return R(plain(f()));
   }
 }
 
@@ -49,37 +54,45 @@ class NeverNode final : public EventNode<T> {
   std::optional<T> compute(const Instant&) override { return std::nullopt; }
 };
 
-template <class R, class T, class F>
+// An event's map function's node, one type per R and T: the function is type-erased (callMap and
+// its closure on the heap), as a lifted function's is (see LiftNode).
+template <class R, class T>
 class MapNode final : public EventNode<R> {
  public:
-  MapNode(std::shared_ptr<EventNode<T>> e, F f) : e_(std::move(e)), f_(std::move(f)) {}
+  using Call = R (*)(void* closure, const T& v);
+  MapNode(NodeRef<EventNode<T>> e, Call call, Closure closure) : e_(std::move(e)), call_(call), closure_(std::move(closure)) {}
 
  protected:
   std::optional<R> compute(const Instant& now) override {
     const std::optional<T>& o = e_->at(now);
     if (!o) return std::nullopt;
-    return R(plain(callWith(f_, *o)));
+    return call_(closure_.get(), *o);
   }
 
  private:
-  std::shared_ptr<EventNode<T>> e_;
-  F f_;
+  NodeRef<EventNode<T>> e_;
+  Call call_;
+  Closure closure_;
 };
 
 template <class T, class P>
 class FilterNode final : public EventNode<T> {
  public:
-  FilterNode(std::shared_ptr<EventNode<T>> e, P p) : e_(std::move(e)), p_(std::move(p)) {}
+  FilterNode(NodeRef<EventNode<T>> e, P p) : e_(std::move(e)), p_(std::move(p)) {}
 
  protected:
   std::optional<T> compute(const Instant& now) override {
     const std::optional<T>& o = e_->at(now);
-    if (o && std::invoke(p_, *o)) return o;
+    if constexpr (std::is_member_pointer_v<P>) {
+      if (o && std::invoke(p_, *o)) return o;
+    } else {
+      if (o && p_(*o)) return o;
+    }
     return std::nullopt;
   }
 
  private:
-  std::shared_ptr<EventNode<T>> e_;
+  NodeRef<EventNode<T>> e_;
   P p_;
 };
 
@@ -88,7 +101,7 @@ class FilterNode final : public EventNode<T> {
 template <class T>
 class OrNode final : public EventNode<T> {
  public:
-  OrNode(std::shared_ptr<EventNode<T>> a, std::shared_ptr<EventNode<T>> b) : a_(std::move(a)), b_(std::move(b)) {}
+  OrNode(NodeRef<EventNode<T>> a, NodeRef<EventNode<T>> b) : a_(std::move(a)), b_(std::move(b)) {}
 
  protected:
   std::optional<T> compute(const Instant& now) override {
@@ -98,13 +111,13 @@ class OrNode final : public EventNode<T> {
   }
 
  private:
-  std::shared_ptr<EventNode<T>> a_, b_;
+  NodeRef<EventNode<T>> a_, b_;
 };
 
 // Fires when the condition becomes true, including at its first sample if it already holds.
 class PredicateNode final : public EventNode<Unit> {
  public:
-  explicit PredicateNode(std::shared_ptr<BehaviorNode<bool>> b) : b_(std::move(b)) {}
+  explicit PredicateNode(NodeRef<BehaviorNode<bool>> b) : b_(std::move(b)) {}
 
  protected:
   std::optional<Unit> compute(const Instant& now) override {
@@ -115,7 +128,7 @@ class PredicateNode final : public EventNode<Unit> {
   }
 
  private:
-  std::shared_ptr<BehaviorNode<bool>> b_;
+  NodeRef<BehaviorNode<bool>> b_;
   bool previous_ = false;
 };
 
@@ -123,7 +136,7 @@ class PredicateNode final : public EventNode<Unit> {
 template <class T>
 class OnceNode final : public EventNode<T> {
  public:
-  explicit OnceNode(std::shared_ptr<EventNode<T>> e) : e_(std::move(e)) {}
+  explicit OnceNode(NodeRef<EventNode<T>> e) : e_(std::move(e)) {}
 
  protected:
   std::optional<T> compute(const Instant& now) override {
@@ -134,14 +147,14 @@ class OnceNode final : public EventNode<T> {
   }
 
  private:
-  std::shared_ptr<EventNode<T>> e_;
+  NodeRef<EventNode<T>> e_;
 };
 
 // The behavior is sampled every instant, not only at occurrences, so stateful behaviors stay current.
 template <class T, class U>
 class SnapshotNode final : public EventNode<std::pair<T, U>> {
  public:
-  SnapshotNode(std::shared_ptr<EventNode<T>> e, std::shared_ptr<BehaviorNode<U>> b) : e_(std::move(e)), b_(std::move(b)) {}
+  SnapshotNode(NodeRef<EventNode<T>> e, NodeRef<BehaviorNode<U>> b) : e_(std::move(e)), b_(std::move(b)) {}
 
  protected:
   std::optional<std::pair<T, U>> compute(const Instant& now) override {
@@ -152,8 +165,8 @@ class SnapshotNode final : public EventNode<std::pair<T, U>> {
   }
 
  private:
-  std::shared_ptr<EventNode<T>> e_;
-  std::shared_ptr<BehaviorNode<U>> b_;
+  NodeRef<EventNode<T>> e_;
+  NodeRef<BehaviorNode<U>> b_;
 };
 
 // Occurs at local times k × period for k = 1, 2, ... (or once at `period` when not repeating),

@@ -30,17 +30,45 @@ extern std::atomic<std::uint64_t> planCutShort;
 
 class NodeBase;
 
-// A node a strict node reads, with the number of handles (shared_ptr) that own it: a plan finds
-// from these which nodes no graph but its own can reach. Every input listed is owned by its reader.
+// A counted handle to a node, read as N (BehaviorNode<T>, EventNode<T> or the node's own type). The
+// count is a shared_ptr<NodeBase>'s, one control block type for every node: a controller's compile
+// makes no shared_ptr machinery per node or value type. Copies share the count.
+template <class N>
+class NodeRef {
+ public:
+  NodeRef() = default;
+  NodeRef(std::shared_ptr<NodeBase> owner, N* node) : owner_(std::move(owner)), node_(node) {}
+  N* operator->() const { return node_; }
+  N& operator*() const { return *node_; }
+  [[nodiscard]] N* get() const { return node_; }
+  explicit operator bool() const { return node_ != nullptr; }
+  // The number of handles that own the node.
+  [[nodiscard]] long use_count() const { return owner_.use_count(); }
+  [[nodiscard]] const std::shared_ptr<NodeBase>& owner() const { return owner_; }
+  void reset() { owner_.reset(), node_ = nullptr; }
+
+ private:
+  std::shared_ptr<NodeBase> owner_;
+  N* node_ = nullptr;
+};
+
+template <class T>
+struct IsNodeRef : std::false_type {};
+template <class N>
+struct IsNodeRef<NodeRef<N>> : std::true_type {};
+
+// A node a strict node reads, with the number of handles that own it: a plan finds from these
+// which nodes no graph but its own can reach. Every input listed is owned by its reader.
 struct Input {
   NodeBase* node;
   long owners;
 };
 // The Input of a node its reader holds through `handle`.
-template <class Node>
-Input inputOf(const std::shared_ptr<Node>& handle) {
+template <class N>
+Input inputOf(const NodeRef<N>& handle) {
   return {handle.get(), handle.use_count()};
 }
+inline Input inputOf(const std::shared_ptr<NodeBase>& handle) { return {handle.get(), handle.use_count()}; }
 
 // One step of a plan: refreshes its node, then runs the next step by a tail call, so that a plan
 // runs without a loop or a return per step. The last step of a plan is `last`, which ends it.
@@ -88,14 +116,12 @@ class NodeBase {
   std::uint64_t stamp_ = 0;
 };
 
-// A new node as the handle its kind is read through (BehaviorNode<T> or EventNode<T>), owned
-// through a shared_ptr<NodeBase> (freed by the virtual destructor), one control block type for
-// every node the headers make: a controller's compile makes no shared_ptr machinery per node type.
+// A new node, as the handle its kind is read through (BehaviorNode<T> or EventNode<T>).
 template <class Node, class... A>
 auto makeNode(A&&... a) {
   using Interface = std::remove_pointer_t<decltype(interfaceOf(static_cast<Node*>(nullptr)))>;
   Node* node = new Node(std::forward<A>(a)...);
-  return std::shared_ptr<Interface>(std::shared_ptr<NodeBase>(static_cast<NodeBase*>(node)), node);
+  return NodeRef<Interface>(std::shared_ptr<NodeBase>(static_cast<NodeBase*>(node)), node);
 }
 
 template <class Node, bool checked>

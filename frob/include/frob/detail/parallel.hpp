@@ -24,7 +24,7 @@ namespace detail {
 // the parent's scopes or filters (as the paper's cloneState). Destroying it aborts the task.
 template <class A, class B>
 struct Strand {
-  std::shared_ptr<RunnerNode<A, B>> runner;
+  NodeRef<RunnerNode<A, B>> runner;
   Behavior<A> output;
 
   [[nodiscard]] bool done() const { return runner->done(); }
@@ -38,9 +38,8 @@ struct Strand {
 
 template <class A, class B>
 Strand<A, B> startStrand(const TaskState& state, std::int64_t parentRecord, Task<A, B> t) {
-  auto runner =
-      std::static_pointer_cast<RunnerNode<A, B>>(makeNode<RunnerNode<A, B>>(state, std::move(t), Behavior<A>(zeroOf<A>()), parentRecord, true));
-  return {runner, Behavior<A>(runner)};
+  NodeRef<BehaviorNode<A>> output = makeNode<RunnerNode<A, B>>(state, std::move(t), Behavior<A>(zeroOf<A>()), parentRecord, true);
+  return {NodeRef<RunnerNode<A, B>>(output.owner(), static_cast<RunnerNode<A, B>*>(output.get())), Behavior<A>(output)};
 }
 
 // Occurs once, at the instant the strand's task ended, carrying how: the same occurrence for every
@@ -106,7 +105,7 @@ class MergeStrandsNode final : public BehaviorNode<A> {
  protected:
   A compute(const Instant& now) override {
     A v = own_.at(now);
-    for (const Strand<A, B>& s : *strands_) v = std::invoke(merge_, v, s.output.at(now));
+    for (const Strand<A, B>& s : *strands_) v = merge_(v, s.output.at(now));
     return v;
   }
 
@@ -123,17 +122,17 @@ Task<A, B> mergedWith(Behavior<A> other, M merge, Task<A, B> t) {
 }
 
 // withTask: `second(first's output, first's end)` beside `first(second's output, one step late)`.
-template <class A2, class A1, class B1, class B2, class F1, class F2>
-Task<A2, B2> feeding(F1 first, F2 second) {
+template <class A2, class A1, class B1, class B2>
+Task<A2, B2> feeding(Erased<Task<A1, B1>, Behavior<A2>> first, Erased<Task<A2, B2>, Behavior<A1>, Event<Outcome<B1>>> second) {
   RunContext<A2>* ctx = co_await GetContext{};
   std::int64_t record = co_await GetRecord{};
   Behavior<A2> secondOut = ctx->delayedOutput();
-  Strand<A1, B1> strand = startStrand(ctx->state, record, std::invoke(first, secondOut));
+  Strand<A1, B1> strand = startStrand(ctx->state, record, first(secondOut));
   ScopeEntry<Watcher> keep(ctx->watchers, keepSampling(strand.output));
   if constexpr (std::is_void_v<B2>) {
-    co_await std::invoke(second, Behavior<A1>(makeNode<StrandOutputNode<A1, B1>>(strand)), endOf(strand));
+    co_await second(Behavior<A1>(makeNode<StrandOutputNode<A1, B1>>(strand)), endOf(strand));
   } else {
-    co_return co_await std::invoke(second, Behavior<A1>(makeNode<StrandOutputNode<A1, B1>>(strand)), endOf(strand));
+    co_return co_await second(Behavior<A1>(makeNode<StrandOutputNode<A1, B1>>(strand)), endOf(strand));
   }
 }
 
@@ -183,17 +182,17 @@ Task<A, std::variant<ResultOf<BP>, ResultOf<BQ>>> firstOf(Task<A, BP> first, Tas
 }
 
 // syncLoop: p, q, p, q, ... forever.
-template <class A, class PF, class QF>
-Task<A> loop(PF p, QF q) {
+template <class A, class P, class Q>
+Task<A> loop(Erased<P> p, Erased<Q> q) {
   for (;;) {
-    co_await std::invoke(p);
-    co_await std::invoke(q);
+    co_await p();
+    co_await q();
   }
 }
 
 // asyncLoop: p, then q in a strand beside the next round; the output merged with every q running.
-template <class A, class BQ, class PF, class QF, class M>
-Task<A> spawningLoop(PF p, QF q, M m) {
+template <class A, class BQ, class P, class M>
+Task<A> spawningLoop(Erased<P> p, Erased<Task<A, BQ>> q, M m) {
   RunContext<A>* ctx = co_await GetContext{};
   std::int64_t record = co_await GetRecord{};
   auto strands = std::make_shared<std::vector<Strand<A, BQ>>>();
@@ -207,8 +206,8 @@ Task<A> spawningLoop(PF p, QF q, M m) {
     std::erase_if(*strands, [](const auto& s) { return s.done(); });
   });
   for (;;) {
-    co_await std::invoke(p);
-    strands->push_back(startStrand(ctx->state, record, std::invoke(q)));
+    co_await p();
+    strands->push_back(startStrand(ctx->state, record, q()));
   }
 }
 

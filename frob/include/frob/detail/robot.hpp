@@ -51,9 +51,9 @@ struct FrameField<Point2> {
 // The robot's frame at an instant, for readings: a frame its owner refreshes in place is read
 // directly (no node, no per-instant check); a FrameSource is fetched once per instant by `node`.
 struct FrameArg {
-  const SensorFrame* const* slot = nullptr;                // node->value(): the frame in place, or this instant's fetch
-  bool fetched = false;                                    // whether `node` must fetch it at each instant
-  std::shared_ptr<BehaviorNode<const SensorFrame*>> node;  // holds the frame in `slot`
+  const SensorFrame* const* slot = nullptr;        // node->value(): the frame in place, or this instant's fetch
+  bool fetched = false;                            // whether `node` must fetch it at each instant
+  NodeRef<BehaviorNode<const SensorFrame*>> node;  // holds the frame in `slot`
   const SensorFrame* get(const Instant& now) const {
     if (!fetched) [[likely]]
       return *slot;

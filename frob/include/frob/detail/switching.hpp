@@ -25,9 +25,7 @@ class SwitchChainGuard {
 template <class T>
 class SwitchNode final : public BehaviorNode<T> {
  public:
-  SwitchNode(std::shared_ptr<BehaviorNode<T>> b, std::shared_ptr<EventNode<Behavior<T>>> e, bool repeat) : e_(std::move(e)), repeat_(repeat) {
-    follow(std::move(b));
-  }
+  SwitchNode(NodeRef<BehaviorNode<T>> b, NodeRef<EventNode<Behavior<T>>> e, bool repeat) : e_(std::move(e)), repeat_(repeat) { follow(std::move(b)); }
 
  protected:
   T compute(const Instant& now) override {
@@ -46,21 +44,21 @@ class SwitchNode final : public BehaviorNode<T> {
   }
 
  private:
-  void follow(std::shared_ptr<BehaviorNode<T>> b) {
+  void follow(NodeRef<BehaviorNode<T>> b) {
     b_ = std::move(b);
     inner_ = dynamic_cast<SwitchNode*>(b_.get());
   }
 
-  std::shared_ptr<BehaviorNode<T>> b_;
+  NodeRef<BehaviorNode<T>> b_;
   SwitchNode* inner_ = nullptr;  // b_ when it is itself a switch
-  std::shared_ptr<EventNode<Behavior<T>>> e_;
+  NodeRef<EventNode<Behavior<T>>> e_;
   bool repeat_;
 };
 
 template <class T>
 class HoldNode final : public BehaviorNode<T> {
  public:
-  HoldNode(T init, std::shared_ptr<EventNode<T>> e) : value_(std::move(init)), e_(std::move(e)) {}
+  HoldNode(T init, NodeRef<EventNode<T>> e) : value_(std::move(init)), e_(std::move(e)) {}
 
  protected:
   T compute(const Instant& now) override {
@@ -70,7 +68,7 @@ class HoldNode final : public BehaviorNode<T> {
 
  private:
   T value_;
-  std::shared_ptr<EventNode<T>> e_;
+  NodeRef<EventNode<T>> e_;
 };
 
 }  // namespace detail

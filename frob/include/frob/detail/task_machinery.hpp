@@ -112,13 +112,13 @@ struct AtomicBase {
 class UsedOccurrences {
  public:
   // Whether event node `node`'s occurrence at `at` has not ended or failed a task yet.
-  [[nodiscard]] bool fresh(const void* node, const Instant& at) const;
+  [[nodiscard]] bool fresh(const NodeBase* node, const Instant& at) const;
   // Marks it used; holds the node so that no new node takes its address within the instant.
-  void use(std::shared_ptr<const void> node, const Instant& at);
+  void use(std::shared_ptr<NodeBase> node, const Instant& at);
 
  private:
   std::uint64_t instant_ = 0;
-  std::vector<std::shared_ptr<const void>> nodes_;
+  std::vector<std::shared_ptr<NodeBase>> nodes_;
 };
 
 // What every frame of one runTask shares.
@@ -437,7 +437,7 @@ class AtomicAwaiter final : public AtomicBase<A> {
     if (!error_ && ctx_->interrupts.empty()) {  // the common case, kept short: it runs every step
       if (!exitNever_) {
         if (const std::optional<E>& exit = exit_.at(now); exit && ctx_->used.fresh(exit_.node().get(), now)) {
-          ctx_->used.use(exit_.node(), now);
+          ctx_->used.use(exit_.node().owner(), now);
           result_ = *exit;
           return nullptr;
         }
@@ -469,13 +469,13 @@ class AtomicAwaiter final : public AtomicBase<A> {
       if (o && interrupt == nullptr) interrupt = o, scope = &*it;
     }
     if (exit) {
-      ctx_->used.use(exit_.node(), now);
+      ctx_->used.use(exit_.node().owner(), now);
       result_ = **exit;
     } else if (error) {
-      ctx_->used.use(error_->node(), now);
+      ctx_->used.use(error_->node().owner(), now);
       failure_ = std::make_exception_ptr(**error);
     } else if (interrupt) {
-      ctx_->used.use(scope->node(), now);
+      ctx_->used.use(scope->node().owner(), now);
       failure_ = **interrupt;
     } else {
       return false;
@@ -499,14 +499,32 @@ struct EventValue<Event<T>> {
   using type = T;
 };
 
-// The coroutine behind mkTask and mkTaskE; an exit event of Unit makes a Task<A> (no result).
-template <class A, class B, class E, class F>
-Task<A, B> atomicTask(F f) {
-  TaskState ts = co_await GetState{};
-  auto parts = std::invoke(f, static_cast<const TaskState&>(ts));
+// What mkTask's function makes as its task starts: the behavior it drives, its exit and error events.
+template <class A, class E>
+struct AtomicParts {
+  Behavior<A> drives;
+  Event<E> exit;
   std::optional<Event<RoboErr>> error;
-  if constexpr (std::tuple_size_v<decltype(parts)> == 3) error = std::get<2>(parts);
-  AtomicAwaiter<A, E> atom(toBehavior(std::get<0>(parts)), std::get<1>(parts), std::move(error));
+};
+
+// The parts mkTask's function, an F in `closure`, makes, as AtomicParts.
+template <class A, class E, class F>
+AtomicParts<A, E> makeAtomicParts(void* closure, const TaskState& ts) {
+  auto parts = (*static_cast<F*>(closure))(ts);
+  if constexpr (std::tuple_size_v<decltype(parts)> == 3) {
+    return {toBehavior(std::get<0>(parts)), std::get<1>(parts), std::get<2>(parts)};
+  } else {
+    return {toBehavior(std::get<0>(parts)), std::get<1>(parts), std::nullopt};
+  }
+}
+
+// The coroutine behind mkTask and mkTaskE, one per task type (precompiled for the usual ones), not
+// one per function; an exit event of Unit makes a Task<A> (no result).
+template <class A, class B, class E>
+Task<A, B> atomicTask(Erased<AtomicParts<A, E>, const TaskState&> make) {
+  TaskState ts = co_await GetState{};
+  AtomicParts<A, E> parts = make(ts);
+  AtomicAwaiter<A, E> atom(std::move(parts.drives), std::move(parts.exit), std::move(parts.error));
   if constexpr (std::is_void_v<B>) {
     co_await atom;
   } else {

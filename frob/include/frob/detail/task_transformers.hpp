@@ -103,9 +103,9 @@ Task<A, B> interrupted(Task<A, B> body, Event<std::exception_ptr> error) {
 template <class A, class F>
 std::function<Behavior<A>(Behavior<A>)> asFilter(F f) {
   if constexpr (requires(F& g, Behavior<A> b) {
-                  { std::invoke(g, b) } -> BehaviorType;
+                  { g(b) } -> BehaviorType;
                 }) {
-    return [f](Behavior<A> b) { return toBehavior(std::invoke(f, std::move(b))); };
+    return [f](Behavior<A> b) { return toBehavior(f(std::move(b))); };
   } else {
     return [f](Behavior<A> b) { return Behavior<A>(lift(f, b)); };
   }
@@ -125,8 +125,8 @@ Task<A, B> publishing(Task<A, B> body, Behavior<Picture> p) {
 }
 
 // taskCatch: `body`, or on a RoboErr `handler(error)` in its place.
-template <class A, class B, class H>
-Task<A, B> catching(Task<A, B> body, H handler) {
+template <class A, class B>
+Task<A, B> catching(Task<A, B> body, Erased<Task<A, B>, const RoboErr&> handler) {
   std::optional<RoboErr> caught;
   try {
     if constexpr (std::is_void_v<B>) {
@@ -138,7 +138,7 @@ Task<A, B> catching(Task<A, B> body, H handler) {
   } catch (const RoboErr& e) {
     caught = e;
   }
-  co_await become(Task<A, B>(std::invoke(handler, *caught)));
+  co_await become(handler(*caught));
   if constexpr (!std::is_void_v<B>) __builtin_unreachable();  // become() destroys this frame: it never resumes
 }
 
@@ -186,11 +186,11 @@ Task<A, X> exiting(Event<X> e, Task<A, B> body) {
 }
 
 // withB: `body` with the behavior `make(state)` sampled beside it from its start.
-template <class C, class F, class A, class B>
-Task<A, WithBResult<B, C>> beside(F make, Task<A, B> body) {
+template <class C, class A, class B>
+Task<A, WithBResult<B, C>> beside(Erased<Behavior<C>, const TaskState&> make, Task<A, B> body) {
   RunContext<A>* ctx = co_await GetContext{};
   const TaskState start = ctx->state;  // a copy: the context's state moves on with each subtask
-  Behavior<C> c = toBehavior(std::invoke(make, start));
+  Behavior<C> c = make(start);
   c.at(*ctx->now);  // it starts with the task
   ScopeEntry<std::function<void(const Instant&)>> watch(ctx->watchers, [c](const Instant& now) { c.at(now); });
   if constexpr (std::is_void_v<B>) {
@@ -203,14 +203,14 @@ Task<A, WithBResult<B, C>> beside(F make, Task<A, B> body) {
 }
 
 // withMyResult: the task `make(mine)`, with `mine` its run's output one instant late.
-template <class A, class B, class F>
-Task<A, B> fedBack(F make) {
+template <class A, class B>
+Task<A, B> fedBack(Erased<Task<A, B>, Behavior<A>> make) {
   RunContext<A>* ctx = co_await GetContext{};
   Behavior<A> mine = ctx->delayedOutput();
   if constexpr (std::is_void_v<B>) {
-    co_await std::invoke(make, mine);
+    co_await make(mine);
   } else {
-    co_return co_await std::invoke(make, mine);
+    co_return co_await make(mine);
   }
 }
 
