@@ -84,7 +84,9 @@ FROB_CONTROLLER(go)
   EXPECT_NE(needs.find("frob::detail::TaskPromise<frob::Wheels, void>::final_suspend()"), std::string::npos) << needs;
   EXPECT_NE(needs.find("frob::makeController<frob::Task<frob::Wheels, void> (*)()>"), std::string::npos) << needs;
   EXPECT_EQ(has.find("TaskPromise"), std::string::npos) << has;
-  EXPECT_NE(needs.find("frob::detail::numbers::multiply("), std::string::npos) << needs;
+  // A sonar reading times a number: an operator precompiled once, taken from the host.
+  EXPECT_NE(needs.find("frob::operator*<frob::Pointwise<double"), std::string::npos) << needs;
+  EXPECT_EQ(has.find("operator*"), std::string::npos) << has;
   EXPECT_EQ(has.find("PointwiseNode"), std::string::npos) << has;
 }
 
