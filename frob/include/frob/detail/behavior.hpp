@@ -1,6 +1,6 @@
 #pragma once
 // The machinery behind behavior.hpp: type traits for behaviors, the nodes constant and time
-// behaviors become, and the node of a lifted function (one type per signature).
+// behaviors become, and the node of a lifted function (one type per result type and arity).
 
 #include "frob/detail/erased.hpp"
 #include "frob/detail/node.hpp"
