@@ -1,5 +1,5 @@
 // Issue 12, the controller host: what host costs a step (frames out, wheels back) against the
-// same controllers sampled in this process, for 1 and 4 robots in one host or a host per robot,
+// same controllers sampled in this process, for 1, 2 and 4 robots in one host or a host per robot,
 // spinning before sleeping or sleeping at once; and what starting a host costs (spawn, sandbox,
 // exec, dlopen, first answer).
 // Run by hand for figures:   build/tests/bench/host_bench --benchmark_min_time=2
@@ -18,11 +18,16 @@ namespace fs = std::filesystem;
 // The paper's runAround (example 01): a typical controller, a few behaviors per robot.
 const fs::path kModule = fs::path(FROB_EXAMPLE_MODULES) / "01_run_around.so";
 
-// The empty room with one robot, or the arena with four.
+// The empty room with one robot, or the arena with two (its first two) or four.
 const worlds::WorldDef& world(int robots) {
   static const worlds::WorldDef one = *worlds::loadReferenceWorld("empty");
   static const worlds::WorldDef four = *worlds::loadReferenceWorld("arena");
-  return robots == 1 ? one : four;
+  static const worlds::WorldDef two = [] {
+    worlds::WorldDef w = four;
+    w.robots.resize(2);
+    return w;
+  }();
+  return robots == 1 ? one : robots == 2 ? two : four;
 }
 
 void perStep(benchmark::State& state, worlds::Run& run) {
@@ -64,10 +69,10 @@ void HostStart(benchmark::State& state) {
   }
 }
 
-BENCHMARK(InProcess)->ArgName("robots")->Arg(1)->Arg(4);
+BENCHMARK(InProcess)->ArgName("robots")->Arg(1)->Arg(2)->Arg(4);
 // Args: robots, microseconds each side spins before it sleeps (0: sleeps at once, for shared cores).
 BENCHMARK(Sandboxed)->ArgNames({"robots", "spin_us"})->Args({1, 50})->Args({4, 50})->Args({1, 0})->Args({4, 0});
-BENCHMARK(HostPerRobot)->ArgNames({"robots", "spin_us"})->Args({1, 50})->Args({4, 50})->Args({4, 0});
+BENCHMARK(HostPerRobot)->ArgNames({"robots", "spin_us"})->Args({1, 50})->Args({2, 50})->Args({4, 50})->Args({4, 0});
 BENCHMARK(HostStart)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -21,8 +21,9 @@ namespace fs = std::filesystem;
 std::vector<Grade> gradeAll(GradeDef def, const std::vector<fs::path>& submissions, int jobs,
                             const std::function<void(std::size_t, std::size_t)>& progress) {
   jobs = std::clamp(jobs, 1, std::max<int>(1, static_cast<int>(submissions.size())));
-  // Each run is two processes that take turns, spinning while they wait: runs that share the cores
-  // slow each other more than they gain, so only one per two cores runs at once (compiles overlap).
+  // Each run is the grader and a host per robot, taking turns and spinning while they wait: runs
+  // that share the cores slow each other more than they gain, so only one per two cores runs at once
+  // (compiles overlap).
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   if (2 * jobs > cores) def.runSlots = std::make_shared<std::counting_semaphore<>>(std::max(1, cores / 2));
   std::vector<Grade> grades(submissions.size());

@@ -1,6 +1,7 @@
 // Runs driven by controller hosts: each step the robots' frames go out and their replies come back,
 // read against the caps of a step and of a run. A run gives each robot a host of its own.
 #include "frob/sandbox/wire.hpp"
+#include "host_cores.hpp"
 #include "host_impl.hpp"
 
 #include <algorithm>
@@ -192,6 +193,9 @@ Result<RobotHosts> RobotHosts::start(const std::vector<fs::path>& modules, const
 worlds::DriverFactory RobotHosts::driver(bool pictures) const {
   return [hosts = hosts_, pictures](const worlds::Simulation& sim) -> std::unique_ptr<worlds::ControllerDriver> {
     FROB_ASSERT(hosts.size() == sim.robotCount(), "these hosts were started for another number of robots");
+    std::vector<int> pids;
+    for (const auto& h : hosts) pids.push_back(h->processId());
+    keepGraderCore(pids);  // this thread simulates the run
     std::vector<std::unique_ptr<HostDriver>> drivers;
     for (std::uint32_t i = 0; i < hosts.size(); ++i) {
       drivers.push_back(std::make_unique<HostDriver>(hosts[i], *hosts[i]->impl_, sim, std::vector{i}, std::vector<std::size_t>{0}, pictures));

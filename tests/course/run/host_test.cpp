@@ -11,6 +11,7 @@
 #include <dlfcn.h>
 #include <gtest/gtest.h>
 #include <poll.h>
+#include <sched.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <sys/wait.h>
@@ -72,7 +73,9 @@ TEST(Sandbox, AWellBehavedControllerDrivesBitIdenticallyInAndOutOfTheSandbox) {
 // A 4 x 3 m room with one robot, or two.
 worlds::WorldDef room(int robots = 1) {
   std::string text = "size = [4.0, 3.0]\nseed = 7\n[[robot]]\nname = \"ada\"\nstart = [1.0, 1.0]\n";
-  if (robots == 2) text += "[[robot]]\nname = \"bob\"\nstart = [3.0, 2.0]\nheading_deg = 180\n";
+  if (robots >= 2) text += "[[robot]]\nname = \"bob\"\nstart = [3.0, 2.0]\nheading_deg = 180\n";
+  if (robots >= 3) text += "[[robot]]\nname = \"cy\"\nstart = [1.0, 2.0]\n";
+  if (robots >= 4) text += "[[robot]]\nname = \"di\"\nstart = [3.0, 1.0]\nheading_deg = 180\n";
   return *worlds::parseWorld(text, "room.toml");
 }
 
@@ -270,6 +273,23 @@ TEST(Sandbox, RobotsOfOneRunShareNoProcess) {
   worlds::Run shared(room(2), {}, one->driver({0}, false));
   shared.runUntil(0.5);
   EXPECT_EQ(shared.recorder().steps().back().robots[1].wheels, (Wheels{0.2, 0.0}));
+}
+
+// Hosts and the grader wait for each other by spinning: where they cannot have a core each, the
+// hosts are kept off the grader's (host_cores.hpp), which would otherwise make it wait for its turn.
+TEST(Sandbox, HostsThatCannotHaveACoreEachLeaveTheGradersCoreToIt) {
+  cpu_set_t allowed;
+  CPU_ZERO(&allowed);
+  ASSERT_EQ(::sched_getaffinity(0, sizeof allowed, &allowed), 0);
+  const int cores = CPU_COUNT(&allowed);
+  const int left = cores >= 2 && cores <= 4 ? cores - 1 : cores;  // four hosts and the grader
+  Result<RobotHosts> hosts = RobotHosts::start({testing::hostileModule("counts_its_cores")}, {"counts_its_cores"}, {0}, 4);
+  ASSERT_TRUE(hosts.ok()) << hosts.error();
+  worlds::Run run(room(4), {}, hosts.value().driver(false));
+  run.runUntil(0.1);
+  ASSERT_TRUE(run.failures().empty()) << run.failures()[0].message;
+  for (std::size_t i = 0; i < 4; ++i)
+    EXPECT_EQ(run.recorder().steps().back().robots[i].wheels, (Wheels{0.01 * left, 0.0})) << "robot " << i << ", " << cores << " cores";
 }
 
 // Pictures are sampled in every run, filmed or not: a controller cannot drive one way for the film
