@@ -9,7 +9,6 @@
 #include "refusals.hpp"
 
 #include <dlfcn.h>
-#include <sched.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -163,7 +162,5 @@ int main(int argc, char** argv) {
     }
     header->activity = Activity::Waiting;
     ring(header->reply, ++sequence, kWakeFd);
-    // The next request comes after a step of the world: a host that shares a core lets the next one have it now.
-    ::sched_yield();
   }
 }

@@ -23,6 +23,22 @@ Status errorText(const char* what) { return Status::failure(std::string(what) + 
 
 void cpuRelax() { __builtin_ia32_pause(); }
 
+// Spins up to `nanoseconds` until `bell`'s sequence is `sequence`, looking `looks` times between
+// offers of the core to another process that wants it (on an idle core the offer returns at once).
+bool spin(const Doorbell& bell, std::uint32_t sequence, std::uint64_t nanoseconds, int looks) {
+  if (bell.sequence.load(std::memory_order_acquire) == sequence) return true;
+  if (nanoseconds == 0) return false;
+  const auto end = std::chrono::steady_clock::now() + std::chrono::nanoseconds(nanoseconds);
+  for (;;) {
+    for (int i = 0; i < looks; ++i) {
+      if (bell.sequence.load(std::memory_order_acquire) == sequence) return true;
+      cpuRelax();
+    }
+    if (std::chrono::steady_clock::now() >= end) return false;
+    ::sched_yield();
+  }
+}
+
 // The trusted side's mappings of channels, for the SIGBUS handler: a slot is in use while its end is set.
 struct GuardSlot {
   std::atomic<std::uintptr_t> begin{0}, end{0};
@@ -139,24 +155,12 @@ std::span<std::byte> Channel::replyArea(std::uint32_t robot) const {
   return {base_ + kHeaderBytes + setupBytes_ + robot * (inBytes_ + outBytes_) + inBytes_, outBytes_};
 }
 
-bool spinUntil(const Doorbell& bell, std::uint32_t sequence, std::uint64_t nanoseconds) {
-  if (bell.sequence.load(std::memory_order_acquire) == sequence) return true;
-  if (nanoseconds == 0) return false;
-  const auto end = std::chrono::steady_clock::now() + std::chrono::nanoseconds(nanoseconds);
-  for (;;) {
-    for (int i = 0; i < 64; ++i) {
-      if (bell.sequence.load(std::memory_order_acquire) == sequence) return true;
-      cpuRelax();
-    }
-    if (std::chrono::steady_clock::now() >= end) return false;
-    // Give the core away if another process wants it (the other side, on a crowded machine);
-    // on an idle one this returns at once.
-    ::sched_yield();
-  }
-}
+// The trusted side looks often between offers: its answer is due within a few microseconds.
+bool spinUntil(const Doorbell& bell, std::uint32_t sequence, std::uint64_t nanoseconds) { return spin(bell, sequence, nanoseconds, 64); }
 
 void waitFutex(Doorbell& bell, std::uint32_t sequence, std::uint64_t spinNanoseconds) {
-  if (spinUntil(bell, sequence, spinNanoseconds)) return;
+  // A host offers its core at every look: hosts that share a core hand it on to the one whose frame came.
+  if (spin(bell, sequence, spinNanoseconds, 1)) return;
   // Announce the sleep, then look again: a ring in between is seen here or wakes the futex,
   // whose value check fails at once when the sequence has already moved on.
   bell.sleeping.store(1, std::memory_order_seq_cst);

@@ -99,9 +99,11 @@ class Channel {
   std::uint32_t robots_ = 0;
 };
 
-/// Spins up to `nanoseconds` until `bell`'s sequence is `sequence`; true if it got there.
+/// Spins up to `nanoseconds` until `bell`'s sequence is `sequence` (offering the core now and then to
+/// another process that wants it); true if it got there.
 [[nodiscard]] bool spinUntil(const Doorbell& bell, std::uint32_t sequence, std::uint64_t nanoseconds);
-/// Sleeps on `bell` (a futex) until its sequence is `sequence`; spins first for `spinNanoseconds`.
+/// Sleeps on `bell` (a futex) until its sequence is `sequence`; spins first for `spinNanoseconds`,
+/// offering the core at every look.
 void waitFutex(Doorbell& bell, std::uint32_t sequence, std::uint64_t spinNanoseconds);
 /// Sets `bell` to `sequence` and wakes its waiter if it sleeps: on the futex, or by writing `eventFd`.
 void ring(Doorbell& bell, std::uint32_t sequence, int eventFd = -1);
