@@ -16,7 +16,9 @@ void keepGraderCore(std::span<const int> hosts) {
   if (::sched_getaffinity(0, sizeof allowed, &allowed) != 0) return;
   const std::optional<cpu_set_t> placed = hostCores(allowed, ::sched_getcpu(), hosts.size());
   if (!placed) return;
-  for (const int pid : hosts) ::sched_setaffinity(pid, sizeof *placed, &*placed);
+  for (const int pid : hosts) {
+    if (pid > 0) ::sched_setaffinity(pid, sizeof *placed, &*placed);  // 0 would be this thread
+  }
 }
 
 }  // namespace frob::course

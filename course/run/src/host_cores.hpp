@@ -16,8 +16,8 @@ namespace frob::course {
 /// (enough cores) or possible (one core, or the grader on none of the allowed ones).
 [[nodiscard]] std::optional<cpu_set_t> hostCores(const cpu_set_t& allowed, int graderCore, std::size_t hosts);
 
-/// Places the processes `hosts` as hostCores() says for the calling thread (best effort: a refusal
-/// leaves them where they are, slower but correct).
+/// Places the processes `hosts` (0: one that has ended) as hostCores() says for the calling thread
+/// (best effort: a refusal leaves them where they are, slower but correct).
 void keepGraderCore(std::span<const int> hosts);
 
 }  // namespace frob::course

@@ -50,7 +50,8 @@ class Sandboxed {
   Sandboxed(Sandboxed&& o) noexcept;
   Sandboxed& operator=(Sandboxed&& o) noexcept;
 
-  [[nodiscard]] pid_t pid() const { return pid_; }
+  /// Its process id; 0 once reaped, when the id may already be another process's.
+  [[nodiscard]] pid_t pid() const { return status_ == -1 ? pid_ : 0; }
   /// A pidfd, readable once the program has ended.
   [[nodiscard]] int pidfd() const { return pidfd_.get(); }
   /// The layers frob-sandbox applied.

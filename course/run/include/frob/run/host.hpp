@@ -63,7 +63,7 @@ class ControllerHost : public std::enable_shared_from_this<ControllerHost> {
   /// with `pictures`, each robot's picture is kept in the run's record (the host samples and sends
   /// it in every run, so that a controller cannot tell a filmed run). A host drives one run.
   [[nodiscard]] worlds::DriverFactory driver(std::vector<std::size_t> modulePerRobot, bool pictures);
-  /// The host's process id, for monitoring.
+  /// The host's process id, for monitoring; 0 once it has ended and been reaped.
   [[nodiscard]] int processId() const;
   /// Things worth saying that are not failures, e.g. that output was dropped.
   [[nodiscard]] std::vector<std::string> notes() const;
