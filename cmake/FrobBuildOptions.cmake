@@ -49,3 +49,10 @@ function(frob_add_library name)
   target_link_libraries(frob_${name} PUBLIC ${ARG_PUBLIC_LINKS} PRIVATE frob::build_options ${ARG_PRIVATE_LINKS})
   set_target_properties(frob_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
 endfunction()
+
+# frob_configure_depends_on_folder(dir): CMake runs again when a file is added to or removed from `dir`
+# (which changes the folder's time), for a file(GLOB) over it. Unlike CONFIGURE_DEPENDS, whose check
+# runs at every build, a build with nothing to do then does nothing.
+function(frob_configure_depends_on_folder dir)
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${dir}")
+endfunction()
