@@ -17,7 +17,8 @@ function(frob_add_test name)
 endfunction()
 
 # frob_add_benchmark(name SOURCES ... LIBS ...): a Google Benchmark executable. ctest runs it once
-# with a minimal time so that benchmarks keep building and running; figures come from running it
+# with a minimal time (and FROB_BENCH_SMOKE set: fixed counts drop to one, tests/bench/iterations.hpp)
+# so that benchmarks keep building and running; figures come from running it
 # by hand (see README). A benchmark that calls SkipWithError still exits 0, so the smoke test also
 # fails on the console reporter's "ERROR OCCURRED" line, and when the filter matches nothing.
 function(frob_add_benchmark name)
@@ -25,6 +26,6 @@ function(frob_add_benchmark name)
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_LIBS} frob::build_options benchmark::benchmark benchmark::benchmark_main)
   add_test(NAME ${name}.smoke COMMAND ${name} --benchmark_min_time=0.0001 --benchmark_filter=.)
-  set_tests_properties(${name}.smoke PROPERTIES TIMEOUT 300 LABELS bench
+  set_tests_properties(${name}.smoke PROPERTIES TIMEOUT 300 LABELS bench ENVIRONMENT FROB_BENCH_SMOKE=1
     FAIL_REGULAR_EXPRESSION "ERROR OCCURRED;Failed to match any benchmarks")
 endfunction()

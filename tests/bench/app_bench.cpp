@@ -2,6 +2,7 @@
 // running it again from the cache (no compile), and the README's first command, the BUG demo with
 // its video (target <= 10 s). Whole processes, wall time. Run by hand: build/tests/bench/app_bench
 #include "../app/run_frob.hpp"
+#include "iterations.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -31,7 +32,7 @@ void BM_CompileController(benchmark::State& state) {
     if (r.status != 0) return state.SkipWithError(r.err.c_str());
   }
 }
-BENCHMARK(BM_CompileController)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(3);
+BENCHMARK(BM_CompileController)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(bench::iterations(3));
 
 // The same file again: found in the cache, loaded, run 0.1 s.
 void BM_CachedController(benchmark::State& state) {
@@ -44,7 +45,7 @@ void BM_CachedController(benchmark::State& state) {
     if (r.status != 0) return state.SkipWithError(r.err.c_str());
   }
 }
-BENCHMARK(BM_CachedController)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
+BENCHMARK(BM_CachedController)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(bench::iterations(5));
 
 // `frob run` with no arguments: BUG in the obstacle field, simulated and written to bug.mp4.
 void BM_Demo(benchmark::State& state) {
@@ -54,7 +55,7 @@ void BM_Demo(benchmark::State& state) {
     if (r.status != 0) return state.SkipWithError(r.err.c_str());
   }
 }
-BENCHMARK(BM_Demo)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(3);
+BENCHMARK(BM_Demo)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(bench::iterations(3));
 
 }  // namespace
 }  // namespace frob::testing
