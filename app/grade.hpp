@@ -1,5 +1,6 @@
 #pragma once
 // frob grade's arguments and command (see grade.cpp).
+#include <cstdint>
 #include <string>
 #include <vector>
 
