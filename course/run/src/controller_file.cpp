@@ -262,8 +262,8 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
   program.files.read.push_back(absolute.parent_path().string());
   program.command.insert(program.command.end(), setup.flags.begin(), setup.flags.end());
   if (pch) program.command.insert(program.command.end(), {"-include-pch", setup.precompiledHeader});
-  // gold (binutils', as ld is) links a module in half the time of ld.bfd.
-  program.command.insert(program.command.end(), {"-fuse-ld=gold", "-shared", "-o", partial.string(), file.string()});
+  if (*FROB_CONTROLLER_LINKER != '\0') program.command.push_back(FROB_CONTROLLER_LINKER);  // gold where there is one
+  program.command.insert(program.command.end(), {"-shared", "-o", partial.string(), file.string()});
   for (const Companion& c : companions) {
     if (c.file.extension() == ".cpp") program.command.push_back(c.file.string());
   }
