@@ -107,13 +107,13 @@ std::string tooDeepMessage(const std::vector<std::string>& chain, int limit) {
          self + "()); instead: the new call then takes the old one's place.";
 }
 
-bool UsedOccurrences::fresh(const NodeBase* node, const Instant& at) const {
-  return instant_ != at.id || std::none_of(nodes_.begin(), nodes_.end(), [node](const auto& n) { return n.get() == node; });
+bool UsedOccurrences::fresh(const NodeBase* source, const Instant& at) const {
+  return instant_ != at.id || std::none_of(used_.begin(), used_.end(), [source](const auto& u) { return u.first == source; });
 }
 
-void UsedOccurrences::use(std::shared_ptr<NodeBase> node, const Instant& at) {
-  if (instant_ != at.id) nodes_.clear(), instant_ = at.id;
-  nodes_.push_back(std::move(node));
+void UsedOccurrences::use(const NodeBase* source, std::shared_ptr<NodeBase> carrier, const Instant& at) {
+  if (instant_ != at.id) used_.clear(), instant_ = at.id;
+  used_.emplace_back(source, std::move(carrier));
 }
 
 std::string endedOutputMessage(const std::string& task, double endedAt, double readAt) {

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
 namespace frob {
 namespace {
 
@@ -36,8 +39,10 @@ TEST(Transformers, AddErrorCoversEverySubtaskAndEndsWithTheWrappedTask) {
       caught = e.what();
     }
     EXPECT_EQ(caught, "scoped");
-    // A scope that ended no longer raises: its event at t = 0.1 after it began is ignored here.
-    co_await addError(after(0.1).map([] { return RoboErr("late"); }), drive(3, 0.05));
+    // The handler's tasks start at the error's instant, 0.25 s, though it is sampled at 0.3 s: this
+    // one ends at 0.35 s (sampled at 0.4 s). A scope that ended no longer raises: its event, due
+    // 0.2 s after it began (sampled at 0.5 s), is ignored here.
+    co_await addError(after(0.2).map([] { return RoboErr("late"); }), drive(3, 0.1));
     co_await drive(4, 1.0);
   };
   EXPECT_EQ(forwardOf(runTask(idleRobot(), seq()), 7), (std::vector<double>{1, 2, 2, 3, 4, 4, 4}));
@@ -80,6 +85,28 @@ TEST(Transformers, ARestartingHandlerRestartsOncePerOccurrenceOfAScopedError) {
   const std::vector<double> f = forwardOf(runTask(idleRobot(), std::move(t)), 8);
   EXPECT_EQ(f, (std::vector<double>{1, 1, 1, 2, 2, 2, 3, 3}));
   EXPECT_EQ(restarts, 2);
+}
+
+// One occurrence is delivered once whichever event carries it: each attempt builds its own error
+// event from the keyboard, as mkTaskE builds a task's events from its state. The key pressed at
+// 0.3 s fails the attempt running then; the attempt restarted in that instant does not see that
+// press again (it used to fail again and again, until "ended at its start more than 1000 times").
+TEST(Transformers, AnOccurrenceIsDeliveredOnceWhicheverEventCarriesIt) {
+  Robot r(nomadSpec(), ScriptedSensors{.keys = [](double t) { return std::abs(t - 0.3) < 1e-9 ? std::vector<char>{'x'} : std::vector<char>{}; }});
+  int restarts = 0;
+  auto attempts = [&restarts]() -> Task<Wheels> {
+    for (;;) {
+      try {
+        co_await mkTaskE([&restarts](const TaskState& ts) {
+          return std::tuple{wheels(1 + restarts, 0), never(), keyboard(ts.robot()).as(RoboErr("key"))};
+        });
+      } catch (const RoboErr&) {
+        ++restarts;
+      }
+    }
+  };
+  EXPECT_EQ(forwardOf(runTask(r, attempts()), 6), (std::vector<double>{1, 1, 1, 2, 2, 2}));
+  EXPECT_EQ(restarts, 1);
 }
 
 // Only an occurrence that ended or failed a task is used up: a time limit that expires in the

@@ -103,7 +103,8 @@ template <class T, class B>
   return Event<std::pair<T, U>>(detail::makeNode<detail::SnapshotNode<T, U>>(e.node(), toBehavior(b).node()));
 }
 
-/// Occurs once, `seconds` (>= 0) after it starts (its first sample).
+/// Occurs once, `seconds` (>= 0) after it starts: at the first sample where time() >= seconds holds
+/// for a behavior started with it, at the instant `seconds` after its start (it may be in between).
 [[nodiscard]] Event<Unit> after(double seconds);
 
 /// Occurs every `seconds` (> 0) after it starts, carrying how many periods have elapsed: 1, 2, 3, ...

@@ -12,7 +12,9 @@ namespace frob {
 namespace detail {
 
 // The behavior of a running task: each instant it checks the current atomic task's events,
-// moves on through as many tasks as end at this instant, then samples the current behavior.
+// moves on through as many tasks as end at this instant, then samples the current behavior. A task
+// starts at the instant of the event that ended the one before: when a timer's due time fell
+// between samples, that is its lag before this sample (the lag of the instant it is sampled at).
 template <class A, class B>
 class RunnerNode final : public BehaviorNode<A> {
  public:
@@ -45,7 +47,7 @@ class RunnerNode final : public BehaviorNode<A> {
     ctx_.now = &now;
     ctx_.time = now.time;
     // The common step: the current task goes on. Everything else is in advance().
-    if (AtomicBase<A>* atom = ctx_.current; atom != nullptr && ctx_.watchers.empty() && !ctx_.output) {
+    if (AtomicBase<A>* atom = ctx_.current; atom != nullptr && ctx_.watchers.empty() && !ctx_.output && now.lag == 0.0) {
       try {
         if (const A* out = atom->step(now)) {
           if constexpr (requires { isFinite(*out); }) {
@@ -68,9 +70,14 @@ class RunnerNode final : public BehaviorNode<A> {
   // then samples the current one; or the final behavior once the task is over.
   [[gnu::noinline]] A advance(const Instant& now, bool ended) {
     if (failure_) std::rethrow_exception(failure_);
+    // Only what starts at this instant starts before it: the run itself (at the lag it is sampled
+    // at), or a task after the event that ended the one before.
+    here_ = now;
+    if (started_) here_.lag = ended ? ctx_.current->endLag : 0.0;
+    ctx_.now = &here_;
     if (!started_) {
       started_ = true;
-      ctx_.snapshot(now);
+      ctx_.snapshot(here_);
       task_.startIn(slot_, &ctx_, std::noop_coroutine(), parentRecord_, nullptr).resume();
     }
     for (int transitions = 0;; ++transitions) {
@@ -79,8 +86,8 @@ class RunnerNode final : public BehaviorNode<A> {
       if (transitions > kMaxTransitionsPerInstant) fail(runawayMessage(*atom->name, now));
       if (!ended) {
         try {
-          if (const A* out = atom->step(now)) {
-            for (const auto& watch : ctx_.watchers) watch(now);
+          if (const A* out = atom->step(here_)) {
+            for (const auto& watch : ctx_.watchers) watch(here_);
             if constexpr (requires { isFinite(*out); }) {
               if (!isFinite(*out)) fail(nonFiniteMessage(*atom->name, printable(*out), now));
             }
@@ -92,10 +99,11 @@ class RunnerNode final : public BehaviorNode<A> {
         } catch (...) {
           atom->fail(std::current_exception());  // an event or behavior that throws fails its task
         }
+        here_.lag = atom->endLag;
       }
       ended = false;
       ctx_.current = nullptr;
-      ctx_.snapshot(now);
+      ctx_.snapshot(here_);
       atom->waiter.resume();
     }
   }
@@ -111,7 +119,7 @@ class RunnerNode final : public BehaviorNode<A> {
       std::string who = slot_.error == ctx_.origin ? ctx_.originTask : "the controller";
       fail("task '" + who + "' failed at t = " + seconds(now) + ": " + what);
     }
-    A out = final_.at(now);
+    A out = final_.at(here_);
     if (ctx_.output) ctx_.output->write(now, out);
     return out;
   }
@@ -144,6 +152,7 @@ class RunnerNode final : public BehaviorNode<A> {
   std::int64_t parentRecord_;
   bool holdRoboErrs_;
   std::optional<Instant> endedAt_;
+  Instant here_;  // the instant sampled, with the lag of what starts in it
   bool started_ = false;
   bool reported_ = false;
 };

@@ -97,6 +97,7 @@ struct AtomicBase {
   Behavior<A> output;              // its behavior, with the enclosing filters applied
   std::coroutine_handle<> waiter;  // resumed when it ends
   const std::string* name = nullptr;
+  double endLag = 0.0;  // how long before the sample the occurrence that ended it happened (its Origin's lag)
   // Its output at `now`, or null when it ended at `now` (its result or error is then stored).
   virtual const A* step(const Instant& now) = 0;
   virtual void fail(std::exception_ptr e) = 0;  // ends it with an error
@@ -107,18 +108,20 @@ struct AtomicBase {
 };
 
 // One occurrence is delivered once: an occurrence that ended or failed a task of a run (its exit,
-// its error or a scope's) is not seen again by a task started in the same instant. Compiled once in
-// libfrob, so that no controller instantiates it.
+// its error or a scope's) is not seen again by a task started in the same instant, whichever event
+// carries it (its Origin's source: an error event rebuilt by the next task from the same sensor
+// carries the same occurrence). Compiled once in libfrob, so that no controller instantiates it.
 class UsedOccurrences {
  public:
-  // Whether event node `node`'s occurrence at `at` has not ended or failed a task yet.
-  [[nodiscard]] bool fresh(const NodeBase* node, const Instant& at) const;
-  // Marks it used; holds the node so that no new node takes its address within the instant.
-  void use(std::shared_ptr<NodeBase> node, const Instant& at);
+  // Whether the occurrence from `source` at `at` has not ended or failed a task yet.
+  [[nodiscard]] bool fresh(const NodeBase* source, const Instant& at) const;
+  // Marks it used; holds `carrier`, the event it came by, which holds its source, so that no new
+  // node takes the source's address within the instant.
+  void use(const NodeBase* source, std::shared_ptr<NodeBase> carrier, const Instant& at);
 
  private:
   std::uint64_t instant_ = 0;
-  std::vector<std::shared_ptr<NodeBase>> nodes_;
+  std::vector<std::pair<const NodeBase*, std::shared_ptr<NodeBase>>> used_;
 };
 
 // What every frame of one runTask shares.
@@ -139,11 +142,12 @@ struct RunContext {
   std::int64_t nextScope = 0;
   UsedOccurrences used;  // one occurrence is delivered once
 
-  // The paper's snapRobot: record where the robot is as one task ends and the next begins.
+  // The paper's snapRobot: record where the robot is as one task ends and the next begins, at the
+  // instant of the event that ended it (`at`'s lag before the sample).
   void snapshot(const Instant& at) {
     now = &at;
-    time = at.time;
-    state.setInitialPlace(state.robot().place().at(at)).setInitialOrientation(state.robot().orientation().at(at)).setStartTime(at.time);
+    time = at.time - at.lag;
+    state.setInitialPlace(state.robot().place().at(at)).setInitialOrientation(state.robot().orientation().at(at)).setStartTime(time);
   }
   // The run's output one instant late (withMyResult, withTask); the runner records it from now on.
   Behavior<A> delayedOutput() {
@@ -436,8 +440,8 @@ class AtomicAwaiter final : public AtomicBase<A> {
   const A* step(const Instant& now) override {
     if (!error_ && ctx_->interrupts.empty()) {  // the common case, kept short: it runs every step
       if (!exitNever_) {
-        if (const std::optional<E>& exit = exit_.at(now); exit && ctx_->used.fresh(exit_.node().get(), now)) {
-          ctx_->used.use(exit_.node().owner(), now);
+        if (const std::optional<E>& exit = exit_.at(now); exit && ctx_->used.fresh(exit_.node()->origin().source, now)) {
+          use(exit_, now);
           result_ = *exit;
           return nullptr;
         }
@@ -446,14 +450,24 @@ class AtomicAwaiter final : public AtomicBase<A> {
     }
     return check(now) ? nullptr : &this->output.at(now);
   }
-  void fail(std::exception_ptr e) override { failure_ = std::move(e); }
+  void fail(std::exception_ptr e) override {
+    failure_ = std::move(e);
+    this->endLag = 0.0;  // at the sample that threw
+  }
 
  private:
   // The occurrence of `e` at `now` unless it already ended or failed a task of this run.
   template <class T>
   const std::optional<T>* occurrence(const Event<T>& e, const Instant& now) const {
     const std::optional<T>& o = e.at(now);
-    return o && ctx_->used.fresh(e.node().get(), now) ? &o : nullptr;
+    return o && ctx_->used.fresh(e.node()->origin().source, now) ? &o : nullptr;
+  }
+  // Uses up `e`'s occurrence at `now`, which ends this task then.
+  template <class T>
+  void use(const Event<T>& e, const Instant& now) {
+    const Origin& o = e.node()->origin();
+    ctx_->used.use(o.source, e.node().owner(), now);
+    this->endLag = o.lag;
   }
 
   bool check(const Instant& now) {
@@ -469,13 +483,13 @@ class AtomicAwaiter final : public AtomicBase<A> {
       if (o && interrupt == nullptr) interrupt = o, scope = &*it;
     }
     if (exit) {
-      ctx_->used.use(exit_.node().owner(), now);
+      use(exit_, now);
       result_ = **exit;
     } else if (error) {
-      ctx_->used.use(error_->node().owner(), now);
+      use(*error_, now);
       failure_ = std::make_exception_ptr(**error);
     } else if (interrupt) {
-      ctx_->used.use(scope->node().owner(), now);
+      use(*scope, now);
       failure_ = **interrupt;
     } else {
       return false;
