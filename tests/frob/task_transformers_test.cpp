@@ -329,3 +329,119 @@ TEST(Transformers, AbortedTasksFreeTheirFramesAndBehaviors) {
 
 }  // namespace
 }  // namespace frob
+
+namespace frob {
+namespace {
+
+Task<Wheels> failing(double seconds) {
+  return mkTaskE([=](const TaskState&) { return std::tuple{wheels(-1, 0), never(), after(seconds).as(RoboErr("lost"))}; });
+}
+
+// The paper's bug as course/examples/06_bug.cpp writes it: an attempt becomes goAround, which
+// becomes bug again, inside the attempt's taskCatch; every third attempt fails and the handler
+// restarts bug. Each round's taskCatch has the same handler, so it folds into the one it runs in.
+Task<Wheels> bugShape(int* rounds);
+Task<Wheels> goAroundShape(int* rounds) {
+  co_await drive(1, 0.1);
+  co_await become(bugShape(rounds));
+}
+Task<Wheels> attemptShape(int* rounds) {
+  if (++*rounds % 3 == 0) co_await failing(0.1);
+  co_await drive(2, 0.1);
+  co_await become(goAroundShape(rounds));
+}
+Task<Wheels> bugShape(int* rounds) {
+  return taskCatch(attemptShape(rounds), [rounds](const RoboErr&) { return bugShape(rounds); });
+}
+
+// Each round nested one more taskCatch: 582 live frames after 60 s, and the run stopped at 1,000.
+// Now 10,000 rounds (about 1,700 s) keep the frames and nodes of one round: the taskCatch, the
+// attempt or goAround, the atomic task.
+TEST(Transformers, BugRestartingItselfInsideTaskCatchRunsInBoundedDepthAndMemory) {
+  const long frames0 = liveTaskFrames(), nodes0 = liveNodeCount();
+  int rounds = 0;
+  long maxFrames = 0, maxNodes = 0;
+  {
+    Robot r = idleRobot();
+    Behavior<Wheels> c = runTask(r, bugShape(&rounds));
+    Clock clock(0.1);
+    for (std::int64_t i = 0; rounds <= 10'000; ++i) {
+      ASSERT_EQ(c.at(i == 0 ? clock.now() : clock.advance()).forward == 0, false) << "stopped at round " << rounds;
+      maxFrames = std::max(maxFrames, liveTaskFrames() - frames0);
+      maxNodes = std::max(maxNodes, liveNodeCount() - nodes0);
+      if (i % 1000 == 0) r.debugChannel()->timeline().drainEnded();
+    }
+  }
+  EXPECT_LE(maxFrames, 4);
+  EXPECT_LE(maxNodes, 40);
+  EXPECT_EQ(liveTaskFrames(), frames0);
+}
+
+// Folding keeps the meaning of nesting: a taskCatch whose task became another with the same
+// handler handles two errors, the second raised by the handler's own task, as two nested ones do.
+Task<Wheels> guarded(Task<Wheels> t, int* calls) {
+  return taskCatch(std::move(t), [calls](const RoboErr&) {
+    ++*calls;
+    return failing(0.1);
+  });
+}
+Task<Wheels> thenGuarded(int* calls) {
+  co_await drive(1, 0.1);
+  co_await become(guarded(failing(0.1), calls));
+}
+
+TEST(Transformers, AFoldedTaskCatchHandlesAsManyErrorsAsTheNestedOnes) {
+  int calls = 0;
+  std::string failure;
+  try {
+    (void)forwardOf(runTask(idleRobot(), guarded(thenGuarded(&calls), &calls)), 6);
+  } catch (const FrobError& e) {
+    failure = e.what();
+  }
+  EXPECT_EQ(calls, 2);  // at 0.2 s and at 0.3 s; the third error, at 0.4 s, ends the run
+  EXPECT_NE(failure.find("failed at t = 0.400 s: error: lost"), std::string::npos) << failure;
+}
+
+// Handlers that differ (another captured value) do not fold: the inner one handles first.
+TEST(Transformers, TaskCatchesWithDifferentHandlersStayNested) {
+  std::vector<int> handled;
+  auto tagged = [&handled](Task<Wheels> t, int tag) {
+    return taskCatch(std::move(t), [&handled, tag](const RoboErr&) {
+      handled.push_back(tag);
+      return failing(0.1);
+    });
+  };
+  auto body = [&tagged]() -> Task<Wheels> {
+    co_await drive(1, 0.1);
+    co_await become(tagged(failing(0.1), 2));
+  };
+  EXPECT_THROW((void)forwardOf(runTask(idleRobot(), tagged(body(), 1)), 6), FrobError);
+  EXPECT_EQ(handled, (std::vector<int>{2, 1}));
+}
+
+// A handler that differs each round (it captures the round's number) cannot fold: the rounds nest
+// until the run stops at 1,000, with a message that names the taskCatch and what to capture instead
+// (it used to advise `co_await become(taskCatch(countingAttempt)());`, which is not C++).
+Task<Wheels> countingBug(int round);
+Task<Wheels> countingAttempt(int round) {
+  co_await drive(1, 0.1);
+  co_await become(countingBug(round + 1));
+}
+Task<Wheels> countingBug(int round) {
+  return taskCatch(countingAttempt(round), [round](const RoboErr&) { return countingBug(round + 1); });
+}
+
+TEST(Transformers, ATaskCatchThatCannotFoldStopsWithAHintThatNamesIt) {
+  std::string failure;
+  try {
+    (void)sample(runTask(idleRobot(), countingBug(0)), 0.1, 2000);
+  } catch (const FrobError& e) {
+    failure = e.what();
+  }
+  EXPECT_NE(failure.find("the taskCatch(countingAttempt) made at task_transformers_test.cpp:"), std::string::npos) << failure;
+  EXPECT_NE(failure.find("[g](const RoboErr&) { return bug(g); }"), std::string::npos) << failure;
+  EXPECT_EQ(failure.find("become(taskCatch("), std::string::npos) << failure;
+}
+
+}  // namespace
+}  // namespace frob

@@ -75,6 +75,7 @@ class [[nodiscard("a Task does nothing unless you co_await it")]] Task {
 
  private:
   friend promise_type;
+  friend detail::Catcher<A, B>;
   explicit Task(std::coroutine_handle<promise_type> h) : handle_(h) {}
   void reset() {
     if (handle_) handle_.destroy();

@@ -29,7 +29,10 @@ namespace frob {
 
 /// The paper's taskCatch: runs `t`; if it fails with a RoboErr, becomes `handler(error)`.
 /// The handler takes this task's place (a tail call), so a task that restarts itself from its
-/// handler, as the paper's `bug` does, runs in constant memory. The RoboErrs it sees: taskError,
+/// handler, as the paper's `bug` does, runs in constant memory. A taskCatch whose task becomes a
+/// taskCatch with the same handler (the same lambda capturing equal values: `bug` restarting after
+/// a round) folds into it instead of nesting, with the meaning of nesting: one more error handled
+/// before one escapes. So the restart runs in bounded depth. The RoboErrs it sees: taskError,
 /// a mkTaskE error event, an enclosing addError's event, and withExit's "ended before its withExit
 /// event" (a mistake in the task's logic). A timeLimit's timeout is not one: it ends the timeLimit
 /// with std::nullopt, whatever handlers lie between. The occurrence that failed `t` is not seen
@@ -38,7 +41,8 @@ template <class A, class B, class H>
   requires std::invocable<H&, const RoboErr&>
 [[nodiscard]] Task<A, B> taskCatch(Task<A, B> t, H handler, std::source_location loc = detail::callSite()) {
   std::string inner = t.name();
-  return detail::catching(std::move(t), detail::Erased<Task<A, B>, const RoboErr&>(std::move(handler))).at(loc).named("taskCatch(" + inner + ")");
+  auto c = std::make_unique<detail::Catcher<A, B>>(detail::Erased<Task<A, B>, const RoboErr&>(std::move(handler)), sizeof(H), std::move(t));
+  return detail::catching(std::move(c)).at(loc).named("taskCatch(" + inner + ")");
 }
 
 /// The paper's addError: `error` fails every subtask of `t` while `t` runs (scoped), with a

@@ -47,8 +47,9 @@ extern std::atomic<long> liveFrames;
 // How deep tasks may await one another in one run; only a recursion that never unwinds gets there.
 inline constexpr int kMaxTaskDepth = 1000;
 // Why a run stopped with tasks nested deeper than `limit`: `chain`, innermost first, names the
-// tasks, and the one most often in it is the recursion, shown with its fix (become).
-[[nodiscard]] std::string tooDeepMessage(const std::vector<std::string>& chain, int limit);
+// tasks and where each was made, and the one most often in it is the recursion, shown with its fix
+// (become; for a taskCatch, a handler that stays the same).
+[[nodiscard]] std::string tooDeepMessage(const std::vector<std::pair<std::string, std::string>>& chain, int limit);
 // The robot error `e` holds, if it is one (only a RoboErr is; a std::logic_error is a bug).
 [[nodiscard]] std::optional<RoboErr> roboErrIn(const std::exception_ptr& e);
 
@@ -213,9 +214,9 @@ struct PromiseBase {
   }
 
   [[gnu::noinline, noreturn]] void throwTooDeep() const {
-    std::vector<std::string> chain;
+    std::vector<std::pair<std::string, std::string>> chain;
     for (const PromiseBase* p = this; p != nullptr; p = p->caller) {
-      if (!p->quiet) chain.push_back(p->name);
+      if (!p->quiet) chain.emplace_back(p->name, p->where);
     }
     throw FrobError(tooDeepMessage(chain, kMaxTaskDepth));
   }
@@ -229,6 +230,7 @@ struct PromiseBase {
   std::int64_t record = -1;
   std::int64_t parentRecord = -1;
   bool quiet = false;
+  void* catcher = nullptr;  // the Catcher<A, B> (of its B) of a taskCatch's frame
 };
 
 // Resumes whoever awaited the task (the parent, or the runner through a no-op handle).
@@ -270,6 +272,31 @@ template <class A, class B>
 struct Become {
   Task<A, B> task;
 };
+
+// A taskCatch (see catching): its handler, the task it is to run in its scope, and how many nested
+// taskCatches with this same handler it stands for. A taskCatch whose task becomes (or whose
+// handler gives) a taskCatch with the same handler, as the paper's bug restarting itself does,
+// folds that one into it instead of nesting it, with the same meaning: one layer handles an error,
+// and its handler's task runs inside the layers left. So the restart runs in bounded depth.
+template <class A, class B>
+struct Catcher {
+  Catcher(Erased<Task<A, B>, const RoboErr&> h, std::size_t size, Task<A, B> t) : handler(std::move(h)), handlerSize(size), body(std::move(t)) {}
+  // `t`, or if it is a taskCatch with the same handler, its task (and so on), its layers added here.
+  Task<A, B> absorb(Task<A, B> t) {
+    for (auto* c = static_cast<Catcher*>(t.handle_.promise().catcher); c != nullptr && c->handler.sameAs(handler, handlerSize);
+         c = static_cast<Catcher*>(t.handle_.promise().catcher)) {
+      layers += c->layers;
+      Task<A, B> inner = std::move(*c->body);
+      t = std::move(inner);  // frees the folded taskCatch, which never ran
+    }
+    return t;
+  }
+
+  Erased<Task<A, B>, const RoboErr&> handler;
+  std::size_t handlerSize;  // bytes of its closure
+  std::optional<Task<A, B>> body;
+  std::int64_t layers = 1;
+};
 struct GetContext {};
 struct GetRecord {};
 struct SetState {
@@ -293,6 +320,8 @@ class TaskPromise : public PromiseBase<A>,
  public:
   using R = ResultOf<B>;
   explicit TaskPromise(std::source_location loc = detail::callSite()) : PromiseBase<A>(loc) {}
+  // A taskCatch's frame, given its Catcher (catching's parameter), which it stays known by.
+  explicit TaskPromise(std::unique_ptr<Catcher<A, B>>& c) : PromiseBase<A>(std::source_location::current()) { this->catcher = c.get(); }
 
   Task<A, B> get_return_object() { return Task<A, B>(std::coroutine_handle<TaskPromise>::from_promise(*this)); }
   std::suspend_always initial_suspend() noexcept { return {}; }
@@ -390,12 +419,14 @@ template <class A, class B>
 auto TaskPromise<A, B>::await_transform(Become<A, B>&& b) {
   // A tail call: the new task takes this frame's place (its slot, parent and owner) and this
   // frame is destroyed, so recursion such as runAround calling itself runs in bounded memory.
+  // Becoming a taskCatch as a taskCatch's task, it folds into that one if it has the same handler.
   struct Awaiter {
     Task<A, B> next;
     bool await_ready() noexcept { return false; }
     std::coroutine_handle<> await_suspend(std::coroutine_handle<TaskPromise> self) {
       TaskPromise& p = self.promise();
       p.end(TaskEnd::Replaced, "became " + next.name());
+      if (p.caller != nullptr && p.caller->catcher != nullptr) next = static_cast<Catcher<A, B>*>(p.caller->catcher)->absorb(std::move(next));
       ResultSlot<R>& mine = *p.slot;
       std::coroutine_handle<> h = next.startIn(mine, p.ctx, p.continuation, p.parentRecord, p.caller);
       self.destroy();  // destroys this awaiter too: nothing of it is touched after this line
