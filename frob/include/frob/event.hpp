@@ -69,7 +69,9 @@ class Event {
   detail::NodeRef<detail::EventNode<T>> node_;
 };
 
-/// The paper's `e .|. e'`: occurrences of either; when both occur at the same instant, `a`'s wins.
+/// The paper's `e .|. e'`: occurrences of either; when both occur at the same instant, `a`'s wins
+/// and `b`'s is not in it: `(a | b).filter(p)` drops that instant if `a`'s value fails `p`, where
+/// `a.filter(p) | b.filter(p)` keeps `b`'s (filter each side to keep both).
 template <class T>
 [[nodiscard]] Event<T> operator|(const Event<T>& a, const Event<T>& b) {
   return Event<T>(detail::makeNode<detail::OrNode<T>>(a.node(), b.node()));

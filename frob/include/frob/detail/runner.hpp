@@ -41,6 +41,13 @@ class RunnerNode final : public BehaviorNode<A> {
   [[nodiscard]] const std::optional<Instant>& endedAt() const { return endedAt_; }
   /// The name of the task it runs.
   [[nodiscard]] const std::string& taskName() const { return name_; }
+  /// Records the run's output from its first sample on, for lastOutput.
+  void recordOutput() { (void)ctx_.delayedOutput(); }
+  /// At the instant the task ended, its output at the sample before (none if it ended as it began).
+  [[nodiscard]] std::optional<A> lastOutput(const Instant& now) const {
+    if (!endedAt_ || endedAt_->id != now.id || startedAt_ == now.id || !ctx_.output) return std::nullopt;
+    return ctx_.output->delayed(now);
+  }
 
  protected:
   A compute(const Instant& now) override {
@@ -77,6 +84,7 @@ class RunnerNode final : public BehaviorNode<A> {
     ctx_.now = &here_;
     if (!started_) {
       started_ = true;
+      startedAt_ = now.id;
       ctx_.snapshot(here_);
       task_.startIn(slot_, &ctx_, std::noop_coroutine(), parentRecord_, nullptr).resume();
     }
@@ -153,6 +161,7 @@ class RunnerNode final : public BehaviorNode<A> {
   bool holdRoboErrs_;
   std::optional<Instant> endedAt_;
   Instant here_;  // the instant sampled, with the lag of what starts in it
+  std::uint64_t startedAt_ = 0;
   bool started_ = false;
   bool reported_ = false;
 };

@@ -39,6 +39,10 @@ namespace detail {
 
 extern std::atomic<long> liveFrames;
 
+// False for every T: a static_assert that fires only when the template holding it is instantiated.
+template <class T>
+inline constexpr bool kNever = false;
+
 // "frob::Task<frob::Wheels> goAhead()" -> "goAhead"; file and line as "file.cpp:12".
 [[nodiscard]] std::string taskName(const char* functionName);
 [[nodiscard]] std::string taskWhere(const std::source_location& loc);
@@ -268,6 +272,28 @@ struct Raise {
 
 template <class A, class B>
 struct SubtaskAwaiter;
+// What co_await of something a task cannot await gives: its type is needed at the co_await, so its
+// message is the first error there, not one about awaiting a void.
+template <class X>
+struct NotAwaitable {
+  static_assert(kNever<X>,
+                "a Task<A, B> can co_await only tasks that drive the same output type A, getTaskState(), "
+                "setTaskState(ts), become(task) and taskError(error)");
+  bool await_ready() noexcept { return true; }
+  void await_suspend(std::coroutine_handle<>) noexcept {}
+  void await_resume() noexcept {}
+};
+// The same for a task driving another output A2.
+template <class A2>
+struct OtherOutput {
+  static_assert(kNever<A2>,
+                "co_await: this task drives another output than the task that awaits it (a Task<double> inside a "
+                "Task<Wheels>?): a task awaits only tasks of its own output; to compute a value, return it as the "
+                "result (Task<Wheels, double>, co_return x), or run the other task beside it with withTask");
+  bool await_ready() noexcept { return true; }
+  void await_suspend(std::coroutine_handle<>) noexcept {}
+  void await_resume() noexcept {}
+};
 template <class A, class B>
 struct Become {
   Task<A, B> task;
@@ -380,11 +406,17 @@ class TaskPromise : public PromiseBase<A>,
     };
     return Ref{&atom};
   }
+  template <class A2, class B2>
+  OtherOutput<A2> await_transform(Task<A2, B2>&&) {
+    return {};
+  }
+  template <class A2, class B2>
+  OtherOutput<A2> await_transform(Task<A2, B2>&) {
+    return {};
+  }
   template <class X>
-  void await_transform(X&&) {
-    static_assert(sizeof(X) == 0,
-                  "a Task<A, B> can co_await only tasks that drive the same output type A, getTaskState(), "
-                  "setTaskState(ts), become(task) and taskError(error)");
+  NotAwaitable<std::remove_cvref_t<X>> await_transform(X&&) {
+    return {};
   }
   auto await_transform(Raise r) { return r; }
 
@@ -585,9 +617,6 @@ template <class F>
 using MkTaskExit = typename EventValue<std::remove_cvref_t<std::tuple_element_t<1, MkTaskParts<F>>>>::type;
 template <class F>
 using MkTaskResult = std::conditional_t<std::is_same_v<MkTaskExit<F>, Unit>, void, MkTaskExit<F>>;
-
-template <class T>
-inline constexpr bool kNever = false;
 
 // Whether mkTask's function returns {behavior, event[, error event]}; if not, a compile error that
 // says what is wrong in the student's words, instead of one from deep inside the library.
