@@ -20,21 +20,30 @@ std::atomic<long> liveNodes{0};
 std::atomic<std::uint64_t> planCutShort{0};
 
 std::optional<std::int64_t> TimerNode::compute(const Instant& now) {
-  double local = start_.local(now);
   if (!repeat_ && fired_ > 0) return std::nullopt;
+  double local = start_.local(now);
+  // The occurrence's lag: how long ago the due time `due` passed. Below a nanosecond it is rounding
+  // (the due time is this sample), so that a task started then counts whole steps from it.
+  auto occurAfter = [this, local](double due) {
+    double lag = local - due;
+    origin_.lag = lag < 1e-9 ? 0.0 : lag;
+    return fired_;
+  };
+  if (!repeat_) {
+    // Exactly when time() >= period first holds for a behavior started with this timer.
+    if (local < period_) return std::nullopt;
+    fired_ = 1;
+    return occurAfter(period_);
+  }
   // A tolerance far below any step keeps t = k × period from being missed by rounding.
   auto due = [this](std::int64_t k) { return static_cast<double>(k) * period_; };
   auto reached = [&](std::int64_t k) { return local + 1e-9 * (1.0 + due(k)) >= due(k); };
   if (!reached(fired_ + 1)) return std::nullopt;
-  // Every period elapsed since the last occurrence counts, however many fit in one step (a one-shot
-  // timer, whose period may be 0, occurs once).
-  std::int64_t k = fired_ + 1;
-  if (repeat_) {
-    k = std::max(k, static_cast<std::int64_t>(std::floor(local / period_)));
-    if (reached(k + 1)) ++k;
-  }
+  // Every period elapsed since the last occurrence counts, however many fit in one step.
+  std::int64_t k = std::max(fired_ + 1, static_cast<std::int64_t>(std::floor(local / period_)));
+  if (reached(k + 1)) ++k;
   fired_ = k;
-  return fired_;
+  return occurAfter(due(k));
 }
 }  // namespace detail
 

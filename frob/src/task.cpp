@@ -92,28 +92,37 @@ std::string typeNameIn(std::string_view signature) {
   return name;
 }
 
-std::string tooDeepMessage(const std::vector<std::string>& chain, int limit) {
+std::string tooDeepMessage(const std::vector<std::pair<std::string, std::string>>& chain, int limit) {
   std::map<std::string, int> count;
-  for (const std::string& name : chain) ++count[name];
-  std::string self = chain.empty() ? std::string("the task") : chain.front();
+  std::map<std::string, std::string> where;
+  for (const auto& [name, at] : chain) ++count[name], where.emplace(name, at);
+  std::string self = chain.empty() ? std::string("the task") : chain.front().first;
   for (const auto& [name, n] : count) {
     if (n > count[self]) self = name;
   }
+  std::string nested =
+      "is running inside itself " + std::to_string(count[self]) + " times over (tasks nested more than " + std::to_string(limit) + " deep)";
+  if (self.starts_with("taskCatch(")) {
+    return "the " + self + " made at " + where[self] + " " + nested +
+           ": each round's taskCatch runs inside the one before, since its handler differs from that one's, so an error that its "
+           "handler's task raises would reach the one before too. A taskCatch whose task becomes one with the same handler (the "
+           "same lambda, capturing equal values) folds into it instead: capture only what stays the same from round to round, "
+           "as in [g](const RoboErr&) { return bug(g); }, and no counter or container.";
+  }
   std::string call = "co_await " + self + "();";
-  return "task '" + self + "' is running inside itself " + std::to_string(count[self]) + " times over (tasks nested " + "more than " +
-         std::to_string(limit) + " deep): a task that ends with " + call +
+  return "task '" + self + "' " + nested + ": a task that ends with " + call +
          " waits for that call, so every earlier call stays in memory for as long as the robot runs. End it with "
          "co_await become(" +
          self + "()); instead: the new call then takes the old one's place.";
 }
 
-bool UsedOccurrences::fresh(const NodeBase* node, const Instant& at) const {
-  return instant_ != at.id || std::none_of(nodes_.begin(), nodes_.end(), [node](const auto& n) { return n.get() == node; });
+bool UsedOccurrences::fresh(const NodeBase* source, const Instant& at) const {
+  return instant_ != at.id || std::none_of(used_.begin(), used_.end(), [source](const auto& u) { return u.first == source; });
 }
 
-void UsedOccurrences::use(std::shared_ptr<NodeBase> node, const Instant& at) {
-  if (instant_ != at.id) nodes_.clear(), instant_ = at.id;
-  nodes_.push_back(std::move(node));
+void UsedOccurrences::use(const NodeBase* source, std::shared_ptr<NodeBase> carrier, const Instant& at) {
+  if (instant_ != at.id) used_.clear(), instant_ = at.id;
+  used_.emplace_back(source, std::move(carrier));
 }
 
 std::string endedOutputMessage(const std::string& task, double endedAt, double readAt) {

@@ -36,6 +36,8 @@ TEST(Calculus, IntegralOfAVector) {
   EXPECT_NEAR(s[4].y(), -4.0, 1e-12);
 }
 
+// Decided (frob/README.md, "Cases the paper leaves open"): a derivative reads 0 at its first
+// sample, as though its behavior had held its first value since its start (as integral takes it).
 TEST(Calculus, DerivativeIsZeroAtTheStartThenTheBackwardDifference) {
   Behavior<double> t = time();
   std::vector<double> s = sample(derivative(t * t), 0.01, 101);

@@ -61,6 +61,19 @@ TEST(Event, OnSimultaneousOccurrencesTheLeftEventWins) {
   EXPECT_EQ(occ[1].second, 1);
 }
 
+// Decided (frob/README.md, "Cases the paper leaves open"): at an instant where both occur, `a | b`
+// is a's occurrence alone (the paper: "taking the first one to occur"), so a filter after it sees
+// only a's; filtering each side first keeps b's.
+TEST(Event, AFilterAfterAnOrSeesOnlyTheWinnerOfATie) {
+  auto a = [] { return after(0.3).as(1); };
+  auto b = [] { return after(0.3).as(2); };
+  auto isTwo = [](int v) { return v == 2; };
+  EXPECT_TRUE(occurrences((a() | b()).filter(isTwo), 0.1, 5).empty());
+  auto kept = occurrences(a().filter(isTwo) | b().filter(isTwo), 0.1, 5);
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_EQ(kept[0].second, 2);
+}
+
 TEST(Event, FilterAndOnce) {
   Event<std::int64_t> ticks = every(0.1);
   auto even = occurrences(ticks.filter([](std::int64_t k) { return k % 2 == 0; }), 0.1, 10);

@@ -86,7 +86,22 @@ TEST(Parallel, WithTaskReadingTheFirstsOutputAfterItsEndIsAnError) {
   } catch (const FrobError& e) {
     message = e.what();
   }
-  EXPECT_NE(message.find("withTask: task 'drive' ended at t = 0.300 s, and its output was read at t = 0.300 s"), std::string::npos) << message;
+  EXPECT_NE(message.find("withTask: task 'drive' ended at t = 0.300 s, and its output was read at t = 0.400 s"), std::string::npos) << message;
+}
+
+// Decided (frob/README.md, "Cases the paper leaves open"): the paper makes reading t1's output an
+// error "after this event"; at the instant of its end it is still t1's last output, so
+// snapshot(t1e, t1b) gives what t1 drove until it ended.
+TEST(Parallel, WithTaskSnapshotOfTheFirstsOutputAtItsEndGivesItsLastOutput) {
+  std::optional<double> last;
+  auto t = withTask([](Behavior<Wheels>) { return drive(5.5, 0.3); },
+                    [&last](Behavior<Wheels> first, Event<Outcome<void>> end) -> Task<Wheels> {
+                      last = co_await mkTask([first, end](const TaskState&) {
+                        return std::pair{wheels(1, 0), snapshot(end, first).map([](const auto& p) { return p.second.forward; })};
+                      });
+                    });
+  (void)run(std::move(t), 6);
+  EXPECT_EQ(last, 5.5);
 }
 
 // Issue 15: generic lambdas for both; the first's argument is then a Behavior<Wheels>.

@@ -19,6 +19,16 @@ TEST(Switching, UntilBSwitchesAtTheEventAndStartsTheNewBehaviorThere) {
   EXPECT_NEAR(s[5], 0.2, 1e-12);
 }
 
+// The switch starts the new behavior at the event's instant, which may fall between samples:
+// after(0.25) is sampled at 0.3 s, and the time() switched in there reads 0.05 s.
+TEST(Switching, UntilBStartsTheNewBehaviorAtTheEventsInstantBetweenSamples) {
+  Behavior<double> b = untilB(constant(-1.0), after(0.25).map([] { return time(); }));
+  std::vector<double> s = sample(b, 0.1, 5);
+  EXPECT_EQ(s[2], -1.0);
+  EXPECT_NEAR(s[3], 0.05, 1e-12);
+  EXPECT_NEAR(s[4], 0.15, 1e-12);
+}
+
 TEST(Switching, AnIntegralSwitchedInStartsAtTheSwitch) {
   // Built before the switch, but first sampled at t = 2: it integrates from there.
   Behavior<double> rate = 1.0;

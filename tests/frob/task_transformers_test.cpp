@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
 namespace frob {
 namespace {
 
@@ -36,8 +39,10 @@ TEST(Transformers, AddErrorCoversEverySubtaskAndEndsWithTheWrappedTask) {
       caught = e.what();
     }
     EXPECT_EQ(caught, "scoped");
-    // A scope that ended no longer raises: its event at t = 0.1 after it began is ignored here.
-    co_await addError(after(0.1).map([] { return RoboErr("late"); }), drive(3, 0.05));
+    // The handler's tasks start at the error's instant, 0.25 s, though it is sampled at 0.3 s: this
+    // one ends at 0.35 s (sampled at 0.4 s). A scope that ended no longer raises: its event, due
+    // 0.2 s after it began (sampled at 0.5 s), is ignored here.
+    co_await addError(after(0.2).map([] { return RoboErr("late"); }), drive(3, 0.1));
     co_await drive(4, 1.0);
   };
   EXPECT_EQ(forwardOf(runTask(idleRobot(), seq()), 7), (std::vector<double>{1, 2, 2, 3, 4, 4, 4}));
@@ -80,6 +85,28 @@ TEST(Transformers, ARestartingHandlerRestartsOncePerOccurrenceOfAScopedError) {
   const std::vector<double> f = forwardOf(runTask(idleRobot(), std::move(t)), 8);
   EXPECT_EQ(f, (std::vector<double>{1, 1, 1, 2, 2, 2, 3, 3}));
   EXPECT_EQ(restarts, 2);
+}
+
+// One occurrence is delivered once whichever event carries it: each attempt builds its own error
+// event from the keyboard, as mkTaskE builds a task's events from its state. The key pressed at
+// 0.3 s fails the attempt running then; the attempt restarted in that instant does not see that
+// press again (it used to fail again and again, until "ended at its start more than 1000 times").
+TEST(Transformers, AnOccurrenceIsDeliveredOnceWhicheverEventCarriesIt) {
+  Robot r(nomadSpec(), ScriptedSensors{.keys = [](double t) { return std::abs(t - 0.3) < 1e-9 ? std::vector<char>{'x'} : std::vector<char>{}; }});
+  int restarts = 0;
+  auto attempts = [&restarts]() -> Task<Wheels> {
+    for (;;) {
+      try {
+        co_await mkTaskE([&restarts](const TaskState& ts) {
+          return std::tuple{wheels(1 + restarts, 0), never(), keyboard(ts.robot()).as(RoboErr("key"))};
+        });
+      } catch (const RoboErr&) {
+        ++restarts;
+      }
+    }
+  };
+  EXPECT_EQ(forwardOf(runTask(r, attempts()), 6), (std::vector<double>{1, 1, 1, 2, 2, 2}));
+  EXPECT_EQ(restarts, 1);
 }
 
 // Only an occurrence that ended or failed a task is used up: a time limit that expires in the
@@ -298,6 +325,122 @@ TEST(Transformers, AbortedTasksFreeTheirFramesAndBehaviors) {
   int aborted = 0;
   for (const TaskRecord& rec : ended) aborted += rec.how == TaskEnd::Aborted;
   EXPECT_GE(aborted, 8);
+}
+
+}  // namespace
+}  // namespace frob
+
+namespace frob {
+namespace {
+
+Task<Wheels> failing(double seconds) {
+  return mkTaskE([=](const TaskState&) { return std::tuple{wheels(-1, 0), never(), after(seconds).as(RoboErr("lost"))}; });
+}
+
+// The paper's bug as course/examples/06_bug.cpp writes it: an attempt becomes goAround, which
+// becomes bug again, inside the attempt's taskCatch; every third attempt fails and the handler
+// restarts bug. Each round's taskCatch has the same handler, so it folds into the one it runs in.
+Task<Wheels> bugShape(int* rounds);
+Task<Wheels> goAroundShape(int* rounds) {
+  co_await drive(1, 0.1);
+  co_await become(bugShape(rounds));
+}
+Task<Wheels> attemptShape(int* rounds) {
+  if (++*rounds % 3 == 0) co_await failing(0.1);
+  co_await drive(2, 0.1);
+  co_await become(goAroundShape(rounds));
+}
+Task<Wheels> bugShape(int* rounds) {
+  return taskCatch(attemptShape(rounds), [rounds](const RoboErr&) { return bugShape(rounds); });
+}
+
+// Each round nested one more taskCatch: 582 live frames after 60 s, and the run stopped at 1,000.
+// Now 10,000 rounds (about 1,700 s) keep the frames and nodes of one round: the taskCatch, the
+// attempt or goAround, the atomic task.
+TEST(Transformers, BugRestartingItselfInsideTaskCatchRunsInBoundedDepthAndMemory) {
+  const long frames0 = liveTaskFrames(), nodes0 = liveNodeCount();
+  int rounds = 0;
+  long maxFrames = 0, maxNodes = 0;
+  {
+    Robot r = idleRobot();
+    Behavior<Wheels> c = runTask(r, bugShape(&rounds));
+    Clock clock(0.1);
+    for (std::int64_t i = 0; rounds <= 10'000; ++i) {
+      ASSERT_EQ(c.at(i == 0 ? clock.now() : clock.advance()).forward == 0, false) << "stopped at round " << rounds;
+      maxFrames = std::max(maxFrames, liveTaskFrames() - frames0);
+      maxNodes = std::max(maxNodes, liveNodeCount() - nodes0);
+      if (i % 1000 == 0) r.debugChannel()->timeline().drainEnded();
+    }
+  }
+  EXPECT_LE(maxFrames, 4);
+  EXPECT_LE(maxNodes, 40);
+  EXPECT_EQ(liveTaskFrames(), frames0);
+}
+
+// Folding keeps the meaning of nesting: a taskCatch whose task became another with the same
+// handler handles two errors, the second raised by the handler's own task, as two nested ones do.
+Task<Wheels> guarded(Task<Wheels> t, int* calls) {
+  return taskCatch(std::move(t), [calls](const RoboErr&) {
+    ++*calls;
+    return failing(0.1);
+  });
+}
+Task<Wheels> thenGuarded(int* calls) {
+  co_await drive(1, 0.1);
+  co_await become(guarded(failing(0.1), calls));
+}
+
+TEST(Transformers, AFoldedTaskCatchHandlesAsManyErrorsAsTheNestedOnes) {
+  int calls = 0;
+  std::string failure;
+  try {
+    (void)forwardOf(runTask(idleRobot(), guarded(thenGuarded(&calls), &calls)), 6);
+  } catch (const FrobError& e) {
+    failure = e.what();
+  }
+  EXPECT_EQ(calls, 2);  // at 0.2 s and at 0.3 s; the third error, at 0.4 s, ends the run
+  EXPECT_NE(failure.find("failed at t = 0.400 s: error: lost"), std::string::npos) << failure;
+}
+
+// Handlers that differ (another captured value) do not fold: the inner one handles first.
+TEST(Transformers, TaskCatchesWithDifferentHandlersStayNested) {
+  std::vector<int> handled;
+  auto tagged = [&handled](Task<Wheels> t, int tag) {
+    return taskCatch(std::move(t), [&handled, tag](const RoboErr&) {
+      handled.push_back(tag);
+      return failing(0.1);
+    });
+  };
+  auto body = [&tagged]() -> Task<Wheels> {
+    co_await drive(1, 0.1);
+    co_await become(tagged(failing(0.1), 2));
+  };
+  EXPECT_THROW((void)forwardOf(runTask(idleRobot(), tagged(body(), 1)), 6), FrobError);
+  EXPECT_EQ(handled, (std::vector<int>{2, 1}));
+}
+
+// A handler that differs each round (it captures the round's number) cannot fold: the rounds nest
+// until the run stops at 1,000, with a message that names the taskCatch and what to capture instead
+// (it used to advise `co_await become(taskCatch(countingAttempt)());`, which is not C++).
+Task<Wheels> countingBug(int round);
+Task<Wheels> countingAttempt(int round) {
+  co_await drive(1, 0.1);
+  co_await become(countingBug(round + 1));
+}
+Task<Wheels> countingBug(int round) {
+  return taskCatch(countingAttempt(round), [round](const RoboErr&) { return countingBug(round + 1); });
+}
+
+TEST(Transformers, ATaskCatchThatCannotFoldStopsWithAHintThatNamesIt) {
+  std::string failure;
+  try {
+    (void)sample(runTask(idleRobot(), countingBug(0)), 0.1, 2000);
+  } catch (const FrobError& e) {
+    failure = e.what();
+  }
+  EXPECT_NE(failure.find("the taskCatch(countingAttempt) made at task_transformers_test.cpp:"), std::string::npos) << failure;
+  EXPECT_NE(failure.find("[g](const RoboErr&) { return bug(g); }"), std::string::npos) << failure;
+  EXPECT_EQ(failure.find("become(taskCatch("), std::string::npos) << failure;
 }
 
 }  // namespace

@@ -13,6 +13,7 @@ namespace {
 
 constexpr double kPressedFor = 1.0;  // seconds of pushing before it counts
 constexpr double kQuickTask = 1e-9;  // a task that ends at the instant it starts
+constexpr int kQuickPerSecond = 20;  // that many in one second of the run: a chain going round on the spot
 
 // One robot's run as the diagnosis keeps it.
 struct Watch {
@@ -30,9 +31,12 @@ struct Watch {
   // Spinning in place: turning, hardly moving.
   double spinSince = -1, spinAngle = 0, longestSpin = 0, longestSpinAt = 0;
   Point2 spinWhere = Point2::Zero(), longestSpinWhere = Point2::Zero();
-  // Tasks that end as they start, by name.
+  // Tasks that end as they start, by name; and the most in one second of the run (a healthy
+  // program has some: a turn already facing its goal, a task of plain code).
   std::map<std::string, int> quickEnds;
   int quickTotal = 0;
+  long quickSecond = -1;
+  int quickThisSecond = 0, quickMostPerSecond = 0;
 };
 
 }  // namespace
@@ -97,6 +101,10 @@ void Diagnosis::taskEnded(std::size_t i, const TaskRecord& task) {
   if (task.depth > 0 && task.how == TaskEnd::Returned && task.end - task.start <= kQuickTask) {
     ++w.quickEnds[task.name];
     ++w.quickTotal;
+    const auto second = static_cast<long>(std::floor(task.end));
+    w.quickThisSecond = second == w.quickSecond ? w.quickThisSecond + 1 : 1;
+    w.quickSecond = second;
+    w.quickMostPerSecond = std::max(w.quickMostPerSecond, w.quickThisSecond);
   }
 }
 
@@ -130,7 +138,7 @@ std::vector<std::string> Diagnosis::hints(std::size_t i, const std::string& name
                "(a sonar that cannot see the way out?)",
                name.c_str(), w.longestSpin / (2 * pi), w.longestSpinAt, w.longestSpinWhere.x(), w.longestSpinWhere.y()));
   }
-  if (w.quickTotal >= 20) {
+  if (w.quickMostPerSecond >= kQuickPerSecond) {
     std::string names;
     for (const auto& [task, count] : w.quickEnds) names += (names.empty() ? "'" : ", '") + task + "'";
     out.push_back(

@@ -133,7 +133,8 @@ template <class T>
   return Behavior<std::remove_cvref_t<T>>(std::forward<T>(v));
 }
 
-/// Seconds since this behavior started (its first sample): 0 when the task that first reads it starts.
+/// Seconds since this behavior started, counted in whole steps from the instant of the event that
+/// started the task that first reads it (0 there; a timer's event may fall between samples).
 [[nodiscard]] inline Behavior<double> time() { return Behavior<double>(detail::makeNode<detail::TimeNode>()); }
 
 /// Pointwise application of `f` to behaviors and plain values: lift(f, b1, 2.0, b3).

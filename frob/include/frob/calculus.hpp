@@ -13,7 +13,8 @@ template <BehaviorType B>
   return Behavior<T>(detail::makeNode<detail::IntegralNode<T>>(toBehavior(b).node()));
 }
 
-/// The rate of change of `b` (backward difference over one step); zero at the first sample.
+/// The rate of change of `b` (backward difference over one step); zero at the first sample, as
+/// though `b` had held its first value since its start (as integral takes it).
 template <BehaviorType B>
 [[nodiscard]] Behavior<ValueOf<B>> derivative(const B& b) {
   using T = ValueOf<B>;

@@ -69,7 +69,9 @@ class Event {
   detail::NodeRef<detail::EventNode<T>> node_;
 };
 
-/// The paper's `e .|. e'`: occurrences of either; when both occur at the same instant, `a`'s wins.
+/// The paper's `e .|. e'`: occurrences of either; when both occur at the same instant, `a`'s wins
+/// and `b`'s is not in it: `(a | b).filter(p)` drops that instant if `a`'s value fails `p`, where
+/// `a.filter(p) | b.filter(p)` keeps `b`'s (filter each side to keep both).
 template <class T>
 [[nodiscard]] Event<T> operator|(const Event<T>& a, const Event<T>& b) {
   return Event<T>(detail::makeNode<detail::OrNode<T>>(a.node(), b.node()));
@@ -103,7 +105,8 @@ template <class T, class B>
   return Event<std::pair<T, U>>(detail::makeNode<detail::SnapshotNode<T, U>>(e.node(), toBehavior(b).node()));
 }
 
-/// Occurs once, `seconds` (>= 0) after it starts (its first sample).
+/// Occurs once, `seconds` (>= 0) after it starts: at the first sample where time() >= seconds holds
+/// for a behavior started with it, at the instant `seconds` after its start (it may be in between).
 [[nodiscard]] Event<Unit> after(double seconds);
 
 /// Occurs every `seconds` (> 0) after it starts, carrying how many periods have elapsed: 1, 2, 3, ...

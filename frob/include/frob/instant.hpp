@@ -11,6 +11,7 @@ struct Instant {
   std::int64_t step = 0;  ///< steps since the clock started
   double time = 0.0;      ///< step × dt, seconds
   double dt = 0.0;        ///< the clock's step, seconds
+  double lag = 0.0;       ///< what is first sampled now began this long before, seconds: an event between samples started it
 };
 
 /// A fixed-step logical clock: instants at t = 0, dt, 2 dt, ... Never reads the wall clock.

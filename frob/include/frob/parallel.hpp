@@ -32,9 +32,10 @@ namespace frob {
 /// the first is aborted. The first runs with a fresh copy of the task state. Either function may
 /// be a generic lambda; the first's argument is then a Behavior<Wheels>.
 /// `end1` occurs once, at the instant the first ended, the same for every subtask of the second;
-/// a subtask started after that instant does not see it (as any event's past occurrence). Reading
-/// `out1` at or after that instant is a run-time error naming the task and the instants, as the
-/// paper says: the first's output exists only while it runs.
+/// a subtask started after that instant does not see it (as any event's past occurrence). At that
+/// instant `out1` still reads the first's last output, so snapshot(end1, out1) gives it; reading
+/// `out1` after it is a run-time error naming the task and the instants, as the paper says ("after
+/// this event"): the first's output exists only while it runs.
 template <class F1, class F2>
 [[nodiscard]] auto withTask(F1 t1f, F2 t2f, std::source_location loc = detail::callSite()) {
   using A2 = detail::FedOutput<F1>;

@@ -7,7 +7,8 @@
 namespace frob {
 
 /// The paper's `b 'untilB' e`: follows `b` until `e` first occurs, then the behavior it carries,
-/// which starts at that instant (its integrals and timers begin there).
+/// which starts at the occurrence's instant (a timer's may fall between samples): its time(),
+/// integrals and timers count from there, unless another reader had already started it.
 template <BehaviorType B, class T = ValueOf<B>>
 [[nodiscard]] Behavior<T> untilB(const B& b, const Event<Behavior<T>>& e) {
   return Behavior<T>(detail::makeNode<detail::SwitchNode<T>>(toBehavior(b).node(), e.node(), false));

@@ -20,6 +20,11 @@ namespace frob {
 /// `Task WheelControlB ()`). A task is a recipe: it runs when awaited or passed to runTask, once.
 template <class A, class B>
 class [[nodiscard("a Task does nothing unless you co_await it")]] Task {
+  static_assert(!EventType<A>,
+                "Task<Event<T>>: a task drives a behavior, a value at every instant, not an event; to give an "
+                "occurrence, end the task with it (mkTask with that event makes a Task<Wheels, T> that returns its "
+                "value), or drive a Behavior<std::optional<T>>");
+
  public:
   using promise_type = detail::TaskPromise<A, B>;
   using output_type = A;
@@ -75,6 +80,7 @@ class [[nodiscard("a Task does nothing unless you co_await it")]] Task {
 
  private:
   friend promise_type;
+  friend detail::Catcher<A, B>;
   explicit Task(std::coroutine_handle<promise_type> h) : handle_(h) {}
   void reset() {
     if (handle_) handle_.destroy();

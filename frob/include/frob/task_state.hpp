@@ -30,7 +30,8 @@ class TaskState {
   [[nodiscard]] const Point2& initialPlace() const { return place_; }
   /// The robot's believed heading when this task started, radians.
   [[nodiscard]] double initialOrientation() const { return orientation_; }
-  /// Simulated time this task started, seconds since its runTask began.
+  /// Simulated time this task started, seconds on the run's clock (as the timeline shows it): the
+  /// instant of the event that ended the task before, which may fall between two samples.
   [[nodiscard]] double startTime() const { return startTime_; }
 
   /// Changes the recorded start pose and time (for setTaskState).

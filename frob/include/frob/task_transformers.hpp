@@ -29,7 +29,10 @@ namespace frob {
 
 /// The paper's taskCatch: runs `t`; if it fails with a RoboErr, becomes `handler(error)`.
 /// The handler takes this task's place (a tail call), so a task that restarts itself from its
-/// handler, as the paper's `bug` does, runs in constant memory. The RoboErrs it sees: taskError,
+/// handler, as the paper's `bug` does, runs in constant memory. A taskCatch whose task becomes a
+/// taskCatch with the same handler (the same lambda capturing equal values: `bug` restarting after
+/// a round) folds into it instead of nesting, with the meaning of nesting: one more error handled
+/// before one escapes. So the restart runs in bounded depth. The RoboErrs it sees: taskError,
 /// a mkTaskE error event, an enclosing addError's event, and withExit's "ended before its withExit
 /// event" (a mistake in the task's logic). A timeLimit's timeout is not one: it ends the timeLimit
 /// with std::nullopt, whatever handlers lie between. The occurrence that failed `t` is not seen
@@ -37,8 +40,16 @@ namespace frob {
 template <class A, class B, class H>
   requires std::invocable<H&, const RoboErr&>
 [[nodiscard]] Task<A, B> taskCatch(Task<A, B> t, H handler, std::source_location loc = detail::callSite()) {
-  std::string inner = t.name();
-  return detail::catching(std::move(t), detail::Erased<Task<A, B>, const RoboErr&>(std::move(handler))).at(loc).named("taskCatch(" + inner + ")");
+  if constexpr (!std::is_convertible_v<std::invoke_result_t<H&, const RoboErr&>, Task<A, B>>) {
+    static_assert(detail::kNever<H>,
+                  "taskCatch: the handler must return a task like the one it guards, the same Task<A, B> (for a "
+                  "Task<Wheels, bool>, one that also ends with a bool), e.g. [g](const RoboErr&) { return bug(g); }");
+    return t;
+  } else {
+    std::string inner = t.name();
+    auto c = std::make_unique<detail::Catcher<A, B>>(detail::Erased<Task<A, B>, const RoboErr&>(std::move(handler)), sizeof(H), std::move(t));
+    return detail::catching(std::move(c)).at(loc).named("taskCatch(" + inner + ")");
+  }
 }
 
 /// The paper's addError: `error` fails every subtask of `t` while `t` runs (scoped), with a
@@ -80,6 +91,17 @@ template <class F, class A, class B>
   using C = ValueOf<std::invoke_result_t<F&, const TaskState&>>;
   std::string name = "withB(" + t.name() + ")";
   return detail::beside<C>(detail::Erased<Behavior<C>, const TaskState&>(std::move(f)), std::move(t)).at(loc).named(std::move(name));
+}
+
+/// withB given the behavior itself, not the function of the task state that makes it: a compile
+/// error that shows the fix.
+template <class Bh, class A, class B>
+  requires(BehaviorType<Bh> && !std::invocable<Bh&, const TaskState&>)
+Task<A, WithBResult<B, ValueOf<Bh>>> withB(const Bh&, Task<A, B>, std::source_location = detail::callSite()) {
+  static_assert(detail::kNever<Task<A, B>>,
+                "withB: the first argument is a function of the task state that makes the behavior, as in the paper "
+                "(TaskState -> Behavior): write withB([b](const TaskState&) { return b; }, task), not withB(b, task)");
+  __builtin_unreachable();
 }
 
 /// The paper's withMyResult: the task `f(mine)` where `mine` is that task's own output, one

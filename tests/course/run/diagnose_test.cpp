@@ -93,6 +93,18 @@ TEST(Diagnosis, TasksThatEndAsTheyBegin) {
   EXPECT_EQ(h[0].rfind("ada's tasks ended at the very instant they began 30 times ('ahead', 'turn')", 0), 0u) << h[0];
 }
 
+// A healthy program has tasks that end as they begin now and then (a turn already facing its goal,
+// a task of plain code): 30 over a minute are no chain going round on the spot.
+TEST(Diagnosis, TasksThatEndAsTheyBeginNowAndThenAreHealthy) {
+  Diagnosis d(room(), {6, 4}, kDt);
+  d.observe(0, 0, {.position = {1, 2}}, {0.3, 0}, 6.5, 6.5);
+  d.observe(0, 60.0, {.position = {4, 2}}, {0.3, 0}, 6.5, 6.5);
+  for (int k = 0; k < 30; ++k) {
+    d.taskEnded(0, {.depth = 1, .name = "faceGoal", .start = 2.0 * k, .end = 2.0 * k, .how = TaskEnd::Returned});
+  }
+  EXPECT_TRUE(d.hints(0, "ada", {}, 60.0).empty());
+}
+
 // The paper's runAround as written there: one front sonar, 30 cm/s, 20 cm.
 Task<Wheels> goAhead() {
   return mkTask([](const TaskState& ts) { return std::pair{wheels(30_cm, 0), predicate(frontSonar(ts.robot()) < 20_cm)}; });

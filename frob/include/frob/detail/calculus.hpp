@@ -11,7 +11,8 @@
 namespace frob {
 namespace detail {
 
-// Trapezoidal integral from the first sample (where it is zero).
+// Trapezoidal integral from its start: at the first sample, the value there times the instant's lag
+// (the time since an event between samples started it), as though it had held since.
 template <class T>
 class IntegralNode final : public StrictNode<T, IntegralNode<T>> {
  public:
@@ -19,7 +20,11 @@ class IntegralNode final : public StrictNode<T, IntegralNode<T>> {
   void strictInputs(std::vector<Input>& out) const override { out.push_back(inputOf(b_)); }
   T computeFresh(const Instant& now) {
     const T& v = b_->value();
-    if (started_) sum_ = sum_ + (v + previous_) * (0.5 * (now.time - previousTime_));
+    if (started_) {
+      sum_ = sum_ + (v + previous_) * (0.5 * (now.time - previousTime_));
+    } else {
+      sum_ = v * now.lag;
+    }
     started_ = true;
     previous_ = v;
     previousTime_ = now.time;

@@ -3,6 +3,8 @@
 // type-erased: a call through a pointer and the closure on the heap. Each lambda then costs the
 // controller's compile a call and a delete, not a node type or a coroutine of its own.
 
+#include <cstddef>
+#include <cstring>
 #include <memory>
 #include <utility>
 
@@ -26,6 +28,11 @@ class Erased {
   // `closure` called by `call`, which adapts its arguments or result.
   Erased(Call call, Closure closure) : call_(call), closure_(std::move(closure)) {}
   R operator()(Args... a) const { return call_(closure_.get(), std::forward<Args>(a)...); }
+  // Whether `other` is the same function: a closure of the same type, of `size` bytes, equal byte
+  // for byte (the same lambda capturing the same values).
+  [[nodiscard]] bool sameAs(const Erased& other, std::size_t size) const {
+    return call_ == other.call_ && std::memcmp(closure_.get(), other.closure_.get(), size) == 0;
+  }
 
  private:
   template <class F>

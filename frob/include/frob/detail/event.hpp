@@ -66,6 +66,7 @@ class MapNode final : public EventNode<R> {
   std::optional<R> compute(const Instant& now) override {
     const std::optional<T>& o = e_->at(now);
     if (!o) return std::nullopt;
+    this->origin_ = e_->origin();
     return call_(closure_.get(), *o);
   }
 
@@ -83,6 +84,7 @@ class FilterNode final : public EventNode<T> {
  protected:
   std::optional<T> compute(const Instant& now) override {
     const std::optional<T>& o = e_->at(now);
+    this->origin_ = e_->origin();
     if constexpr (std::is_member_pointer_v<P>) {
       if (o && std::invoke(p_, *o)) return o;
     } else {
@@ -107,6 +109,7 @@ class OrNode final : public EventNode<T> {
   std::optional<T> compute(const Instant& now) override {
     const std::optional<T>& a = a_->at(now);
     const std::optional<T>& b = b_->at(now);
+    this->origin_ = a ? a_->origin() : b_->origin();
     return a ? a : b;
   }
 
@@ -114,7 +117,8 @@ class OrNode final : public EventNode<T> {
   NodeRef<EventNode<T>> a_, b_;
 };
 
-// Fires when the condition becomes true, including at its first sample if it already holds.
+// Fires when the condition becomes true, including at its first sample if it already holds: then
+// at its start, which may lie between samples (that instant's lag).
 class PredicateNode final : public EventNode<Unit> {
  public:
   explicit PredicateNode(NodeRef<BehaviorNode<bool>> b) : b_(std::move(b)) {}
@@ -123,16 +127,20 @@ class PredicateNode final : public EventNode<Unit> {
   std::optional<Unit> compute(const Instant& now) override {
     bool v = b_->at(now);
     bool rising = v && !previous_;
+    this->origin_.lag = sampled_ ? 0.0 : now.lag;
     previous_ = v;
+    sampled_ = true;
     return rising ? std::optional<Unit>(Unit{}) : std::nullopt;
   }
 
  private:
   NodeRef<BehaviorNode<bool>> b_;
   bool previous_ = false;
+  bool sampled_ = false;
 };
 
-// The first occurrence only; the source is released after it so that it can be freed.
+// The first occurrence only; the source is released at the next instant, so that it can be freed
+// and the address of the occurrence's origin stays its own within the instant (see UsedOccurrences).
 template <class T>
 class OnceNode final : public EventNode<T> {
  public:
@@ -140,14 +148,16 @@ class OnceNode final : public EventNode<T> {
 
  protected:
   std::optional<T> compute(const Instant& now) override {
+    if (occurred_) e_.reset();
     if (!e_) return std::nullopt;
     std::optional<T> o = e_->at(now);
-    if (o) e_.reset();
+    if (o) occurred_ = true, this->origin_ = e_->origin();
     return o;
   }
 
  private:
   NodeRef<EventNode<T>> e_;
+  bool occurred_ = false;
 };
 
 // The behavior is sampled every instant, not only at occurrences, so stateful behaviors stay current.
@@ -161,6 +171,7 @@ class SnapshotNode final : public EventNode<std::pair<T, U>> {
     const U& u = b_->at(now);
     const std::optional<T>& o = e_->at(now);
     if (!o) return std::nullopt;
+    this->origin_ = e_->origin();
     return std::pair<T, U>(*o, u);
   }
 
@@ -170,8 +181,8 @@ class SnapshotNode final : public EventNode<std::pair<T, U>> {
 };
 
 // Occurs at local times k × period for k = 1, 2, ... (or once at `period` when not repeating),
-// on the first instant at or after each; carries the number of periods elapsed, which may step by
-// more than one when the period is shorter than the clock's step.
+// on the first instant at or after each, with the time since it as its lag; carries the number of
+// periods elapsed, which may step by more than one when the period is shorter than the clock's step.
 class TimerNode final : public EventNode<std::int64_t> {
  public:
   TimerNode(double period, bool repeat) : period_(period), repeat_(repeat) {}

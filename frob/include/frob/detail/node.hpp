@@ -228,6 +228,15 @@ class StrictNode : public BehaviorNode<T> {
   const PlanStep* first_ = nullptr;  // where the plan starts; none before the first sample
 };
 
+// Where an event's latest occurrence comes from: the source event it occurred in (a sensor, a timer,
+// a predicate), which every event derived from it (map, filter, |, once, snapshot) passes on, so that
+// one occurrence is known as one whichever event carries it; and how long before the sample it
+// happened (a timer's due time falls between samples), seconds.
+struct Origin {
+  const NodeBase* source = nullptr;
+  double lag = 0.0;
+};
+
 // An event node: at each instant, at most one occurrence carrying a T.
 template <class T>
 class EventNode : public NodeBase {
@@ -243,29 +252,37 @@ class EventNode : public NodeBase {
     occurrence_ = compute(now);
     stamp_ = now.id;
   }
+  // The origin of the latest occurrence.
+  [[nodiscard]] const Origin& origin() const { return origin_; }
 
  protected:
   virtual std::optional<T> compute(const Instant& now) = 0;
+  // A source's own, at its samples; a derived event's compute copies its input's with each occurrence.
+  Origin origin_{this, 0.0};
 
  private:
   std::optional<T> occurrence_;
 };
 
-// Records the first instant a stateful node is sampled: its start time.
+// Records the instant a stateful node starts: its first sample, less that instant's lag (an event
+// between samples started it).
 class StartTime {
  public:
-  // Seconds since the first call (0 at the first call).
+  // Seconds since the start (the first call's lag at the first call), from whole steps: k steps
+  // after a start on a sample read k × dt, exactly as every other node started with it reads.
   double local(const Instant& now) {
     if (!started_) {
-      start_ = now.time;
+      step_ = now.step;
+      lag_ = now.lag;
       started_ = true;
     }
-    return now.time - start_;
+    return static_cast<double>(now.step - step_) * now.dt + lag_;
   }
   [[nodiscard]] bool started() const { return started_; }
 
  private:
-  double start_ = 0.0;
+  std::int64_t step_ = 0;
+  double lag_ = 0.0;
   bool started_ = false;
 };
 

@@ -61,9 +61,10 @@ class StrandEndNode final : public EventNode<Outcome<B>> {
   Strand<A, B> strand_;
 };
 
-// A strand's output as withTask's second task reads it: from the instant the strand's task ended
-// on, a read is a run-time error naming the task and both instants (the paper: "reference to the
-// value of t1 after this event will result in a runtime error"), never a silent default.
+// A strand's output as withTask's second task reads it: at the instant the strand's task ended, its
+// last output (what it drove until then); after that instant, a read is a run-time error naming the
+// task and both instants (the paper: "reference to the value of t1 after this event will result in
+// a runtime error"), never a silent default.
 template <class A, class B>
 class StrandOutputNode final : public BehaviorNode<A> {
  public:
@@ -73,6 +74,7 @@ class StrandOutputNode final : public BehaviorNode<A> {
   A compute(const Instant& now) override {
     A v = strand_.output.at(now);
     if (const std::optional<Instant>& end = strand_.runner->endedAt()) {
+      if (std::optional<A> last = strand_.runner->lastOutput(now)) return *last;
       throw FrobError(endedOutputMessage(strand_.runner->taskName(), end->time, now.time));
     }
     return v;
@@ -128,6 +130,7 @@ Task<A2, B2> feeding(Erased<Task<A1, B1>, Behavior<A2>> first, Erased<Task<A2, B
   std::int64_t record = co_await GetRecord{};
   Behavior<A2> secondOut = ctx->delayedOutput();
   Strand<A1, B1> strand = startStrand(ctx->state, record, first(secondOut));
+  strand.runner->recordOutput();
   ScopeEntry<Watcher> keep(ctx->watchers, keepSampling(strand.output));
   if constexpr (std::is_void_v<B2>) {
     co_await second(Behavior<A1>(makeNode<StrandOutputNode<A1, B1>>(strand)), endOf(strand));

@@ -12,7 +12,9 @@ namespace frob {
 namespace detail {
 
 // The behavior of a running task: each instant it checks the current atomic task's events,
-// moves on through as many tasks as end at this instant, then samples the current behavior.
+// moves on through as many tasks as end at this instant, then samples the current behavior. A task
+// starts at the instant of the event that ended the one before: when a timer's due time fell
+// between samples, that is its lag before this sample (the lag of the instant it is sampled at).
 template <class A, class B>
 class RunnerNode final : public BehaviorNode<A> {
  public:
@@ -39,13 +41,20 @@ class RunnerNode final : public BehaviorNode<A> {
   [[nodiscard]] const std::optional<Instant>& endedAt() const { return endedAt_; }
   /// The name of the task it runs.
   [[nodiscard]] const std::string& taskName() const { return name_; }
+  /// Records the run's output from its first sample on, for lastOutput.
+  void recordOutput() { (void)ctx_.delayedOutput(); }
+  /// At the instant the task ended, its output at the sample before (none if it ended as it began).
+  [[nodiscard]] std::optional<A> lastOutput(const Instant& now) const {
+    if (!endedAt_ || endedAt_->id != now.id || startedAt_ == now.id || !ctx_.output) return std::nullopt;
+    return ctx_.output->delayed(now);
+  }
 
  protected:
   A compute(const Instant& now) override {
     ctx_.now = &now;
     ctx_.time = now.time;
     // The common step: the current task goes on. Everything else is in advance().
-    if (AtomicBase<A>* atom = ctx_.current; atom != nullptr && ctx_.watchers.empty() && !ctx_.output) {
+    if (AtomicBase<A>* atom = ctx_.current; atom != nullptr && ctx_.watchers.empty() && !ctx_.output && now.lag == 0.0) {
       try {
         if (const A* out = atom->step(now)) {
           if constexpr (requires { isFinite(*out); }) {
@@ -68,9 +77,15 @@ class RunnerNode final : public BehaviorNode<A> {
   // then samples the current one; or the final behavior once the task is over.
   [[gnu::noinline]] A advance(const Instant& now, bool ended) {
     if (failure_) std::rethrow_exception(failure_);
+    // Only what starts at this instant starts before it: the run itself (at the lag it is sampled
+    // at), or a task after the event that ended the one before.
+    here_ = now;
+    if (started_) here_.lag = ended ? ctx_.current->endLag : 0.0;
+    ctx_.now = &here_;
     if (!started_) {
       started_ = true;
-      ctx_.snapshot(now);
+      startedAt_ = now.id;
+      ctx_.snapshot(here_);
       task_.startIn(slot_, &ctx_, std::noop_coroutine(), parentRecord_, nullptr).resume();
     }
     for (int transitions = 0;; ++transitions) {
@@ -79,8 +94,8 @@ class RunnerNode final : public BehaviorNode<A> {
       if (transitions > kMaxTransitionsPerInstant) fail(runawayMessage(*atom->name, now));
       if (!ended) {
         try {
-          if (const A* out = atom->step(now)) {
-            for (const auto& watch : ctx_.watchers) watch(now);
+          if (const A* out = atom->step(here_)) {
+            for (const auto& watch : ctx_.watchers) watch(here_);
             if constexpr (requires { isFinite(*out); }) {
               if (!isFinite(*out)) fail(nonFiniteMessage(*atom->name, printable(*out), now));
             }
@@ -92,10 +107,11 @@ class RunnerNode final : public BehaviorNode<A> {
         } catch (...) {
           atom->fail(std::current_exception());  // an event or behavior that throws fails its task
         }
+        here_.lag = atom->endLag;
       }
       ended = false;
       ctx_.current = nullptr;
-      ctx_.snapshot(now);
+      ctx_.snapshot(here_);
       atom->waiter.resume();
     }
   }
@@ -111,7 +127,7 @@ class RunnerNode final : public BehaviorNode<A> {
       std::string who = slot_.error == ctx_.origin ? ctx_.originTask : "the controller";
       fail("task '" + who + "' failed at t = " + seconds(now) + ": " + what);
     }
-    A out = final_.at(now);
+    A out = final_.at(here_);
     if (ctx_.output) ctx_.output->write(now, out);
     return out;
   }
@@ -144,6 +160,8 @@ class RunnerNode final : public BehaviorNode<A> {
   std::int64_t parentRecord_;
   bool holdRoboErrs_;
   std::optional<Instant> endedAt_;
+  Instant here_;  // the instant sampled, with the lag of what starts in it
+  std::uint64_t startedAt_ = 0;
   bool started_ = false;
   bool reported_ = false;
 };

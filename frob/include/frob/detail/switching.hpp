@@ -20,7 +20,8 @@ class SwitchChainGuard {
   SwitchChainGuard& operator=(const SwitchChainGuard&) = delete;
 };
 
-// Follows `b` until `e` first occurs, then the behavior it carries, started at that instant.
+// Follows `b` until `e` first occurs, then the behavior it carries, started at the occurrence (which
+// a timer's may put between samples: what it first samples then begins that long before).
 // With `repeat`, switches again at every occurrence (switcher).
 template <class T>
 class SwitchNode final : public BehaviorNode<T> {
@@ -34,10 +35,12 @@ class SwitchNode final : public BehaviorNode<T> {
     while (inner_ != nullptr && !inner_->e_) follow(inner_->b_);
     if (e_) {
       if (const std::optional<Behavior<T>>& next = e_->at(now)) {
+        Instant at = now;
+        at.lag = e_->origin().lag;
         follow(next->node());
         if (!repeat_) e_.reset();  // release the event so that its graph can be freed
         SwitchChainGuard guard;    // the new behavior may switch again at this instant, but not forever
-        return b_->at(now);
+        return b_->at(at);
       }
     }
     return b_->at(now);

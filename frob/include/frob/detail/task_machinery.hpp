@@ -39,6 +39,10 @@ namespace detail {
 
 extern std::atomic<long> liveFrames;
 
+// False for every T: a static_assert that fires only when the template holding it is instantiated.
+template <class T>
+inline constexpr bool kNever = false;
+
 // "frob::Task<frob::Wheels> goAhead()" -> "goAhead"; file and line as "file.cpp:12".
 [[nodiscard]] std::string taskName(const char* functionName);
 [[nodiscard]] std::string taskWhere(const std::source_location& loc);
@@ -47,8 +51,9 @@ extern std::atomic<long> liveFrames;
 // How deep tasks may await one another in one run; only a recursion that never unwinds gets there.
 inline constexpr int kMaxTaskDepth = 1000;
 // Why a run stopped with tasks nested deeper than `limit`: `chain`, innermost first, names the
-// tasks, and the one most often in it is the recursion, shown with its fix (become).
-[[nodiscard]] std::string tooDeepMessage(const std::vector<std::string>& chain, int limit);
+// tasks and where each was made, and the one most often in it is the recursion, shown with its fix
+// (become; for a taskCatch, a handler that stays the same).
+[[nodiscard]] std::string tooDeepMessage(const std::vector<std::pair<std::string, std::string>>& chain, int limit);
 // The robot error `e` holds, if it is one (only a RoboErr is; a std::logic_error is a bug).
 [[nodiscard]] std::optional<RoboErr> roboErrIn(const std::exception_ptr& e);
 
@@ -97,6 +102,7 @@ struct AtomicBase {
   Behavior<A> output;              // its behavior, with the enclosing filters applied
   std::coroutine_handle<> waiter;  // resumed when it ends
   const std::string* name = nullptr;
+  double endLag = 0.0;  // how long before the sample the occurrence that ended it happened (its Origin's lag)
   // Its output at `now`, or null when it ended at `now` (its result or error is then stored).
   virtual const A* step(const Instant& now) = 0;
   virtual void fail(std::exception_ptr e) = 0;  // ends it with an error
@@ -107,18 +113,20 @@ struct AtomicBase {
 };
 
 // One occurrence is delivered once: an occurrence that ended or failed a task of a run (its exit,
-// its error or a scope's) is not seen again by a task started in the same instant. Compiled once in
-// libfrob, so that no controller instantiates it.
+// its error or a scope's) is not seen again by a task started in the same instant, whichever event
+// carries it (its Origin's source: an error event rebuilt by the next task from the same sensor
+// carries the same occurrence). Compiled once in libfrob, so that no controller instantiates it.
 class UsedOccurrences {
  public:
-  // Whether event node `node`'s occurrence at `at` has not ended or failed a task yet.
-  [[nodiscard]] bool fresh(const NodeBase* node, const Instant& at) const;
-  // Marks it used; holds the node so that no new node takes its address within the instant.
-  void use(std::shared_ptr<NodeBase> node, const Instant& at);
+  // Whether the occurrence from `source` at `at` has not ended or failed a task yet.
+  [[nodiscard]] bool fresh(const NodeBase* source, const Instant& at) const;
+  // Marks it used; holds `carrier`, the event it came by, which holds its source, so that no new
+  // node takes the source's address within the instant.
+  void use(const NodeBase* source, std::shared_ptr<NodeBase> carrier, const Instant& at);
 
  private:
   std::uint64_t instant_ = 0;
-  std::vector<std::shared_ptr<NodeBase>> nodes_;
+  std::vector<std::pair<const NodeBase*, std::shared_ptr<NodeBase>>> used_;
 };
 
 // What every frame of one runTask shares.
@@ -139,11 +147,12 @@ struct RunContext {
   std::int64_t nextScope = 0;
   UsedOccurrences used;  // one occurrence is delivered once
 
-  // The paper's snapRobot: record where the robot is as one task ends and the next begins.
+  // The paper's snapRobot: record where the robot is as one task ends and the next begins, at the
+  // instant of the event that ended it (`at`'s lag before the sample).
   void snapshot(const Instant& at) {
     now = &at;
-    time = at.time;
-    state.setInitialPlace(state.robot().place().at(at)).setInitialOrientation(state.robot().orientation().at(at)).setStartTime(at.time);
+    time = at.time - at.lag;
+    state.setInitialPlace(state.robot().place().at(at)).setInitialOrientation(state.robot().orientation().at(at)).setStartTime(time);
   }
   // The run's output one instant late (withMyResult, withTask); the runner records it from now on.
   Behavior<A> delayedOutput() {
@@ -209,9 +218,9 @@ struct PromiseBase {
   }
 
   [[gnu::noinline, noreturn]] void throwTooDeep() const {
-    std::vector<std::string> chain;
+    std::vector<std::pair<std::string, std::string>> chain;
     for (const PromiseBase* p = this; p != nullptr; p = p->caller) {
-      if (!p->quiet) chain.push_back(p->name);
+      if (!p->quiet) chain.emplace_back(p->name, p->where);
     }
     throw FrobError(tooDeepMessage(chain, kMaxTaskDepth));
   }
@@ -225,6 +234,7 @@ struct PromiseBase {
   std::int64_t record = -1;
   std::int64_t parentRecord = -1;
   bool quiet = false;
+  void* catcher = nullptr;  // the Catcher<A, B> (of its B) of a taskCatch's frame
 };
 
 // Resumes whoever awaited the task (the parent, or the runner through a no-op handle).
@@ -262,9 +272,56 @@ struct Raise {
 
 template <class A, class B>
 struct SubtaskAwaiter;
+// What co_await of something a task cannot await gives: its type is needed at the co_await, so its
+// message is the first error there, not one about awaiting a void.
+template <class X>
+struct NotAwaitable {
+  static_assert(kNever<X>,
+                "a Task<A, B> can co_await only tasks that drive the same output type A, getTaskState(), "
+                "setTaskState(ts), become(task) and taskError(error)");
+  bool await_ready() noexcept { return true; }
+  void await_suspend(std::coroutine_handle<>) noexcept {}
+  void await_resume() noexcept {}
+};
+// The same for a task driving another output A2.
+template <class A2>
+struct OtherOutput {
+  static_assert(kNever<A2>,
+                "co_await: this task drives another output than the task that awaits it (a Task<double> inside a "
+                "Task<Wheels>?): a task awaits only tasks of its own output; to compute a value, return it as the "
+                "result (Task<Wheels, double>, co_return x), or run the other task beside it with withTask");
+  bool await_ready() noexcept { return true; }
+  void await_suspend(std::coroutine_handle<>) noexcept {}
+  void await_resume() noexcept {}
+};
 template <class A, class B>
 struct Become {
   Task<A, B> task;
+};
+
+// A taskCatch (see catching): its handler, the task it is to run in its scope, and how many nested
+// taskCatches with this same handler it stands for. A taskCatch whose task becomes (or whose
+// handler gives) a taskCatch with the same handler, as the paper's bug restarting itself does,
+// folds that one into it instead of nesting it, with the same meaning: one layer handles an error,
+// and its handler's task runs inside the layers left. So the restart runs in bounded depth.
+template <class A, class B>
+struct Catcher {
+  Catcher(Erased<Task<A, B>, const RoboErr&> h, std::size_t size, Task<A, B> t) : handler(std::move(h)), handlerSize(size), body(std::move(t)) {}
+  // `t`, or if it is a taskCatch with the same handler, its task (and so on), its layers added here.
+  Task<A, B> absorb(Task<A, B> t) {
+    for (auto* c = static_cast<Catcher*>(t.handle_.promise().catcher); c != nullptr && c->handler.sameAs(handler, handlerSize);
+         c = static_cast<Catcher*>(t.handle_.promise().catcher)) {
+      layers += c->layers;
+      Task<A, B> inner = std::move(*c->body);
+      t = std::move(inner);  // frees the folded taskCatch, which never ran
+    }
+    return t;
+  }
+
+  Erased<Task<A, B>, const RoboErr&> handler;
+  std::size_t handlerSize;  // bytes of its closure
+  std::optional<Task<A, B>> body;
+  std::int64_t layers = 1;
 };
 struct GetContext {};
 struct GetRecord {};
@@ -289,6 +346,8 @@ class TaskPromise : public PromiseBase<A>,
  public:
   using R = ResultOf<B>;
   explicit TaskPromise(std::source_location loc = detail::callSite()) : PromiseBase<A>(loc) {}
+  // A taskCatch's frame, given its Catcher (catching's parameter), which it stays known by.
+  explicit TaskPromise(std::unique_ptr<Catcher<A, B>>& c) : PromiseBase<A>(std::source_location::current()) { this->catcher = c.get(); }
 
   Task<A, B> get_return_object() { return Task<A, B>(std::coroutine_handle<TaskPromise>::from_promise(*this)); }
   std::suspend_always initial_suspend() noexcept { return {}; }
@@ -347,11 +406,17 @@ class TaskPromise : public PromiseBase<A>,
     };
     return Ref{&atom};
   }
+  template <class A2, class B2>
+  OtherOutput<A2> await_transform(Task<A2, B2>&&) {
+    return {};
+  }
+  template <class A2, class B2>
+  OtherOutput<A2> await_transform(Task<A2, B2>&) {
+    return {};
+  }
   template <class X>
-  void await_transform(X&&) {
-    static_assert(sizeof(X) == 0,
-                  "a Task<A, B> can co_await only tasks that drive the same output type A, getTaskState(), "
-                  "setTaskState(ts), become(task) and taskError(error)");
+  NotAwaitable<std::remove_cvref_t<X>> await_transform(X&&) {
+    return {};
   }
   auto await_transform(Raise r) { return r; }
 
@@ -386,12 +451,14 @@ template <class A, class B>
 auto TaskPromise<A, B>::await_transform(Become<A, B>&& b) {
   // A tail call: the new task takes this frame's place (its slot, parent and owner) and this
   // frame is destroyed, so recursion such as runAround calling itself runs in bounded memory.
+  // Becoming a taskCatch as a taskCatch's task, it folds into that one if it has the same handler.
   struct Awaiter {
     Task<A, B> next;
     bool await_ready() noexcept { return false; }
     std::coroutine_handle<> await_suspend(std::coroutine_handle<TaskPromise> self) {
       TaskPromise& p = self.promise();
       p.end(TaskEnd::Replaced, "became " + next.name());
+      if (p.caller != nullptr && p.caller->catcher != nullptr) next = static_cast<Catcher<A, B>*>(p.caller->catcher)->absorb(std::move(next));
       ResultSlot<R>& mine = *p.slot;
       std::coroutine_handle<> h = next.startIn(mine, p.ctx, p.continuation, p.parentRecord, p.caller);
       self.destroy();  // destroys this awaiter too: nothing of it is touched after this line
@@ -436,8 +503,8 @@ class AtomicAwaiter final : public AtomicBase<A> {
   const A* step(const Instant& now) override {
     if (!error_ && ctx_->interrupts.empty()) {  // the common case, kept short: it runs every step
       if (!exitNever_) {
-        if (const std::optional<E>& exit = exit_.at(now); exit && ctx_->used.fresh(exit_.node().get(), now)) {
-          ctx_->used.use(exit_.node().owner(), now);
+        if (const std::optional<E>& exit = exit_.at(now); exit && ctx_->used.fresh(exit_.node()->origin().source, now)) {
+          use(exit_, now);
           result_ = *exit;
           return nullptr;
         }
@@ -446,14 +513,24 @@ class AtomicAwaiter final : public AtomicBase<A> {
     }
     return check(now) ? nullptr : &this->output.at(now);
   }
-  void fail(std::exception_ptr e) override { failure_ = std::move(e); }
+  void fail(std::exception_ptr e) override {
+    failure_ = std::move(e);
+    this->endLag = 0.0;  // at the sample that threw
+  }
 
  private:
   // The occurrence of `e` at `now` unless it already ended or failed a task of this run.
   template <class T>
   const std::optional<T>* occurrence(const Event<T>& e, const Instant& now) const {
     const std::optional<T>& o = e.at(now);
-    return o && ctx_->used.fresh(e.node().get(), now) ? &o : nullptr;
+    return o && ctx_->used.fresh(e.node()->origin().source, now) ? &o : nullptr;
+  }
+  // Uses up `e`'s occurrence at `now`, which ends this task then.
+  template <class T>
+  void use(const Event<T>& e, const Instant& now) {
+    const Origin& o = e.node()->origin();
+    ctx_->used.use(o.source, e.node().owner(), now);
+    this->endLag = o.lag;
   }
 
   bool check(const Instant& now) {
@@ -469,13 +546,13 @@ class AtomicAwaiter final : public AtomicBase<A> {
       if (o && interrupt == nullptr) interrupt = o, scope = &*it;
     }
     if (exit) {
-      ctx_->used.use(exit_.node().owner(), now);
+      use(exit_, now);
       result_ = **exit;
     } else if (error) {
-      ctx_->used.use(error_->node().owner(), now);
+      use(*error_, now);
       failure_ = std::make_exception_ptr(**error);
     } else if (interrupt) {
-      ctx_->used.use(scope->node().owner(), now);
+      use(*scope, now);
       failure_ = **interrupt;
     } else {
       return false;
@@ -540,9 +617,6 @@ template <class F>
 using MkTaskExit = typename EventValue<std::remove_cvref_t<std::tuple_element_t<1, MkTaskParts<F>>>>::type;
 template <class F>
 using MkTaskResult = std::conditional_t<std::is_same_v<MkTaskExit<F>, Unit>, void, MkTaskExit<F>>;
-
-template <class T>
-inline constexpr bool kNever = false;
 
 // Whether mkTask's function returns {behavior, event[, error event]}; if not, a compile error that
 // says what is wrong in the student's words, instead of one from deep inside the library.

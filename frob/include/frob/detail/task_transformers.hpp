@@ -124,22 +124,30 @@ Task<A, B> publishing(Task<A, B> body, Behavior<Picture> p) {
   return scoped(std::move(body), [p](RunContext<A>& ctx) { return std::make_unique<PublishedPicture>(ctx.debug, p); });
 }
 
-// taskCatch: `body`, or on a RoboErr `handler(error)` in its place.
+// taskCatch: `c`'s task, or on a RoboErr its handler's task in its place, inside the layers left.
 template <class A, class B>
-Task<A, B> catching(Task<A, B> body, Erased<Task<A, B>, const RoboErr&> handler) {
-  std::optional<RoboErr> caught;
-  try {
-    if constexpr (std::is_void_v<B>) {
-      co_await std::move(body);
-      co_return;
-    } else {
-      co_return co_await std::move(body);
+Task<A, B> catching(std::unique_ptr<Catcher<A, B>> c) {
+  for (;;) {
+    std::optional<RoboErr> caught;
+    try {
+      Task<A, B> body = std::move(*c->body);
+      c->body.reset();
+      if constexpr (std::is_void_v<B>) {
+        co_await std::move(body);
+        co_return;
+      } else {
+        co_return co_await std::move(body);
+      }
+    } catch (const RoboErr& e) {
+      caught = e;
     }
-  } catch (const RoboErr& e) {
-    caught = e;
+    Task<A, B> next = c->handler(*caught);
+    if (--c->layers == 0) {
+      co_await become(std::move(next));
+      if constexpr (!std::is_void_v<B>) __builtin_unreachable();  // become() destroys this frame: it never resumes
+    }
+    c->body = c->absorb(std::move(next));
   }
-  co_await become(handler(*caught));
-  if constexpr (!std::is_void_v<B>) __builtin_unreachable();  // become() destroys this frame: it never resumes
 }
 
 // timeLimit: `body` with a scope that aborts it `limit` seconds after it starts.
