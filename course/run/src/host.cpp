@@ -6,7 +6,6 @@
 #include "load_error.hpp"
 
 #include <fcntl.h>
-#include <sys/eventfd.h>
 
 #include <cerrno>
 #include <cmath>
@@ -59,8 +58,14 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
 
   if (Status s = impl->channel.create(kSetupBytes, std::max<std::uint32_t>(impl->def.robots, 1), kFrameBytes, kReplyBytes); !s)
     return failure(s.error());
-  impl->wake.reset(::eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK));
-  if (!impl->wake.valid()) return failure(std::string("eventfd: ") + std::strerror(errno));
+  // The wake-up is a pipe, not an object both sides hold: the grader's end is an open file of its
+  // own, whose non-blocking flag nothing in the host can clear (fcntl, ioctl FIONBIO), nor can it read
+  // the wake-ups meant for the grader.
+  Result<sandbox::Pipe> wake = sandbox::openPipe("its wake-up pipe");
+  if (!wake) return failure(wake.error());
+  impl->wake = std::move(wake.value().read);
+  ::fcntl(impl->wake.get(), F_SETFL, O_NONBLOCK);
+  ::fcntl(wake.value().write.get(), F_SETFL, O_NONBLOCK);  // a host that rings a full pipe goes on
   Result<sandbox::Pipe> out = sandbox::openPipe("its output's pipe");
   if (!out) return failure(out.error());
   impl->output = std::move(out.value().read);
@@ -75,7 +80,7 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
                        .namespaces = {.tasks = d.tasks, .scratch = work.string(), .scratchBytes = d.scratchBytes},
                        .files = {.read = {"/usr", "/lib", "/lib64", "/etc/ld.so.cache", folder.string()}, .write = {work.string()}},
                        .cwd = work.string(),
-                       .fds = {-1, out.value().write.get(), out.value().write.get(), impl->channel.fd(), impl->wake.get()}};
+                       .fds = {-1, out.value().write.get(), out.value().write.get(), impl->channel.fd(), wake.value().write.get()}};
   if (d.checked) {
     // The sanitizers' runtime (unless this program has its own), reporting into their own folder.
     program.env = sanitizerEnvironment(reports);
@@ -96,7 +101,8 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
   impl->memoryLimited = !kSanitizedBuild && !d.checked;
   if (!impl->memoryLimited) program.limits.memoryBytes = 0, program.files.read.push_back("/proc");
   Result<Sandboxed> process = Sandboxed::start(program);
-  out.value().write.reset();  // the host holds its own copy
+  out.value().write.reset();  // the host holds its own copies
+  wake.value().write.reset();
   if (!process) return failure(process.error());
   impl->process = std::move(process.value());
   impl->layers = impl->process.layers();

@@ -78,7 +78,7 @@ struct ControllerHost::Impl {
   Scratch scratch;
   sandbox::Channel channel;
   Sandboxed process;
-  sandbox::Fd wake;    // eventfd the host writes when it answers and we sleep
+  sandbox::Fd wake;    // read end of the pipe the host writes when it answers and we sleep; non-blocking
   sandbox::Fd output;  // read end of its stdout and stderr
   std::uint64_t outputSeen = 0;
   std::string outputTail;  // the last of what it printed, where a failed assertion's message is
@@ -209,8 +209,8 @@ struct ControllerHost::Impl {
       const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count() + 1;
       ::poll(fds, 3, static_cast<int>(std::min<long long>(ms, 20)));
       if (fds[0].revents != 0) {
-        std::uint64_t count = 0;
-        [[maybe_unused]] const ssize_t n = ::read(wake.get(), &count, sizeof count);
+        char rings[1 << 16];  // a whole pipe's worth: one read empties it, however fast the host rings
+        [[maybe_unused]] const ssize_t n = ::read(wake.get(), rings, sizeof rings);
       }
       if (fds[1].revents != 0) drainOutput();
       if (fds[2].revents != 0) {

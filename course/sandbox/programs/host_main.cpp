@@ -1,5 +1,5 @@
 // frob-controller-host: runs student controllers for a grader that never lets them near its world.
-// Started by frob-sandbox with its channel on fd 3 and a wake-up eventfd on fd 4; it adds its own
+// Started by frob-sandbox with its channel on fd 3 and the write end of a wake-up pipe on fd 4; it adds its own
 // system-call filter, loads the controller modules named on its command line, builds one controller
 // per robot as asked, then each step reads the robots' frames and answers their wheels.
 #include "frob/controller.hpp"

@@ -218,6 +218,22 @@ TEST(Sandbox, ForgedRecordsPastTheirCapsFailTheRobot) {
   EXPECT_DOUBLE_EQ(o.failures[0].time, 0.5);
 }
 
+// A host that makes the wake-up channel blocking, by either call that can, and tries to take the
+// grader's wake-ups, holds no end of it the grader reads: the step that never answers fails at its
+// deadline. (Were the grader's end shared with the host, the grader could block in a read for ever:
+// ctest's timeout.)
+TEST(Sandbox, NoFlagAHostSetsMakesTheGraderBlock) {
+  for (const std::string name : {"clears_wake_flag_fcntl", "clears_wake_flag_ioctl"}) {
+    const Outcome o = runHostile({name});
+    EXPECT_EQ(o.output.find("took a wake-up"), std::string::npos) << name << ": " << o.output;
+    ASSERT_EQ(o.failures.size(), 1u) << name;
+    const std::string& why = o.failures[0].message;
+    EXPECT_TRUE(why == "ada: did not answer within 1 s in one step (it waited or slept) at t = 0.50 s" ||
+                why == "ada: used more than 1 s of CPU in one step (an endless loop?) at t = 0.50 s")
+        << name << ": " << why;
+  }
+}
+
 // A controller that answers each step just inside its deadline falls behind the run's pace and
 // fails within seconds, not after the run's 600 s.
 TEST(Sandbox, AControllerThatSleepsInEveryStepFallsBehindAndFails) {
