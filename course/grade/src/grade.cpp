@@ -222,6 +222,7 @@ void runCheck(const GradeDef& def, const CompiledController& compiled, const Che
   Result<RobotHosts> hosts = RobotHosts::start({compiled.module}, {compiled.source}, {0}, world.robots.size(), def.host);
   if (!hosts) {
     r.reason = hosts.error();
+    if (isGraderFailure(hosts.status())) g.graderFailure = hosts.error();
     return;
   }
   worlds::Run run(world, {.dt = def.rubric.dt, .seed = r.seed}, hosts.value().driver(false), {.keepSteps = false});
@@ -333,6 +334,7 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
         return true;
       };
       if (world.ok() && passesAll(compiled.value()) && !(starter && passesAll(*starter))) mine.push_back(k);
+      if (!scratch.graderFailure.empty()) return Status::failure(scratch.graderFailure);
     }
     if (static_cast<int>(mine.size()) < wanted) {
       return Status::failure("only " + std::to_string(mine.size()) + " of the " + std::to_string(tries) + " worlds drawn for check '" + check.name +
@@ -357,11 +359,13 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
   }
   std::string messages;
   Result<CompiledController> compiled = compileSubmission(submission, def.compiler, &messages);
-  if (!compiled) g.compileError = compiled.error() + (messages.empty() ? "" : "\n" + messages);
+  if (!compiled)
+    (isGraderFailure(compiled.status()) ? g.graderFailure : g.compileError) = compiled.error() + (messages.empty() ? "" : "\n" + messages);
   // Loaded once per world, not per name: two checks' "hidden world 1" are different draws.
   std::map<std::string, Result<worlds::WorldDef>> loaded;
   for (const Check& check : def.rubric.checks) {
     if (def.visibleOnly && check.visibility != Visibility::Visible) continue;
+    if (!g.graderFailure.empty()) break;  // no grade: nothing more to run
     CheckGrade cg{.name = check.name, .points = check.points, .visibility = check.visibility};
     const std::vector<std::uint64_t> seeds = seedsOf(check, def.secret);
     for (const WorldRef& w : worldsOf(check, def.secret, kept)) {
@@ -370,6 +374,7 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
       if (known == loaded.end()) known = loaded.emplace(key, loadWorldRef(w)).first;
       const Result<worlds::WorldDef>& world = known->second;
       for (std::uint64_t seed : seeds) {
+        if (!g.graderFailure.empty()) break;
         RunGrade& r = cg.runs.emplace_back(RunGrade{.world = w.name, .seed = seed});
         if (!compiled) {
           r.reason = "the submission did not compile";

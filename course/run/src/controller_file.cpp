@@ -241,10 +241,10 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
   // A build folder of its own: the only place the compiler may write.
   std::error_code ec;
   fs::create_directories(setup.cacheDir, ec);
-  if (ec) return Status::failure("cannot create the controller cache '" + setup.cacheDir.string() + "': " + ec.message());
+  if (ec) return graderFailure("cannot create the controller cache '" + setup.cacheDir.string() + "': " + ec.message());
   removeStale(fs::absolute(setup.cacheDir), "build");  // left by a frob that was killed while it compiled
   Result<Scratch> folder = Scratch::make(fs::absolute(setup.cacheDir), "build");
-  if (!folder) return Status::failure("cannot make a build folder in '" + setup.cacheDir.string() + "'");
+  if (!folder) return graderFailure("cannot make a build folder in '" + setup.cacheDir.string() + "'");
   const std::string build = folder.value().path().string();
   const fs::path absolute = fs::absolute(cwd / file);
   const fs::path partial = fs::path(build) / "module.so";
@@ -277,6 +277,15 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
                            " s, so it was stopped (an #include or a macro that never ends?)");
   }
   const int status = run.value().status;
+  // The compiler crashed, or could not be run: no fault of the submission's, and no grade. Its
+  // output is kept whole at the end, where the crash is described (runSandboxed).
+  const bool crashed = WIFSIGNALED(status) ? WTERMSIG(status) != SIGXCPU && WTERMSIG(status) != SIGKILL
+                                           : run.value().output.find("PLEASE submit a bug report") != std::string::npos;
+  if (crashed || (WIFEXITED(status) && WEXITSTATUS(status) == 127)) {
+    cleanUp();
+    return graderFailure(std::string(crashed ? "the compiler crashed" : "the compiler could not be run") + " compiling '" + source.string() + "' (" +
+                         onPath(setup.compiler) + (messages != nullptr ? "; its messages follow)" : "; its messages are above)"));
+  }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     cleanUp();
     const bool limited = WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL);
@@ -298,7 +307,7 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
   }
   fs::rename(partial, module, ec);  // atomic: a concurrent run sees the whole module or none
   cleanUp();
-  if (ec) return Status::failure("cannot store the compiled controller in '" + module.string() + "': " + ec.message());
+  if (ec) return graderFailure("cannot store the compiled controller in '" + module.string() + "': " + ec.message());
   return compiled;
 }
 
@@ -360,14 +369,20 @@ Result<CompiledController> compileSubmission(const fs::path& submission, const C
   fs::create_directories(setup.cacheDir, ec);
   removeStale(fs::absolute(setup.cacheDir), "submission");
   Result<Scratch> alone = Scratch::make(fs::absolute(setup.cacheDir), "submission");
-  if (!alone) return Status::failure("cannot make a folder for '" + submission.string() + "' in '" + setup.cacheDir.string() + "'");
+  if (!alone) return graderFailure("cannot make a folder for '" + submission.string() + "' in '" + setup.cacheDir.string() + "'");
   // A copy of its own, with its headers, in a fresh folder (a class folder holds .cpp files, one a student).
   std::vector<Companion> companions = companionsBeside(source, sources);
   const fs::path file = source.filename();
-  std::ofstream(alone.value().path() / file, std::ios::binary) << text.value();
+  const auto copy = [&](const fs::path& name, const std::string& bytes) {
+    std::ofstream out(alone.value().path() / name, std::ios::binary);
+    return static_cast<bool>(out << bytes << std::flush);
+  };
+  if (!copy(file, text.value()))
+    return graderFailure("cannot copy '" + source.string() + "' into '" + alone.value().path().string() + "' (a full disk?)");
   for (Companion& c : companions) {
     c.file = c.file.filename();
-    std::ofstream(alone.value().path() / c.file, std::ios::binary) << c.text;
+    if (!copy(c.file, c.text))
+      return graderFailure("cannot copy '" + c.file.string() + "' into '" + alone.value().path().string() + "' (a full disk?)");
   }
   return compile(submission, text.value(), companions, file, alone.value().path(), setup, messages);
 }

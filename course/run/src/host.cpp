@@ -27,7 +27,7 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
   auto impl = std::make_unique<Impl>();
   impl->def = std::move(def);
   impl->sources = sources;
-  const auto failure = [](const std::string& what) { return Status::failure("cannot start the controller host: " + what); };
+  const auto failure = [](const std::string& what) { return graderFailure("cannot start the controller host: " + what); };
 
   // A scratch folder of its own: a copy of each module, which it may read, and `work`, its working
   // folder and the only one it may write (a tmpfs of its own where the kernel allows), and in a
@@ -42,7 +42,7 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
   const fs::path& folder = impl->scratch.path();
   const fs::path work = folder / "work", reports = folder / "reports";
   fs::permissions(folder, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec, ec);  // nobody passes through
-  std::vector<std::string> command{layout().controllerHost.string()};
+  std::vector<std::string> command{(impl->def.program.empty() ? layout().controllerHost : impl->def.program).string()};
   for (std::size_t m = 0; m < modules.size(); ++m) {
     const fs::path copy = folder / ("m" + std::to_string(m) + ".so");
     if (!fs::copy_file(modules[m], copy, ec)) return failure("cannot copy " + modules[m].string() + ": " + ec.message());
@@ -103,7 +103,7 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
   Result<Sandboxed> process = Sandboxed::start(program);
   out.value().write.reset();  // the host holds its own copies
   wake.value().write.reset();
-  if (!process) return failure(process.error());
+  if (!process) return process.status();  // frob's failure, never the controller's (sandboxed.hpp)
   impl->process = std::move(process.value());
   impl->layers = impl->process.layers();
   impl->runDeadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(d.runSeconds));
@@ -113,13 +113,13 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
     const std::uint32_t m = impl->header().robot;
     return Status::failure("the controller " + (m < sources.size() ? "'" + sources[m] + "' " : "") + "failed: " + why);
   };
-  if (Status s = impl->await(1, d.startSeconds, true); !s) return named(s.error() + when(0.0, impl->header().activity));
+  if (Status s = impl->await(1, d.startSeconds, true); !s) return isGraderFailure(s) ? s : named(s.error() + when(0.0, impl->header().activity));
   if (Status s = impl->refusal(); !s) return named(s.error() + when(0.0, Activity::Loading));
   std::vector<std::byte> setup(impl->channel.setup().begin(), impl->channel.setup().end());
   sandbox::Reader r(setup);
   sandbox::LoadReply reply;
-  if (!sandbox::read(r, reply) || reply.modules.size() != modules.size()) {
-    return failure("its answer was not understood" + (r.why().empty() ? std::string() : ": " + r.why()));
+  if (!sandbox::read(r, reply) || reply.modules.size() != modules.size()) {  // its setup area is the controller's to overwrite
+    return named("its host's answer to loading was not understood" + (r.why().empty() ? std::string() : ": " + r.why()));
   }
   impl->layers.push_back({reply.seccomp.name, reply.seccomp.applied, true, reply.seccomp.note});
   for (std::size_t m = 0; m < reply.modules.size(); ++m) {

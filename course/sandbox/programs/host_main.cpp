@@ -132,6 +132,9 @@ void step(const Channel& channel, std::vector<Driven>& driven, const Instant& no
 }  // namespace
 
 int main(int argc, char** argv) {
+  // First of all, a byte on the wake-up pipe: this program started. A host that dies without it
+  // never ran a controller's code (its loader failed), which is frob's failure, not the student's.
+  [[maybe_unused]] const ssize_t started = ::write(kWakeFd, "s", 1);
   Channel channel;
   if (Status s = channel.attach(kChannelFd); !s) {
     std::fprintf(stderr, "frob-controller-host: %s\n", s.error().c_str());

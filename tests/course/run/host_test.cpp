@@ -234,6 +234,50 @@ TEST(Sandbox, NoFlagAHostSetsMakesTheGraderBlock) {
   }
 }
 
+// A copy of /usr/bin/true whose loader cannot find its C library: it ends with exit status 127
+// before its first instruction, as a host program does whose libraries are missing.
+fs::path unloadableProgram(const fs::path& dir) {
+  std::ifstream in("/usr/bin/true", std::ios::binary);
+  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  for (std::size_t at; (at = bytes.find(std::string("libc.so.6\0", 10))) != std::string::npos;) bytes[at + 3] = 'q';
+  const fs::path program = dir / "unloadable";
+  std::ofstream(program, std::ios::binary) << bytes;
+  fs::permissions(program, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec | fs::perms::others_read);
+  return program;
+}
+
+// A host program that cannot be run, or that dies before its first instruction, is frob's failure
+// (kGraderFailure: no grade may rest on it), never the controller's; a controller that ends its
+// program the same way in a global constructor is the controller's.
+TEST(Sandbox, AHostProgramThatCannotStartIsTheGradersFailure) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "host_test_unstartable";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "not_a_program") << "#!/bin/sh\n";  // not executable
+  fs::permissions(dir / "not_a_program", fs::perms::owner_read | fs::perms::owner_write | fs::perms::others_read);
+  const auto start = [](const fs::path& program) {
+    return ControllerHost::start({testing::hostileModule("segfault")}, {"segfault"}, {.program = program});
+  };
+  const Result<std::shared_ptr<ControllerHost>> missing = start(dir / "missing"), denied = start(dir / "not_a_program");
+  const Result<std::shared_ptr<ControllerHost>> unloadable = start(unloadableProgram(dir));
+  for (const Status& s : {missing.status(), denied.status(), unloadable.status()}) EXPECT_TRUE(isGraderFailure(s)) << s.error();
+  EXPECT_NE(missing.error().find("No such file or directory"), std::string::npos) << missing.error();
+  EXPECT_NE(denied.error().find("Permission denied"), std::string::npos) << denied.error();
+  EXPECT_NE(unloadable.error().find("the controller host could not start: exit status 127: "), std::string::npos) << unloadable.error();
+  EXPECT_NE(unloadable.error().find("libq.so.6"), std::string::npos) << unloadable.error();
+  const Outcome own = runHostile({"exits_127_in_constructor"});
+  EXPECT_EQ(own.startError,
+            "the controller 'exits_127_in_constructor' failed: ended its program with exit status 127 (a controller must not call exit; its "
+            "results would not count) at t = 0.00 s (in a global constructor)");
+}
+
+// What a controller prints reaches the terminal with its control characters shown, not acted on;
+// a character cut across two writes arrives whole.
+TEST(Sandbox, EscapeSequencesAControllerPrintsAreShownNotActedOn) {
+  const Outcome o = runHostile({"prints_escapes"});
+  EXPECT_EQ(o.output, "\\x1b[2J\\x1b]52;c;ZXZpbA==\\x07\\x1bPq#0\\x1b\\\\u009b31m\\x0dTotal 7 / 7 \\xe9\ncaf\xc3\xa9\n");
+}
+
 // A controller that answers each step just inside its deadline falls behind the run's pace and
 // fails within seconds, not after the run's 600 s.
 TEST(Sandbox, AControllerThatSleepsInEveryStepFallsBehindAndFails) {

@@ -84,8 +84,9 @@ struct CheckGrade {
 /// A submission's grade.
 struct Grade {
   std::string assignment;
-  std::string submission;    ///< the file or folder, as given
-  std::string compileError;  ///< the compiler's complaint when it did not compile (then every check scores 0)
+  std::string submission;     ///< the file or folder, as given
+  std::string compileError;   ///< the compiler's complaint when it did not compile (then every check scores 0)
+  std::string graderFailure;  ///< why frob or the machine could not grade it (kGraderFailure): then it has no grade at all, not 0
   std::vector<CheckGrade> checks;
   std::vector<std::string> notes;  ///< e.g. output that was cut
   std::string sandboxMissing;      ///< the sandbox's layers this machine could not apply, one per line; for the instructor only
@@ -96,7 +97,8 @@ struct Grade {
 };
 
 /// Compiles and grades `submission`, a .cpp file or a folder of several (see compileSubmission()). Never fails on the submission's account: a compile
-/// error, a crash or a hang scores 0 in the checks it touched, with the reason.
+/// error, a crash or a hang scores 0 in the checks it touched, with the reason. A failure of frob or the machine (a host that cannot
+/// start, a full disk) stops it with Grade::graderFailure set: no score stands.
 [[nodiscard]] Grade grade(const GradeDef& def, const std::filesystem::path& submission);
 
 /// Grades each of `submissions` (a class), `jobs` at a time, in their order; `progress(done, total)`
