@@ -9,6 +9,7 @@
 
 #include <cxxabi.h>
 #include <dlfcn.h>
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -156,14 +157,26 @@ Result<LoadedController> loadInProcess(const CompiledController& compiled) {
 
 namespace {
 
-// The text of controller file `source`, or why it cannot be read.
-Result<std::string> readControllerFile(const fs::path& source) {
-  std::ifstream in(source, std::ios::binary);
-  if (!in || fs::is_directory(source))
-    return Status::failure("controller file '" + source.string() +
-                           "' cannot be read: " + (fs::exists(source) ? "not a readable file" : "it does not exist"));
-  return std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+// The text of `file` if it is a regular file of at most `bytes`: a FIFO or a device is never opened
+// for reading (it could block for ever) and, unless `followLinks`, a symbolic link is not followed
+// (it could name the secret, /etc/shadow or a classmate's file); else why not.
+Result<std::string> regularFileText(const fs::path& file, std::uintmax_t bytes, bool followLinks) {
+  const auto refused = [&](const std::string& why) { return Status::failure("'" + file.string() + "' cannot be read: " + why); };
+  const sandbox::Fd fd(::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | (followLinks ? 0 : O_NOFOLLOW)));
+  struct stat st {};
+  if (!fd.valid() && errno == ELOOP) return refused("it is a symbolic link, and a submission's links are never followed: submit the file itself");
+  if (!fd.valid()) return refused(errno == ENOENT ? "it does not exist" : std::strerror(errno));
+  if (::fstat(fd.get(), &st) != 0 || !S_ISREG(st.st_mode)) return refused("not a regular file (a folder, a FIFO or a device?)");
+  if (static_cast<std::uintmax_t>(st.st_size) > bytes) return refused("larger than " + std::to_string(bytes >> 10) + " KiB");
+  std::string text(static_cast<std::size_t>(st.st_size), '\0');
+  std::size_t got = 0;
+  for (ssize_t n; got < text.size() && (n = ::read(fd.get(), text.data() + got, text.size() - got)) > 0;) got += static_cast<std::size_t>(n);
+  text.resize(got);
+  return text;
 }
+
+// The text of controller file `source`, or why it cannot be read.
+Result<std::string> readControllerFile(const fs::path& source, bool followLinks) { return regularFileText(source, kSourceBytes, followLinks); }
 
 // The regular files of `dir` (not links) with one of `extensions`, by name, at most `most` of at most `bytes` each.
 std::vector<fs::path> filesIn(const fs::path& dir, std::initializer_list<const char*> extensions, std::size_t most, std::uintmax_t bytes) {
@@ -180,9 +193,10 @@ std::vector<fs::path> filesIn(const fs::path& dir, std::initializer_list<const c
   return found;
 }
 
+// The text of a file filesIn() found: "" if it has since become anything but such a file.
 std::string textOf(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  Result<std::string> text = regularFileText(file, kSourceBytes, false);
+  return text ? text.value() : std::string();
 }
 
 // A file compiled with a controller, or read by its compile: its name and text.
@@ -197,6 +211,19 @@ std::vector<Companion> companionsBeside(const fs::path& source, const std::vecto
   for (const fs::path& f : sources) all.push_back({f, textOf(f)});
   for (const fs::path& f : filesIn(source.parent_path(), {".h", ".hpp"}, kHeaders, kHeaderBytes)) all.push_back({f, textOf(f)});
   return all;
+}
+
+// Refuses a file of a controller named like a compiler's option or response file ("-x.cpp", "@opts.cpp").
+// (They reach it as "./-x.cpp" anyway: this says what the name would have done, and how to mend it.)
+Status namesNoOption(const fs::path& source, std::vector<fs::path> sources) {
+  sources.push_back(source);
+  for (const fs::path& f : sources) {
+    const std::string name = f.filename().string();
+    if (!name.starts_with('-') && !name.starts_with('@')) continue;
+    return Status::failure("'" + f.string() + "': a file name that begins with '" + name.substr(0, 1) + "' would reach the compiler as " +
+                           (name[0] == '-' ? "an option" : "a file of options to read (a response file)") + ": rename it");
+  }
+  return {};
 }
 
 std::string tooMany(const fs::path& dir, std::size_t n) {
@@ -263,9 +290,11 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
   program.command.insert(program.command.end(), setup.flags.begin(), setup.flags.end());
   if (pch) program.command.insert(program.command.end(), {"-include-pch", setup.precompiledHeader});
   // gold (binutils', as ld is) links a module in half the time of ld.bfd.
-  program.command.insert(program.command.end(), {"-fuse-ld=gold", "-shared", "-o", partial.string(), file.string()});
+  // Paths that cannot be read as options or response files ("./-x.cpp", "./@opts.cpp").
+  const auto asInput = [](const fs::path& f) { return (f.is_absolute() ? f : fs::path(".") / f).string(); };
+  program.command.insert(program.command.end(), {"-fuse-ld=gold", "-shared", "-o", partial.string(), asInput(file)});
   for (const Companion& c : companions) {
-    if (c.file.extension() == ".cpp") program.command.push_back(c.file.string());
+    if (c.file.extension() == ".cpp") program.command.push_back(asInput(c.file));
   }
   Result<SandboxedRun> run = runSandboxed(std::move(program), setup.seconds, 1 << 20);
   const auto cleanUp = [&] { folder = Scratch(); };
@@ -340,10 +369,11 @@ std::vector<fs::path> companionsOf(const fs::path& source) {
 }
 
 Result<CompiledController> compileControllerFile(const fs::path& source, const CompilerSetup& setup, std::string* messages) {
-  Result<std::string> text = readControllerFile(source);
+  Result<std::string> text = readControllerFile(source, true);
   if (!text) return text.status();
   const std::vector<fs::path> sources = companionsOf(source);
   if (sources.size() > kCompanions) return Status::failure(tooMany(source.parent_path(), sources.size()));
+  if (Status s = namesNoOption(source, sources); !s) return s;
   // Messages name the files as they were given.
   return compile(source, text.value(), companionsBeside(source, sources), source, fs::current_path(), setup, messages);
 }
@@ -351,6 +381,10 @@ Result<CompiledController> compileControllerFile(const fs::path& source, const C
 Result<CompiledController> compileSubmission(const fs::path& submission, const CompilerSetup& setup, std::string* messages) {
   fs::path source = submission;
   std::vector<fs::path> sources;
+  std::error_code ec;
+  if (fs::is_symlink(submission, ec)) {
+    return Status::failure("'" + submission.string() + "' is a symbolic link, and a submission's links are never followed: submit the file itself");
+  }
   if (fs::is_directory(submission)) {  // a submission of several files: its one controller, and the rest
     std::vector<fs::path> controllers;
     for (const fs::path& f : filesIn(submission, {".cpp"}, SIZE_MAX, kSourceBytes)) (holdsController(textOf(f)) ? controllers : sources).push_back(f);
@@ -363,9 +397,9 @@ Result<CompiledController> compileSubmission(const fs::path& submission, const C
     if (sources.size() > kCompanions) return Status::failure(tooMany(submission, sources.size()));
     source = controllers.front();
   }
-  Result<std::string> text = readControllerFile(source);
+  Result<std::string> text = readControllerFile(source, false);
   if (!text) return text.status();
-  std::error_code ec;
+  if (Status s = namesNoOption(source, sources); !s) return s;
   fs::create_directories(setup.cacheDir, ec);
   removeStale(fs::absolute(setup.cacheDir), "submission");
   Result<Scratch> alone = Scratch::make(fs::absolute(setup.cacheDir), "submission");

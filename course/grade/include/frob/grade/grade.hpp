@@ -107,7 +107,8 @@ struct Grade {
                                           const std::function<void(std::size_t done, std::size_t total)>& progress = {});
 
 /// The submissions in `dir`, sorted: each .cpp file in it, compiled alone, and each subfolder that holds
-/// .cpp files, a submission of several files.
+/// .cpp files, a submission of several files; links and special files too, which compiling refuses
+/// (never followed: one could name the secret, /etc/shadow or a classmate's file).
 [[nodiscard]] std::vector<std::filesystem::path> submissionsIn(const std::filesystem::path& dir);
 /// What to grade for controller file `file`: its folder when the file is the folder's one controller
 /// and other .cpp files lie beside it (a submission of several files), else the file alone.
