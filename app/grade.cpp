@@ -110,12 +110,14 @@ int notGraded(const course::Grade& g) {
               "\nThis is no fault of the submission: no results were written and no score stands; grade it again once fixed.");
 }
 
-int replayCommand(const std::string& log, const std::string& secretFile) {
+int replayCommand(const std::string& log, const std::string& secretFile, const std::string& submission) {
   Result<std::string> secret = readSecret(secretFile);
   if (!secret) return fail(secret.error(), 2);
-  Result<course::Replay> r = course::replay(log, secret.value());
+  Result<course::Replay> r = course::replay(log, secret.value(), submission);
   if (!r) return fail(r.error());
   const course::RunGrade& run = r.value().run;
+  std::printf("the log of %s (SHA-256 %s%s%s)\n", course::terminalSafe(r.value().submission).c_str(), r.value().submissionHash.c_str(),
+              r.value().student.empty() ? "" : ", submitted by ", course::terminalSafe(r.value().student).c_str());
   std::printf("check %s, world %s, seed %llu: %s%s\ntrajectory %016llx\n", course::terminalSafe(r.value().check).c_str(),
               course::terminalSafe(run.world).c_str(), static_cast<unsigned long long>(run.seed),
               run.passed ? "passed" : "FAILED: ", course::terminalSafe(run.reason).c_str(), static_cast<unsigned long long>(run.trajectoryHash));
@@ -134,7 +136,7 @@ int mergeCommand(const GradeArgs& a) {
 }  // namespace
 
 int gradeCommand(const GradeArgs& a) {
-  if (!a.replay.empty()) return replayCommand(a.replay, a.secret);
+  if (!a.replay.empty()) return replayCommand(a.replay, a.secret, a.submission.empty() ? a.assignment : a.submission);
   if (!a.merge.empty()) return mergeCommand(a);
   if (a.assignment.empty()) return fail("which assignment? frob grade ASSIGNMENT SUBMISSION (see frob grade --help)", 2);
   Result<fs::path> rubricFile = course::findRubric(a.assignment);
@@ -174,7 +176,8 @@ int gradeCommand(const GradeArgs& a) {
                        .assignment = fs::path(a.assignment).filename().string(),
                        .secret = secret.value(),
                        .visibleOnly = a.visibleOnly,
-                       .logs = a.logs};
+                       .logs = a.logs,
+                       .student = a.student};
   if (def.assignment == "rubric.toml") def.assignment = fs::path(a.assignment).parent_path().filename().string();
   if (!def.visibleOnly) {  // no student meets a hidden world the reference solution fails
     Result<course::KeptWorlds> fair = course::fairHiddenWorlds(def);
