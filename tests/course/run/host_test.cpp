@@ -133,27 +133,28 @@ TEST_P(Hostile, FailsItsRobotWithAReasonAndNothingElse) {
 
 INSTANTIATE_TEST_SUITE_P(
     Sandbox, Hostile,
-    ::testing::Values(Case{"segfault", "ada: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.50 s"},
-                      Case{"abort", "ada: crashed with SIGABRT (abort(), a failed assert, or an exception nothing caught) at t = 0.50 s"},
-                      Case{"stack_overflow", "ada: crashed with SIGSEGV: its stack overflowed (a recursion that never ends?) at t = 0.50 s"},
-                      Case{"endless_loop", "ada: used more than 1 s of CPU in one step (an endless loop?) at t = 0.50 s"},
-                      Case{"sleeps", "ada: did not answer within 1 s in one step (it waited or slept) at t = 0.50 s"},
-                      Case{"forks", "ada: tried to start another process (not allowed) at t = 0.50 s"},
-                      Case{"runs_shell", "ada: tried to start another process (not allowed) at t = 0.50 s"},
-                      Case{"opens_socket", "ada: tried to open a network socket (not allowed) at t = 0.50 s"},
-                      Case{"signals_parent", "ada: tried to signal another process (not allowed) at t = 0.50 s"},
-                      Case{"shares_memory",
-                           "ada: tried to make a kernel object shared between processes (System V IPC or a POSIX message queue) (not "
-                           "allowed) at t = 0.50 s"},
-                      Case{"signals_by_file",
-                           "ada: tried to ask for signals on a file (fcntl F_SETOWN, F_SETSIG or F_SETLEASE) (not allowed) at t = 0.50 s"},
-                      Case{"reads_outside", "ada: tried to read /etc/passwd (not allowed) at t = 0.50 s"},
-                      Case{"writes_outside", "ada: tried to write /tmp/frob-hostile-was-here (not allowed) at t = 0.50 s"},
-                      Case{"forged_exit",
-                           "ada: ended its program with exit status 0 (a controller must not call exit; its results would "
-                           "not count) at t = 0.50 s"},
-                      Case{"throws_int", "ada: an exception of unknown type"},
-                      Case{"commands_nan", "ada: the controller commanded non-finite wheels {forward nan m/s, turn 0.000 rad/s} at t = 0.500 s"}),
+    ::testing::Values(
+        Case{"segfault", "ada: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.50 s"},
+        Case{"abort", "ada: crashed with SIGABRT (abort(), a failed assert, or an exception nothing caught) at t = 0.50 s"},
+        Case{"stack_overflow", "ada: crashed with SIGSEGV: its stack overflowed (a recursion that never ends?) at t = 0.50 s"},
+        Case{"endless_loop", "ada: used more than 1 s of CPU in one step (an endless loop?) at t = 0.50 s"},
+        Case{"sleeps", "ada: did not answer within 1 s in one step (it waited or slept) at t = 0.50 s"},
+        Case{"forks", "ada: tried to start another process (not allowed) at t = 0.50 s"},
+        Case{"runs_shell", "ada: tried to start another process (not allowed) at t = 0.50 s"},
+        Case{"opens_socket", "ada: tried to open a network socket (not allowed) at t = 0.50 s"},
+        Case{"signals_parent", "ada: tried to signal another process (not allowed) at t = 0.50 s"},
+        Case{"renices_others", "ada: tried to change the scheduling, priority or limits of another process (not allowed) at t = 0.50 s"},
+        Case{"shares_memory",
+             "ada: tried to make a kernel object shared between processes (System V IPC or a POSIX message queue) (not "
+             "allowed) at t = 0.50 s"},
+        Case{"signals_by_file", "ada: tried to ask for signals on a file (fcntl F_SETOWN, F_SETSIG or F_SETLEASE) (not allowed) at t = 0.50 s"},
+        Case{"reads_outside", "ada: tried to read /etc/passwd (not allowed) at t = 0.50 s"},
+        Case{"writes_outside", "ada: tried to write /tmp/frob-hostile-was-here (not allowed) at t = 0.50 s"},
+        Case{"forged_exit",
+             "ada: ended its program with exit status 0 (a controller must not call exit; its results would "
+             "not count) at t = 0.50 s"},
+        Case{"throws_int", "ada: an exception of unknown type"},
+        Case{"commands_nan", "ada: the controller commanded non-finite wheels {forward nan m/s, turn 0.000 rad/s} at t = 0.500 s"}),
     [](const ::testing::TestParamInfo<Case>& info) { return info.param.module; });
 
 // A host that closes its output makes the pipe poll ready for ever: the grader still waits for the
@@ -276,6 +277,14 @@ TEST(Sandbox, AHostProgramThatCannotStartIsTheGradersFailure) {
 TEST(Sandbox, EscapeSequencesAControllerPrintsAreShownNotActedOn) {
   const Outcome o = runHostile({"prints_escapes"});
   EXPECT_EQ(o.output, "\\x1b[2J\\x1b]52;c;ZXZpbA==\\x07\\x1bPq#0\\x1b\\\\u009b31m\\x0dTotal 7 / 7 \\xe9\ncaf\xc3\xa9\n");
+}
+
+// A host cannot read what the kernel shows of another process's scheduling, nor lock a file every
+// host may read: two hosts could pass notes through either.
+TEST(Sandbox, AHostSeesNothingOfAnotherProcessesSchedulingAndTakesNoLock) {
+  const Outcome o = runHostile({"reads_others_scheduling"});
+  EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
+  EXPECT_EQ(o.lastWheels, (Wheels{0.1, 0.0}));
 }
 
 // A controller that answers each step just inside its deadline falls behind the run's pace and
