@@ -299,6 +299,12 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
   Result<SandboxedRun> run = runSandboxed(std::move(program), setup.seconds, 1 << 20);
   const auto cleanUp = [&] { folder = Scratch(); };
   if (!run) return cleanUp(), run.status();
+  // Students read these messages: the grader's folders (a crash prints the whole command) go by name only.
+  for (const auto& [grader, alias] : {std::pair{fs::absolute(setup.cacheDir).string(), std::string("$FROB_CACHE_DIR")},
+                                      std::pair{setup.precompiledHeader, std::string("frob.pch")}}) {
+    for (std::size_t at = 0; !grader.empty() && (at = run.value().output.find(grader, at)) != std::string::npos; at += alias.size())
+      run.value().output.replace(at, grader.size(), alias);
+  }
   show(run.value().output);
   if (run.value().timedOut) {
     cleanUp();

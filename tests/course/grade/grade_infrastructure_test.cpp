@@ -85,6 +85,10 @@ TEST_F(GraderFailure, ACompilerCrashIsNoGradeAndItsEndIsKept) {
   EXPECT_EQ(g.graderFailure.rfind("the grader failed: the compiler crashed compiling '", 0), 0u) << g.graderFailure.substr(0, 300);
   EXPECT_NE(g.graderFailure.find("bytes cut ...]"), std::string::npos);
   EXPECT_NE(g.graderFailure.find("PLEASE submit a bug report"), std::string::npos);
+  // The whole command it prints names the grader's folders by name only.
+  EXPECT_EQ(g.graderFailure.find(fs::absolute(def_.compiler.cacheDir).string()), std::string::npos);
+  EXPECT_EQ(g.graderFailure.find(def_.compiler.precompiledHeader), std::string::npos);
+  EXPECT_NE(g.graderFailure.find("$FROB_CACHE_DIR/"), std::string::npos);
   EXPECT_TRUE(g.checks.empty());
 }
 
