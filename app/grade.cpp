@@ -6,6 +6,7 @@
 #include "frob/grade/grade_report.hpp"
 #include "frob/grade/gradescope.hpp"
 #include "frob/run/format.hpp"
+#include "frob/run/terminal_text.hpp"
 #include "progress.hpp"
 
 #include <unistd.h>
@@ -24,7 +25,7 @@ namespace {
 namespace fs = std::filesystem;
 
 int fail(const std::string& message, int status = 1) {
-  std::cerr << "frob: " << message << "\n";
+  std::cerr << "frob: " << course::terminalSafe(message, true) << "\n";
   return status;
 }
 
@@ -102,15 +103,24 @@ Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const cours
   return a.report.empty() ? Status() : course::writeHtmlReport(g, media, a.report);
 }
 
-int replayCommand(const std::string& log, const std::string& secretFile) {
+// A submission frob could not grade through its own or the machine's fault: said loudly, no results
+// written (Gradescope and PrairieLearn then report the autograder's failure, never a score), not 0.
+int notGraded(const course::Grade& g) {
+  return fail("could not grade " + course::terminalSafe(g.submission) + ": " + g.graderFailure +
+              "\nThis is no fault of the submission: no results were written and no score stands; grade it again once fixed.");
+}
+
+int replayCommand(const std::string& log, const std::string& secretFile, const std::string& submission) {
   Result<std::string> secret = readSecret(secretFile);
   if (!secret) return fail(secret.error(), 2);
-  Result<course::Replay> r = course::replay(log, secret.value());
+  Result<course::Replay> r = course::replay(log, secret.value(), submission);
   if (!r) return fail(r.error());
   const course::RunGrade& run = r.value().run;
-  std::printf("check %s, world %s, seed %llu: %s%s\ntrajectory %016llx\n", r.value().check.c_str(), run.world.c_str(),
-              static_cast<unsigned long long>(run.seed), run.passed ? "passed" : "FAILED: ", run.reason.c_str(),
-              static_cast<unsigned long long>(run.trajectoryHash));
+  std::printf("the log of %s (SHA-256 %s%s%s)\n", course::terminalSafe(r.value().submission).c_str(), r.value().submissionHash.c_str(),
+              r.value().student.empty() ? "" : ", submitted by ", course::terminalSafe(r.value().student).c_str());
+  std::printf("check %s, world %s, seed %llu: %s%s\ntrajectory %016llx\n", course::terminalSafe(r.value().check).c_str(),
+              course::terminalSafe(run.world).c_str(), static_cast<unsigned long long>(run.seed),
+              run.passed ? "passed" : "FAILED: ", course::terminalSafe(run.reason).c_str(), static_cast<unsigned long long>(run.trajectoryHash));
   return 0;
 }
 
@@ -126,7 +136,7 @@ int mergeCommand(const GradeArgs& a) {
 }  // namespace
 
 int gradeCommand(const GradeArgs& a) {
-  if (!a.replay.empty()) return replayCommand(a.replay, a.secret);
+  if (!a.replay.empty()) return replayCommand(a.replay, a.secret, a.submission.empty() ? a.assignment : a.submission);
   if (!a.merge.empty()) return mergeCommand(a);
   if (a.assignment.empty()) return fail("which assignment? frob grade ASSIGNMENT SUBMISSION (see frob grade --help)", 2);
   Result<fs::path> rubricFile = course::findRubric(a.assignment);
@@ -166,7 +176,8 @@ int gradeCommand(const GradeArgs& a) {
                        .assignment = fs::path(a.assignment).filename().string(),
                        .secret = secret.value(),
                        .visibleOnly = a.visibleOnly,
-                       .logs = a.logs};
+                       .logs = a.logs,
+                       .student = a.student};
   if (def.assignment == "rubric.toml") def.assignment = fs::path(a.assignment).parent_path().filename().string();
   if (!def.visibleOnly) {  // no student meets a hidden world the reference solution fails
     Result<course::KeptWorlds> fair = course::fairHiddenWorlds(def);
@@ -177,6 +188,7 @@ int gradeCommand(const GradeArgs& a) {
   if (!fs::is_directory(a.submission)) {
     if (!fs::exists(a.submission)) return fail("no submission '" + a.submission + "'", 2);
     const course::Grade g = course::grade(def, course::submissionOf(a.submission));
+    if (!g.graderFailure.empty()) return notGraded(g);
     warnOfMissingLayers({g});
     std::cout << course::scoreTable(g);
     if (Status s = writeOutputs(a, def, g); !s) return fail(s.error());
@@ -203,12 +215,20 @@ int gradeCommand(const GradeArgs& a) {
   });
   bar.finish();
   warnOfMissingLayers(grades);
+  std::size_t failed = 0;
   for (const course::Grade& g : grades) {
-    std::printf("%-40s %6.2f / %.2f%s\n", g.submission.c_str(), g.score(), g.maxScore(), g.compileError.empty() ? "" : "  (did not compile)");
+    if (!g.graderFailure.empty()) {
+      ++failed;
+      std::printf("%-40s NOT GRADED: %s\n", course::terminalSafe(g.submission).c_str(), course::terminalSafe(g.graderFailure).c_str());
+      continue;
+    }
+    std::printf("%-40s %6.2f / %.2f%s\n", course::terminalSafe(g.submission).c_str(), g.score(), g.maxScore(),
+                g.compileError.empty() ? "" : "  (did not compile)");
   }
   if (!a.gradebook.empty()) {
     if (Status s = course::writeGradebook(grades, a.gradebook); !s) return fail(s.error());
   }
+  if (failed > 0) return fail(std::to_string(failed) + " submissions were NOT GRADED: frob or this machine failed (above); grade them again");
   return 0;
 }
 

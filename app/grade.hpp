@@ -8,7 +8,7 @@ namespace frob::app {
 
 struct GradeArgs {
   std::string assignment, submission;
-  std::string results, prairielearn, junit, report, videos, logs, gradebook, secret, shard, replay, gradescopeZip;
+  std::string results, prairielearn, junit, report, videos, logs, gradebook, secret, shard, replay, gradescopeZip, student;
   std::vector<std::string> merge;
   bool visibleOnly = false;
   int jobs = 1;

@@ -388,7 +388,9 @@ The rubric format and the instructors' guide: course/grading.md)");
   gradeCmd->add_option("--shard", grade.shard, "Grade only shard I of N of the class, e.g. 2/8 (the same split on every machine)");
   gradeCmd->add_option("--gradebook", grade.gradebook, "Write the class's gradebook (CSV)");
   gradeCmd->add_option("--merge", grade.merge, "Merge these shard gradebooks into --gradebook");
-  gradeCmd->add_option("--replay", grade.replay, "Replay a run's wheel log in the simulator and judge it again");
+  gradeCmd->add_option("--replay", grade.replay,
+                       "Replay a run's wheel log in the simulator and judge it again (with SUBMISSION: refused unless the log is of it)");
+  gradeCmd->add_option("--student", grade.student, "Who submitted it, named in its wheel logs");
   gradeCmd->add_option("--gradescope-zip", grade.gradescopeZip, "Write the assignment's autograder zip for Gradescope");
 
   std::string kind, worldOut;

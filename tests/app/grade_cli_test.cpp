@@ -185,8 +185,15 @@ TEST(GradeCli, AReplayFromTheCommandLineGivesTheVerdictAndHashAgain) {
   EXPECT_EQ(runFrob(dir, {"grade", "--replay", "logs/goes_forward__room__1.log"}).status, 1);  // the secret checks its signature
   const FrobResult r = runFrob(dir, {"grade", "--replay", "logs/goes_forward__room__1.log", "--secret", "secret.txt"});
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(r.out.rfind("check goes forward, world room.toml, seed 1: FAILED: never came within 0.40 m of goal", 0), 0u) << r.out;
+  EXPECT_EQ(r.out.rfind("the log of slow.cpp (SHA-256 ", 0), 0u) << r.out;  // whose run it replays
+  EXPECT_NE(r.out.find("\ncheck goes forward, world room.toml, seed 1: FAILED: never came within 0.40 m of goal"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("trajectory "), std::string::npos);
+  // Presented for another submission, it is refused.
+  std::ofstream(dir / "fast.cpp") << driver("0.3");
+  const FrobResult other = runFrob(dir, {"grade", "--replay", "logs/goes_forward__room__1.log", "--secret", "secret.txt", "fast.cpp"});
+  EXPECT_EQ(other.status, 1);
+  EXPECT_NE(other.err.find("this is the log of another submission (slow.cpp, SHA-256 "), std::string::npos) << other.err;
+  EXPECT_EQ(runFrob(dir, {"grade", "--replay", "logs/goes_forward__room__1.log", "--secret", "secret.txt", "slow.cpp"}).status, 0);
 }
 
 TEST(WorldGenerate, WritesAWorldThatRuns) {

@@ -1,15 +1,12 @@
 #include "frob/grade/grade.hpp"
 
 #include "frob/grade/judge.hpp"
+#include "frob/grade/wheel_log.hpp"
 #include "frob/run/diagnose.hpp"
 #include "frob/run/format.hpp"
 #include "frob/worlds/fnv.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/world_file.hpp"
-
-#include <openssl/crypto.h>
-#include <openssl/evp.h>
-#include <openssl/hmac.h>
 
 #include <algorithm>
 #include <chrono>
@@ -119,40 +116,33 @@ std::string logName(const std::string& check, const std::string& world, std::uin
   return name + ".log";
 }
 
-// HMAC-SHA256 of `text` keyed by the instructor's secret, in hex: what a log is signed with.
-std::string signature(const std::string& secret, std::string_view text) {
-  unsigned char mac[EVP_MAX_MD_SIZE];
-  unsigned int length = 0;
-  HMAC(EVP_sha256(), secret.data(), static_cast<int>(secret.size()), reinterpret_cast<const unsigned char*>(text.data()), text.size(), mac, &length);
-  std::string hex;
-  for (unsigned int i = 0; i < length; ++i) hex += format("%02x", mac[i]);
-  return hex;
-}
-
-// The log of a run: what to rebuild it from, what the controller said, the graded trajectory's
-// hash, and the wheels, as hex floating point so that they read back bit for bit; signed with the
-// secret when there is one.
-void writeLog(const fs::path& path, const Rubric& rubric, const Check& check, const WorldRef& world, std::uint64_t seed, const Ran& ran,
-              const std::string& secret) {
-  std::string text = format("frob-replay 2\nrubric %s\ncheck %s\nworld %s\nseed %" PRIu64 "\nsteps %zu\nrobots %zu\ntrajectory %016" PRIx64 "\n",
-                            fs::absolute(rubric.file).c_str(), check.name.c_str(), world.name.c_str(), seed, ran.wheels.size(),
-                            ran.record.robots.size(), ran.trajectoryHash);
-  if (world.generated) text += format("generated %s %" PRIu64 "\n", toString(*world.generated), world.worldSeed);
+// The log of a run, signed with the secret when there is one (wheel_log.hpp), written whole; false
+// when it could not be.
+bool writeLog(const fs::path& path, const GradeDef& def, const Check& check, const WorldRef& world, std::uint64_t seed, const Ran& ran,
+              const Grade& g) {
+  WheelLog log{.rubric = fs::absolute(def.rubric.file).string(),
+               .check = check.name,
+               .world = world.name,
+               .generated = world.generated ? std::string(toString(*world.generated)) : std::string(),
+               .worldSeed = world.worldSeed,
+               .seed = seed,
+               .submission = g.submission,
+               .submissionHash = g.submissionHash,
+               .student = def.student,
+               .trajectory = ran.trajectoryHash,
+               .robots = ran.record.robots.size(),
+               .wheels = ran.wheels};
   for (std::size_t i = 0; i < ran.record.robots.size(); ++i) {
     const Track& t = ran.record.robots[i];
-    if (!t.failure.empty()) text += format("failure %zu %s\n", i, t.failure.c_str());
-    if (t.returned) text += format("returned_at %zu %a\nreturned %zu %s\n", i, t.returnedAt, i, t.returned->c_str());
+    if (!t.failure.empty()) log.failures.emplace_back(i, t.failure);
+    if (t.returned) log.returnedAt.emplace_back(i, t.returnedAt), log.returned.emplace_back(i, *t.returned);
   }
-  text += "wheels\n";
-  for (const std::vector<Wheels>& step : ran.wheels) {
-    for (std::size_t i = 0; i < step.size(); ++i) text += format("%s%a %a", i == 0 ? "" : " ", step[i].forward, step[i].turn);
-    text += '\n';
-  }
-  if (!secret.empty()) text += "hmac " + signature(secret, text) + "\n";
+  const std::string text = wheelLogText(log, def.secret);
   const fs::path partial = path.string() + ".partial";
   std::ofstream(partial, std::ios::binary) << text;
   std::error_code ec;
   if (fs::file_size(partial, ec) == text.size()) fs::rename(partial, path, ec);
+  return !ec && fs::exists(path);
 }
 
 }  // namespace
@@ -222,6 +212,7 @@ void runCheck(const GradeDef& def, const CompiledController& compiled, const Che
   Result<RobotHosts> hosts = RobotHosts::start({compiled.module}, {compiled.source}, {0}, world.robots.size(), def.host);
   if (!hosts) {
     r.reason = hosts.error();
+    if (isGraderFailure(hosts.status())) g.graderFailure = hosts.error();
     return;
   }
   worlds::Run run(world, {.dt = def.rubric.dt, .seed = r.seed}, hosts.value().driver(false), {.keepSteps = false});
@@ -237,7 +228,7 @@ void runCheck(const GradeDef& def, const CompiledController& compiled, const Che
     std::error_code ec;
     fs::create_directories(def.logs, ec);
     r.log = def.logs / logName(check.name, ref.name, r.seed);
-    writeLog(r.log, def.rubric, check, ref, r.seed, ran, def.secret);
+    if (!writeLog(r.log, def, check, ref, r.seed, ran, g)) g.graderFailure = std::string(kGraderFailure) + "cannot write the log " + r.log.string();
   }
 }
 
@@ -333,6 +324,7 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
         return true;
       };
       if (world.ok() && passesAll(compiled.value()) && !(starter && passesAll(*starter))) mine.push_back(k);
+      if (!scratch.graderFailure.empty()) return Status::failure(scratch.graderFailure);
     }
     if (static_cast<int>(mine.size()) < wanted) {
       return Status::failure("only " + std::to_string(mine.size()) + " of the " + std::to_string(tries) + " worlds drawn for check '" + check.name +
@@ -346,7 +338,7 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
 
 Grade grade(const GradeDef& def, const fs::path& submission) {
   const auto start = std::chrono::steady_clock::now();
-  Grade g{.assignment = def.assignment, .submission = submission.string(), .startedAt = utcNow()};
+  Grade g{.assignment = def.assignment, .submission = submission.string(), .submissionHash = submissionHash(submission), .startedAt = utcNow()};
   KeptWorlds kept;
   if (def.kept) {
     kept = *def.kept;
@@ -357,11 +349,13 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
   }
   std::string messages;
   Result<CompiledController> compiled = compileSubmission(submission, def.compiler, &messages);
-  if (!compiled) g.compileError = compiled.error() + (messages.empty() ? "" : "\n" + messages);
+  if (!compiled)
+    (isGraderFailure(compiled.status()) ? g.graderFailure : g.compileError) = compiled.error() + (messages.empty() ? "" : "\n" + messages);
   // Loaded once per world, not per name: two checks' "hidden world 1" are different draws.
   std::map<std::string, Result<worlds::WorldDef>> loaded;
   for (const Check& check : def.rubric.checks) {
     if (def.visibleOnly && check.visibility != Visibility::Visible) continue;
+    if (!g.graderFailure.empty()) break;  // no grade: nothing more to run
     CheckGrade cg{.name = check.name, .points = check.points, .visibility = check.visibility};
     const std::vector<std::uint64_t> seeds = seedsOf(check, def.secret);
     for (const WorldRef& w : worldsOf(check, def.secret, kept)) {
@@ -370,6 +364,7 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
       if (known == loaded.end()) known = loaded.emplace(key, loadWorldRef(w)).first;
       const Result<worlds::WorldDef>& world = known->second;
       for (std::uint64_t seed : seeds) {
+        if (!g.graderFailure.empty()) break;
         RunGrade& r = cg.runs.emplace_back(RunGrade{.world = w.name, .seed = seed});
         if (!compiled) {
           r.reason = "the submission did not compile";
@@ -390,78 +385,29 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
   return g;
 }
 
-Result<Replay> replay(const fs::path& log, const std::string& secret) {
-  if (!fs::is_regular_file(log)) return Status::failure(log.string() + ": cannot open the log");
-  const std::string whole = fileText(log);
-  const auto bad = [&](const std::string& what) { return Status::failure(log.string() + ": not a wheel log of frob grade (" + what + ")"); };
-  // Only a log signed with the secret is replayed: anything else could have been edited.
-  const std::size_t signedAt = whole.rfind("\nhmac ");
-  if (signedAt == std::string::npos) {
-    return Status::failure(log.string() +
-                           ": the log is not signed (graded without the instructor's secret, or cut short), so nothing vouches for it");
+Result<Replay> replay(const fs::path& file, const std::string& secret, const fs::path& submission) {
+  if (!fs::is_regular_file(file)) return Status::failure(file.string() + ": cannot open the log");
+  Result<WheelLog> read = readWheelLog(fileText(file), secret);
+  if (!read) return Status::failure(file.string() + ": " + read.error());
+  WheelLog& log = read.value();
+  if (!submission.empty() && submissionHash(submission) != log.submissionHash) {
+    return Status::failure(file.string() + ": this is the log of another submission (" + log.submission + ", SHA-256 " + log.submissionHash +
+                           (log.student.empty() ? "" : ", " + log.student) + "), not of " + submission.string() + " (SHA-256 " +
+                           submissionHash(submission) + ")");
   }
-  if (secret.empty())
-    return Status::failure(log.string() + ": give the secret it was graded with (--secret FILE or $FROB_GRADE_SECRET) to check its signature");
-  const std::string body = whole.substr(0, signedAt + 1), given = whole.substr(signedAt + 6);
-  const std::string expected = signature(secret, body) + "\n";
-  if (given.size() != expected.size() || CRYPTO_memcmp(given.data(), expected.data(), given.size()) != 0) {
-    return Status::failure(log.string() + ": the log was changed after grading, or signed with another secret: its signature does not match");
-  }
-  std::istringstream in(body);
-  std::string line, rubricFile, checkName, worldName;
+  const std::string& rubricFile = log.rubric;
+  const std::string& checkName = log.check;
+  const std::string& worldName = log.world;
   std::optional<WorldRef> generated;
-  std::uint64_t seed = 0;
-  std::size_t steps = 0, robots = 0;
-  std::vector<std::pair<std::size_t, std::string>> failures, returned;
-  std::vector<std::pair<std::size_t, double>> returnedAt;
-  std::uint64_t graded = 0;
-  if (!std::getline(in, line) || line != "frob-replay 2") return bad("its first line");
-  while (std::getline(in, line) && line != "wheels") {
-    const std::size_t space = line.find(' ');
-    const std::string key = line.substr(0, space), value = space == std::string::npos ? "" : line.substr(space + 1);
-    if (key == "rubric")
-      rubricFile = value;
-    else if (key == "check")
-      checkName = value;
-    else if (key == "world")
-      worldName = value;
-    else if (key == "seed")
-      seed = std::stoull(value);
-    else if (key == "steps")
-      steps = std::stoull(value);
-    else if (key == "robots")
-      robots = std::stoull(value);
-    else if (key == "trajectory")
-      graded = std::stoull(value, nullptr, 16);
-    else if (key == "generated") {
-      const std::size_t gap = value.find(' ');
-      const std::optional<worlds::WorldKind> kind = worlds::worldKind(value.substr(0, gap));
-      if (!kind || gap == std::string::npos) return bad("line '" + line + "'");
-      generated = WorldRef{.generated = kind, .worldSeed = std::stoull(value.substr(gap + 1))};
-    } else if (key == "returned_at") {
-      const std::size_t gap = value.find(' ');
-      returnedAt.emplace_back(std::stoull(value.substr(0, gap)), std::strtod(value.c_str() + std::min(gap, value.size()), nullptr));
-    } else if (key == "failure" || key == "returned") {
-      const std::size_t gap = value.find(' ');
-      (key == "failure" ? failures : returned).emplace_back(std::stoull(value.substr(0, gap)), value.substr(gap + 1));
-    } else {
-      return bad("line '" + line + "'");
-    }
+  if (!log.generated.empty()) {
+    const std::optional<worlds::WorldKind> kind = worlds::worldKind(log.generated);
+    if (!kind) return Status::failure(file.string() + ": not a wheel log of frob grade (no world kind '" + log.generated + "')");
+    generated = WorldRef{.generated = kind, .worldSeed = log.worldSeed};
   }
-  std::vector<std::vector<Wheels>> wheels;
-  while (std::getline(in, line) && wheels.size() < steps) {
-    std::vector<Wheels>& step = wheels.emplace_back(robots);
-    const char* p = line.c_str();
-    for (Wheels& w : step) {
-      char* end = nullptr;
-      w.forward = std::strtod(p, &end);
-      w.turn = std::strtod(end, &end);
-      if (end == p) return bad("a line of wheels");
-      p = end;
-    }
-  }
-  if (wheels.size() != steps) return bad("it ends early");
-
+  const std::uint64_t seed = log.seed, graded = log.trajectory;
+  const std::size_t steps = log.wheels.size(), robots = log.robots;
+  const std::vector<std::vector<Wheels>>& wheels = log.wheels;
+  const auto bad = [&](const std::string& what) { return Status::failure(file.string() + ": not a wheel log of frob grade (" + what + ")"); };
   Result<Rubric> rubric = loadRubric(rubricFile);
   if (!rubric) return rubric.status();
   const auto check = std::find_if(rubric.value().checks.begin(), rubric.value().checks.end(), [&](const Check& c) { return c.name == checkName; });
@@ -479,15 +425,19 @@ Result<Replay> replay(const fs::path& log, const std::string& secret) {
   };
   worlds::Run run(world.value(), {.dt = rubric.value().dt, .seed = seed}, factory, {.keepSteps = false});
   Ran ran = drive(run, world.value(), static_cast<std::int64_t>(steps));
-  for (const auto& [i, why] : failures) ran.record.robots.at(i).failure = why;
-  for (const auto& [i, value] : returned) ran.record.robots.at(i).returned = value;
-  for (const auto& [i, at] : returnedAt) ran.record.robots.at(i).returnedAt = at;
+  for (const auto& [i, why] : log.failures) ran.record.robots.at(i).failure = why;
+  for (const auto& [i, value] : log.returned) ran.record.robots.at(i).returned = value;
+  for (const auto& [i, at] : log.returnedAt) ran.record.robots.at(i).returnedAt = at;
   if (ran.trajectoryHash != graded) {
-    return Status::failure(log.string() + format(": replaying it gives the trajectory %016" PRIx64 ", not the graded run's %016" PRIx64
-                                                 " (the simulator has changed since)",
-                                                 ran.trajectoryHash, graded));
+    return Status::failure(file.string() + format(": replaying it gives the trajectory %016" PRIx64 ", not the graded run's %016" PRIx64
+                                                  " (the simulator has changed since)",
+                                                  ran.trajectoryHash, graded));
   }
-  Replay r{.check = checkName, .run = {.world = worldName, .seed = seed, .trajectoryHash = ran.trajectoryHash, .log = log}};
+  Replay r{.check = checkName,
+           .submission = log.submission,
+           .submissionHash = log.submissionHash,
+           .student = log.student,
+           .run = {.world = worldName, .seed = seed, .trajectoryHash = ran.trajectoryHash, .log = file}};
   judgeRun(*check, ran.record, r.run);
   return r;
 }

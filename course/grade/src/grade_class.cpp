@@ -51,10 +51,14 @@ std::vector<fs::path> submissionsIn(const fs::path& dir) {
   std::vector<fs::path> found;
   std::error_code ec;
   for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
-    if (e.is_regular_file() && e.path().extension() == ".cpp") found.push_back(e.path());
-    if (!e.is_directory()) continue;
+    // Links and special files are listed, never followed: compiling one refuses it and says why.
+    const fs::file_status st = e.symlink_status(ec);
+    if (!fs::is_directory(st)) {
+      if (e.path().extension() == ".cpp" || fs::is_symlink(st)) found.push_back(e.path());
+      continue;
+    }
     for (const fs::directory_entry& f : fs::directory_iterator(e.path(), ec)) {
-      if (f.is_regular_file() && f.path().extension() == ".cpp") {
+      if (!fs::is_directory(f.symlink_status(ec)) && f.path().extension() == ".cpp") {
         found.push_back(e.path());
         break;
       }

@@ -98,6 +98,7 @@ std::string firstWords(std::string_view text, std::size_t most) {
 // all score 0, and this tells them apart.
 std::string resultOf(const Grade& g) {
   constexpr std::size_t kWords = 80;
+  if (!g.graderFailure.empty()) return "NOT GRADED: " + firstWords(g.graderFailure, kWords);
   if (!g.compileError.empty()) {
     const std::size_t error = g.compileError.find("error: ");  // the compiler's first error, else the reason
     return "did not compile: " +
@@ -138,10 +139,12 @@ Status writeGradebook(const std::vector<Grade>& grades, const fs::path& path) {
   }
   std::string csv = csvRecord(header);
   for (const Grade* g : sorted) {
-    std::vector<std::string> row{g->submission, number(g->score()), number(g->maxScore()), resultOf(*g)};
+    // A submission frob failed to grade has no score, nor any check's (never 0).
+    const bool graded = g->graderFailure.empty();
+    std::vector<std::string> row{g->submission, graded ? number(g->score()) : "", number(g->maxScore()), resultOf(*g)};
     for (std::size_t k = 4; k < header.size(); ++k) {
       const auto c = std::find_if(g->checks.begin(), g->checks.end(), [&](const CheckGrade& x) { return x.name == header[k]; });
-      row.push_back(c == g->checks.end() ? std::string() : number(c->score));  // empty: not graded
+      row.push_back(c == g->checks.end() || !graded ? std::string() : number(c->score));  // empty: not graded
     }
     csv += csvRecord(row);
   }

@@ -1,15 +1,15 @@
 #pragma once
 // Private: text from controllers and submissions made safe for where the grade shows it (a terminal,
 // XML, HTML), and files embedded in a page.
+#include "frob/run/terminal_text.hpp"
+
 #include <cstddef>
 #include <string>
 #include <string_view>
 
 namespace frob::course {
 
-/// `text` (one line) safe to print on a terminal: control characters and malformed UTF-8 become '?'; tabs stay.
-[[nodiscard]] std::string terminalSafe(std::string_view text);
-/// Columns a terminalSafe string takes (one per code point).
+/// Columns a terminalSafe() string takes (one per code point).
 [[nodiscard]] std::size_t widthOf(std::string_view text);
 /// `text` as XML 1.0 or HTML character data or, with `attribute`, a double-quoted attribute value; what XML forbids becomes U+FFFD.
 [[nodiscard]] std::string markupEscape(std::string_view text, bool attribute = false);

@@ -6,7 +6,6 @@
 #include "load_error.hpp"
 
 #include <fcntl.h>
-#include <sys/eventfd.h>
 
 #include <cerrno>
 #include <cmath>
@@ -28,7 +27,7 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
   auto impl = std::make_unique<Impl>();
   impl->def = std::move(def);
   impl->sources = sources;
-  const auto failure = [](const std::string& what) { return Status::failure("cannot start the controller host: " + what); };
+  const auto failure = [](const std::string& what) { return graderFailure("cannot start the controller host: " + what); };
 
   // A scratch folder of its own: a copy of each module, which it may read, and `work`, its working
   // folder and the only one it may write (a tmpfs of its own where the kernel allows), and in a
@@ -43,7 +42,7 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
   const fs::path& folder = impl->scratch.path();
   const fs::path work = folder / "work", reports = folder / "reports";
   fs::permissions(folder, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec, ec);  // nobody passes through
-  std::vector<std::string> command{layout().controllerHost.string()};
+  std::vector<std::string> command{(impl->def.program.empty() ? layout().controllerHost : impl->def.program).string()};
   for (std::size_t m = 0; m < modules.size(); ++m) {
     const fs::path copy = folder / ("m" + std::to_string(m) + ".so");
     if (!fs::copy_file(modules[m], copy, ec)) return failure("cannot copy " + modules[m].string() + ": " + ec.message());
@@ -59,8 +58,14 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
 
   if (Status s = impl->channel.create(kSetupBytes, std::max<std::uint32_t>(impl->def.robots, 1), kFrameBytes, kReplyBytes); !s)
     return failure(s.error());
-  impl->wake.reset(::eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK));
-  if (!impl->wake.valid()) return failure(std::string("eventfd: ") + std::strerror(errno));
+  // The wake-up is a pipe, not an object both sides hold: the grader's end is an open file of its
+  // own, whose non-blocking flag nothing in the host can clear (fcntl, ioctl FIONBIO), nor can it read
+  // the wake-ups meant for the grader.
+  Result<sandbox::Pipe> wake = sandbox::openPipe("its wake-up pipe");
+  if (!wake) return failure(wake.error());
+  impl->wake = std::move(wake.value().read);
+  ::fcntl(impl->wake.get(), F_SETFL, O_NONBLOCK);
+  ::fcntl(wake.value().write.get(), F_SETFL, O_NONBLOCK);  // a host that rings a full pipe goes on
   Result<sandbox::Pipe> out = sandbox::openPipe("its output's pipe");
   if (!out) return failure(out.error());
   impl->output = std::move(out.value().read);
@@ -75,7 +80,7 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
                        .namespaces = {.tasks = d.tasks, .scratch = work.string(), .scratchBytes = d.scratchBytes},
                        .files = {.read = {"/usr", "/lib", "/lib64", "/etc/ld.so.cache", folder.string()}, .write = {work.string()}},
                        .cwd = work.string(),
-                       .fds = {-1, out.value().write.get(), out.value().write.get(), impl->channel.fd(), impl->wake.get()}};
+                       .fds = {-1, out.value().write.get(), out.value().write.get(), impl->channel.fd(), wake.value().write.get()}};
   if (d.checked) {
     // The sanitizers' runtime (unless this program has its own), reporting into their own folder.
     program.env = sanitizerEnvironment(reports);
@@ -96,8 +101,9 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
   impl->memoryLimited = !kSanitizedBuild && !d.checked;
   if (!impl->memoryLimited) program.limits.memoryBytes = 0, program.files.read.push_back("/proc");
   Result<Sandboxed> process = Sandboxed::start(program);
-  out.value().write.reset();  // the host holds its own copy
-  if (!process) return failure(process.error());
+  out.value().write.reset();  // the host holds its own copies
+  wake.value().write.reset();
+  if (!process) return process.status();  // frob's failure, never the controller's (sandboxed.hpp)
   impl->process = std::move(process.value());
   impl->layers = impl->process.layers();
   impl->runDeadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(d.runSeconds));
@@ -107,13 +113,13 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
     const std::uint32_t m = impl->header().robot;
     return Status::failure("the controller " + (m < sources.size() ? "'" + sources[m] + "' " : "") + "failed: " + why);
   };
-  if (Status s = impl->await(1, d.startSeconds, true); !s) return named(s.error() + when(0.0, impl->header().activity));
+  if (Status s = impl->await(1, d.startSeconds, true); !s) return isGraderFailure(s) ? s : named(s.error() + when(0.0, impl->header().activity));
   if (Status s = impl->refusal(); !s) return named(s.error() + when(0.0, Activity::Loading));
   std::vector<std::byte> setup(impl->channel.setup().begin(), impl->channel.setup().end());
   sandbox::Reader r(setup);
   sandbox::LoadReply reply;
-  if (!sandbox::read(r, reply) || reply.modules.size() != modules.size()) {
-    return failure("its answer was not understood" + (r.why().empty() ? std::string() : ": " + r.why()));
+  if (!sandbox::read(r, reply) || reply.modules.size() != modules.size()) {  // its setup area is the controller's to overwrite
+    return named("its host's answer to loading was not understood" + (r.why().empty() ? std::string() : ": " + r.why()));
   }
   impl->layers.push_back({reply.seccomp.name, reply.seccomp.applied, true, reply.seccomp.note});
   for (std::size_t m = 0; m < reply.modules.size(); ++m) {

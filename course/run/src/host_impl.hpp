@@ -4,6 +4,7 @@
 // drives runs with them.
 
 #include "frob/run/host.hpp"
+#include "frob/run/terminal_text.hpp"
 #include "frob/sandbox/channel.hpp"
 #include "sandboxed.hpp"
 #include "sanitizer_report.hpp"
@@ -54,6 +55,13 @@ inline std::string when(double time, Activity activity) {
   }
 }
 
+// How a process ended, from its wait status: "exit status 127", "signal 9 (Killed)".
+inline std::string endOf(int status) {
+  if (WIFEXITED(status)) return "exit status " + std::to_string(WEXITSTATUS(status));
+  const int sig = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+  return "signal " + std::to_string(sig) + " (" + ::strsignal(sig) + ")";
+}
+
 inline double cpuSeconds(pid_t pid) {
   clockid_t clock{};
   timespec ts{};
@@ -78,10 +86,12 @@ struct ControllerHost::Impl {
   Scratch scratch;
   sandbox::Channel channel;
   Sandboxed process;
-  sandbox::Fd wake;    // eventfd the host writes when it answers and we sleep
-  sandbox::Fd output;  // read end of its stdout and stderr
+  sandbox::Fd wake;      // read end of the pipe the host writes when it answers and we sleep; non-blocking
+  bool started = false;  // the host program wrote on the wake-up pipe: it ran (a controller's code may have too)
+  sandbox::Fd output;    // read end of its stdout and stderr
   std::uint64_t outputSeen = 0;
-  std::string outputTail;  // the last of what it printed, where a failed assertion's message is
+  std::string outputTail;    // the last of what it printed, where a failed assertion's message is
+  std::string cutCharacter;  // the first bytes of a UTF-8 character the last read cut, shown with the rest
   std::vector<std::string> sources;
   std::vector<ControllerEntry> entries;
   std::vector<sandbox::Layer> layers;
@@ -105,7 +115,10 @@ struct ControllerHost::Impl {
     char buf[1 << 16];
     while (output.valid()) {
       const ssize_t n = ::read(output.get(), buf, sizeof buf);
-      if (n == 0) return output.reset();  // the host closed its output: nothing more to read or to poll
+      if (n == 0) {  // the host closed its output: nothing more to read or to poll
+        if (!cutCharacter.empty()) say("");
+        return output.reset();
+      }
       if (n < 0) return;
       const std::uint64_t room = def.outputBytes > outputSeen ? def.outputBytes - outputSeen : 0;
       const std::string_view text(buf, std::min<std::uint64_t>(room, static_cast<std::uint64_t>(n)));
@@ -116,17 +129,27 @@ struct ControllerHost::Impl {
     }
   }
 
-  // Passes on `text` as the host's output is.
-  void say(std::string_view text) const {
+  // Passes on `text` as the host's output is, its control characters made visible (an escape
+  // sequence would act on the terminal); a character cut by the end of a read waits for its rest.
+  void say(std::string_view text) {
+    std::string whole = std::exchange(cutCharacter, "") + std::string(text);
+    std::size_t lead = whole.size();
+    while (lead > 0 && whole.size() - lead < 3 && (static_cast<unsigned char>(whole[lead - 1]) & 0xC0) == 0x80) --lead;
+    if (!text.empty() && lead > 0) {
+      const auto b = static_cast<unsigned char>(whole[lead - 1]);
+      const std::size_t length = b >= 0xF0 ? 4 : b >= 0xE0 ? 3 : b >= 0xC0 ? 2 : 1;
+      if (length > whole.size() - lead + 1) cutCharacter = whole.substr(lead - 1), whole.resize(lead - 1);
+    }
+    const std::string shown = terminalSafe(whole, true);
     if (def.output) {
-      def.output(text);
+      def.output(shown);
     } else {
-      std::fwrite(text.data(), 1, text.size(), stderr);
+      std::fwrite(shown.data(), 1, shown.size(), stderr);
     }
   }
 
   // Why the host ended, from its sanitizers' report when checked, else its wait status and what it claimed it was doing.
-  std::string death(int status) const {
+  std::string death(int status) {
     if (def.checked) {
       if (std::optional<SanitizerFinding> f = readSanitizerReport(scratch.path() / "reports", outputTail, scratch.path())) {
         say("frob --check: " + f->reason + "\n" + f->stack);
@@ -186,6 +209,10 @@ struct ControllerHost::Impl {
         break;
       }
       const Clock::time_point now = Clock::now();
+      if (now >= deadline && starting && !started) {
+        process.kill();
+        return graderFailure("the controller host did not start within " + seconds(limit) + outputSaid());
+      }
       if (now >= deadline) {
         // A sleeper uses next to no CPU; a loop gets its share of a core even on a crowded machine.
         const bool busy = cpuFrom && cpuSeconds(process.pid()) - cpuFrom->second > 0.1 * std::chrono::duration<double>(now - cpuFrom->first).count();
@@ -208,13 +235,12 @@ struct ControllerHost::Impl {
       pollfd fds[3] = {{wake.get(), POLLIN, 0}, {output.get(), POLLIN, 0}, {process.pidfd(), POLLIN, 0}};
       const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count() + 1;
       ::poll(fds, 3, static_cast<int>(std::min<long long>(ms, 20)));
-      if (fds[0].revents != 0) {
-        std::uint64_t count = 0;
-        [[maybe_unused]] const ssize_t n = ::read(wake.get(), &count, sizeof count);
-      }
+      if (fds[0].revents != 0) drainWake();
       if (fds[1].revents != 0) drainOutput();
       if (fds[2].revents != 0) {
         drainOutput();
+        drainWake();
+        if (starting && !started) return graderFailure("the controller host could not start: " + endOf(process.wait()) + outputSaid());
         why = death(process.wait());
         break;
       }
@@ -232,6 +258,19 @@ struct ControllerHost::Impl {
     if (why.empty()) return {};
     process.kill();
     return Status::failure(why);
+  }
+
+  // Empties the wake-up pipe, noting that the host program started if anything was on it.
+  void drainWake() {
+    char rings[1 << 16];  // a whole pipe's worth: one read empties it, however fast the host rings
+    started = ::read(wake.get(), rings, sizeof rings) > 0 || started;
+  }
+
+  // What the host said before it started (its loader's complaint), after ": "; "" when nothing.
+  std::string outputSaid() const {
+    std::string said = outputTail;
+    while (!said.empty() && (said.back() == '\n' || said.back() == ' ')) said.pop_back();
+    return said.empty() ? "" : ": " + said;
   }
 
   // Fails with the file the host's refusal notes say a controller was refused, if it was.

@@ -1,6 +1,7 @@
 #include "sandboxed.hpp"
 
 #include "frob/base/layout.hpp"
+#include "frob/run/controller_file.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -20,7 +21,7 @@ namespace frob::course {
 
 Result<Sandboxed> Sandboxed::start(const SandboxedDef& def) {
   Result<sandbox::Pipe> report = sandbox::openPipe("cannot start the sandbox");
-  if (!report) return report.status();
+  if (!report) return graderFailure(report.error());
   const int keep = static_cast<int>(def.fds.size());
   std::vector<std::string> args{layout().sandbox.string(),
                                 "--keep-fds",
@@ -75,10 +76,10 @@ Result<Sandboxed> Sandboxed::start(const SandboxedDef& def) {
   report.value().write.reset();  // so that the report ends when frob-sandbox closes its copy
   if (err != 0) {
     j.pid_ = 0;
-    return Status::failure("cannot start the sandbox " + layout().sandbox.string() + ": " + std::strerror(err));
+    return graderFailure("cannot start the sandbox " + layout().sandbox.string() + ": " + std::strerror(err));
   }
   j.pidfd_.reset(static_cast<int>(::syscall(SYS_pidfd_open, j.pid_, 0)));
-  // The report ends when frob-sandbox closes it, just before it runs the program (or dies).
+  // The report ends as frob-sandbox runs the program (or dies); a line "!why" says it could not.
   std::string text;
   char buf[4096];
   for (ssize_t n; (n = ::read(report.value().read.get(), buf, sizeof buf)) != 0;) {
@@ -88,12 +89,13 @@ Result<Sandboxed> Sandboxed::start(const SandboxedDef& def) {
   }
   std::istringstream lines(text);
   for (std::string line; std::getline(lines, line);) {
+    if (line.starts_with('!')) return graderFailure(line.substr(1) + " (exit status " + std::to_string(WEXITSTATUS(j.wait())) + ")");
     const std::size_t a = line.find('\t'), b = line.find('\t', a + 1);
     if (b == std::string::npos) continue;
     const std::string flags = line.substr(a + 1, b - a - 1);  // applied, then required
     j.layers_.push_back({line.substr(0, a), flags.starts_with("1"), flags.ends_with("1"), line.substr(b + 1)});
   }
-  if (j.layers_.empty()) return Status::failure("the sandbox " + layout().sandbox.string() + " did not start: status " + std::to_string(j.wait()));
+  if (j.layers_.empty()) return graderFailure("the sandbox " + layout().sandbox.string() + " did not start: status " + std::to_string(j.wait()));
   return j;
 }
 
@@ -132,7 +134,7 @@ int Sandboxed::wait() {
 
 Result<SandboxedRun> runSandboxed(SandboxedDef def, double seconds, std::size_t outputBytes) {
   Result<sandbox::Pipe> out = sandbox::openPipe("cannot start the sandbox");
-  if (!out) return out.status();
+  if (!out) return graderFailure(out.error());
   def.fds.resize(std::max<std::size_t>(def.fds.size(), 3), -1);
   def.fds[1] = def.fds[2] = out.value().write.get();
   Result<Sandboxed> started = Sandboxed::start(def);
@@ -142,6 +144,8 @@ Result<SandboxedRun> runSandboxed(SandboxedDef def, double seconds, std::size_t 
   Sandboxed& j = started.value();
   SandboxedRun run{.layers = j.layers()};
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  std::string tail;  // the last half of the limit, where a crash says what it is
+  std::size_t cut = 0;
   char buf[1 << 16];
   // Read until the pipe closes (the program and anything it started are gone) or time is up.
   for (bool open = true; open;) {
@@ -156,8 +160,14 @@ Result<SandboxedRun> runSandboxed(SandboxedDef def, double seconds, std::size_t 
     const ssize_t n = ::read(output, buf, sizeof buf);
     if (n < 0 && errno == EINTR) continue;
     open = n > 0;
-    if (n > 0) run.output.append(buf, std::min(static_cast<std::size_t>(n), outputBytes - std::min(outputBytes, run.output.size())));
+    if (n <= 0) continue;
+    const std::size_t taken = std::min(static_cast<std::size_t>(n), outputBytes / 2 - std::min(outputBytes / 2, run.output.size()));
+    run.output.append(buf, taken);
+    tail.append(buf + taken, static_cast<std::size_t>(n) - taken);
+    if (tail.size() > outputBytes / 2) cut += tail.size() - outputBytes / 2, tail.erase(0, tail.size() - outputBytes / 2);
   }
+  if (cut > 0) run.output += "\n[... " + std::to_string(cut) + " bytes cut ...]\n";
+  run.output += tail;
   run.status = j.wait();
   return run;
 }

@@ -43,7 +43,7 @@ struct SandboxedDef {
 /// A sandboxed program, running. Kills its process group when destroyed, unless reaped.
 class Sandboxed {
  public:
-  /// Starts `def` under frob-sandbox and reads which layers it applied.
+  /// Starts `def` under frob-sandbox and reads which layers it applied; every failure is frob's (graderFailure()).
   [[nodiscard]] static Result<Sandboxed> start(const SandboxedDef& def);
   Sandboxed() = default;
   ~Sandboxed();
@@ -77,7 +77,8 @@ struct SandboxedRun {
 };
 
 /// Runs `def` to its end with its stdout and stderr captured (def.fds[1], [2] are set here), killed
-/// after `seconds` of wall-clock time; keeps the first `outputBytes` of what it printed.
+/// after `seconds` of wall-clock time; keeps the first and the last `outputBytes` / 2 of what it
+/// printed (the first error, and the end, where a crash says what it is).
 [[nodiscard]] Result<SandboxedRun> runSandboxed(SandboxedDef def, double seconds, std::size_t outputBytes);
 
 }  // namespace frob::course

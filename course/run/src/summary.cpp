@@ -1,5 +1,7 @@
 #include "frob/run/summary.hpp"
 
+#include "frob/run/terminal_text.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
@@ -46,7 +48,7 @@ std::string formatSummary(const Summary& s, double wallSeconds) {
   }
   for (const std::string& w : s.written) text += "  wrote " + w + "\n";
   for (const std::string& n : s.notes) text += "  note: " + n + "\n";
-  return text;
+  return terminalSafe(text, true);  // task names and failures are the controller's words
 }
 
 std::string summaryJson(const Summary& s, double wallSeconds) {

@@ -1,5 +1,5 @@
 // frob-controller-host: runs student controllers for a grader that never lets them near its world.
-// Started by frob-sandbox with its channel on fd 3 and a wake-up eventfd on fd 4; it adds its own
+// Started by frob-sandbox with its channel on fd 3 and the write end of a wake-up pipe on fd 4; it adds its own
 // system-call filter, loads the controller modules named on its command line, builds one controller
 // per robot as asked, then each step reads the robots' frames and answers their wheels.
 #include "frob/controller.hpp"
@@ -132,6 +132,9 @@ void step(const Channel& channel, std::vector<Driven>& driven, const Instant& no
 }  // namespace
 
 int main(int argc, char** argv) {
+  // First of all, a byte on the wake-up pipe: this program started. A host that dies without it
+  // never ran a controller's code (its loader failed), which is frob's failure, not the student's.
+  [[maybe_unused]] const ssize_t started = ::write(kWakeFd, "s", 1);
   Channel channel;
   if (Status s = channel.attach(kChannelFd); !s) {
     std::fprintf(stderr, "frob-controller-host: %s\n", s.error().c_str());

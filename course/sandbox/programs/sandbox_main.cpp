@@ -77,12 +77,19 @@ int main(int argc, char** argv) {
   CLI11_PARSE(cli, argc, argv);
 
   ::setsid();  // its own session and process group
+  // A program that cannot be run is said on the report, which its caller reads as frob's failure,
+  // never the program's: the report closes when the program starts (it is close-on-exec).
+  const auto cannotRun = [&](const std::string& why) {
+    const std::string line = "!cannot run " + command[0] + ": " + why + "\n";
+    if (reportFd >= 0) {
+      [[maybe_unused]] const ssize_t n = ::write(reportFd, line.data(), line.size());
+    }
+    std::fprintf(stderr, "frob-sandbox: %s", line.c_str() + 1);
+    return 127;
+  };
   // Opened before the user changes: the program may sit in a folder only the caller can enter.
   const int program = ::open(command[0].c_str(), O_RDONLY | O_CLOEXEC);
-  if (program < 0 || ::chdir(cwd.c_str()) != 0) {
-    std::fprintf(stderr, "frob-sandbox: cannot run %s in %s: %s\n", command[0].c_str(), cwd.c_str(), std::strerror(errno));
-    return 127;
-  }
+  if (program < 0 || ::chdir(cwd.c_str()) != 0) return cannotRun(std::string(std::strerror(errno)) + " (in " + cwd + ")");
   // Every descriptor closes but 0 .. keepFds-1, the report and the program.
   if (reportFd >= 0 && reportFd < keepFds) reportFd = -1;
   int from = keepFds;
@@ -97,17 +104,18 @@ int main(int argc, char** argv) {
   const Layer resources = limitResources(limits);  // while /proc/self is still its own to write
   const Layer user = keepUser ? Layer{"unprivileged user", false, false, "not asked for: it runs as the caller"} : dropPrivileges(uid, gid);
   std::vector<Layer> layers{resources, user, enterNamespaces(namespaces)};
-  if (::chdir(cwd.c_str()) != 0) return 127;  // into the tmpfs, if one now covers it
+  if (::chdir(cwd.c_str()) != 0) return cannotRun(std::string("entering ") + cwd + ": " + std::strerror(errno));  // into the tmpfs, if one covers it
   layers.push_back(noNewPrivileges());
   layers.push_back(restrictFiles(files));
   if (seccomp == "no-network") layers.push_back(restrictSyscalls(SyscallPolicy::NoNetwork));
   // Killed with the process that started it; set after the user changed, which clears it.
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (parent != 0 && ::getppid() != parent) return 127;
-  if (Fd out(reportFd); out.valid()) {  // closed here, so that the report ends before the program starts
+  if (reportFd >= 0) {  // close-on-exec: the report ends as the program starts
     std::string report;
     for (const Layer& l : layers) report += l.name + "\t" + (l.applied ? "1" : "0") + (l.required ? "1" : "0") + "\t" + l.note + "\n";
-    [[maybe_unused]] const ssize_t n = ::write(out.get(), report.data(), report.size());
+    [[maybe_unused]] const ssize_t n = ::write(reportFd, report.data(), report.size());
+    ::fcntl(reportFd, F_SETFD, FD_CLOEXEC);
   }
 
   std::vector<char*> args, envp;
@@ -115,6 +123,5 @@ int main(int argc, char** argv) {
   for (std::string& e : env) envp.push_back(e.data());
   args.push_back(nullptr), envp.push_back(nullptr);
   ::syscall(SYS_execveat, program, "", args.data(), envp.data(), AT_EMPTY_PATH);
-  std::fprintf(stderr, "frob-sandbox: cannot run %s: %s\n", command[0].c_str(), std::strerror(errno));
-  return 127;
+  return cannotRun(std::strerror(errno));
 }

@@ -170,14 +170,14 @@ void waitFutex(Doorbell& bell, std::uint32_t sequence, std::uint64_t spinNanosec
   bell.sleeping.store(0, std::memory_order_relaxed);
 }
 
-void ring(Doorbell& bell, std::uint32_t sequence, int eventFd) {
+void ring(Doorbell& bell, std::uint32_t sequence, int wakeFd) {
   bell.sequence.store(sequence, std::memory_order_seq_cst);
   if (bell.sleeping.load(std::memory_order_seq_cst) == 0) return;
-  if (eventFd < 0) {
+  if (wakeFd < 0) {
     ::syscall(SYS_futex, &bell.sequence, FUTEX_WAKE, 1, nullptr, nullptr, 0);
   } else {
     const std::uint64_t one = 1;
-    [[maybe_unused]] const ssize_t n = ::write(eventFd, &one, sizeof one);
+    [[maybe_unused]] const ssize_t n = ::write(wakeFd, &one, sizeof one);
   }
 }
 

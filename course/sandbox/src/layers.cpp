@@ -223,7 +223,37 @@ Layer restrictSyscalls(SyscallPolicy policy) {
                    SCMP_SYS(personality)}) {
     deny(call);
   }
+  // No changing another process's scheduling, priority or limits (a classmate's host, or frob when
+  // it runs as the same user): pid 0, the caller, only; no whole group or user at once.
+  const auto onlySelf = [&](std::uint32_t action, int call, unsigned arg) {
+    const scmp_arg_cmp other{.arg = arg, .op = SCMP_CMP_NE, .datum_a = 0, .datum_b = 0};
+    if (rc == 0) rc = ::seccomp_rule_add_array(ctx, action, call, 1, &other);
+  };
+  for (int call : {SCMP_SYS(sched_setaffinity), SCMP_SYS(sched_setscheduler), SCMP_SYS(sched_setparam), SCMP_SYS(sched_setattr), SCMP_SYS(prlimit64),
+                   SCMP_SYS(migrate_pages), SCMP_SYS(move_pages)}) {
+    onlySelf(refuse, call, 0);
+  }
+  for (int call : {SCMP_SYS(setpriority), SCMP_SYS(ioprio_set)}) {
+    onlySelf(refuse, call, 1);  // who
+    const scmp_arg_cmp group{.arg = 0, .op = SCMP_CMP_NE, .datum_a = call == SCMP_SYS(setpriority) ? 0U /* PRIO_PROCESS */ : 1U, .datum_b = 0};
+    if (rc == 0) rc = ::seccomp_rule_add_array(ctx, refuse, call, 1, &group);
+  }
   if (controller) {
+    // Nor reading it: what the kernel shows of another process's scheduling carries notes between
+    // hosts. Refused as not implemented, which the C library takes in its stride.
+    for (int call : {SCMP_SYS(sched_getaffinity), SCMP_SYS(sched_getscheduler), SCMP_SYS(sched_getparam), SCMP_SYS(sched_getattr),
+                     SCMP_SYS(sched_rr_get_interval), SCMP_SYS(getpgid), SCMP_SYS(getsid), SCMP_SYS(get_robust_list)}) {
+      onlySelf(SCMP_ACT_ERRNO(ENOSYS), call, 0);
+    }
+    onlySelf(SCMP_ACT_ERRNO(ENOSYS), SCMP_SYS(getpriority), 1);
+    onlySelf(SCMP_ACT_ERRNO(ENOSYS), SCMP_SYS(ioprio_get), 1);
+    if (rc == 0) rc = ::seccomp_rule_add(ctx, SCMP_ACT_ERRNO(ENOSYS), SCMP_SYS(kcmp), 0);
+    // No file locks: a lock on a file every host may read (a library) is a note another host sees.
+    if (rc == 0) rc = ::seccomp_rule_add(ctx, SCMP_ACT_ERRNO(ENOLCK), SCMP_SYS(flock), 0);
+    for (const std::uint64_t command : {F_SETLK, F_SETLKW, F_GETLK, F_OFD_SETLK, F_OFD_SETLKW, F_OFD_GETLK}) {
+      const scmp_arg_cmp locks{.arg = 1, .op = SCMP_CMP_EQ, .datum_a = command, .datum_b = 0};
+      if (rc == 0) rc = ::seccomp_rule_add_array(ctx, SCMP_ACT_ERRNO(ENOLCK), SCMP_SYS(fcntl), 1, &locks);
+    }
     for (int call : {SCMP_SYS(execve), SCMP_SYS(execveat), SCMP_SYS(fork), SCMP_SYS(vfork), SCMP_SYS(tkill), SCMP_SYS(pidfd_open),
                      SCMP_SYS(pidfd_send_signal), SCMP_SYS(pidfd_getfd), SCMP_SYS(setsid), SCMP_SYS(setpgid)}) {
       deny(call);
@@ -257,7 +287,8 @@ Layer restrictSyscalls(SyscallPolicy policy) {
   if (rc == 0) rc = ::seccomp_load(ctx);
   ::seccomp_release(ctx);
   layer.applied = rc == 0;
-  layer.note = rc == 0 ? (controller ? "no sockets, exec, processes, tracing, IPC objects or signals to others" : "no sockets or tracing")
+  layer.note = rc == 0 ? (controller ? "no sockets, exec, processes, tracing, IPC objects, file locks, or signals to or scheduling of others"
+                                     : "no sockets, tracing or scheduling of others")
                        : std::string("not applied: ") + std::strerror(-rc);
   return layer;
 }
@@ -300,6 +331,9 @@ std::string describeSyscall(std::int32_t number) {
           SCMP_SYS(mq_timedreceive), SCMP_SYS(mq_notify), SCMP_SYS(mq_getsetattr)}))
     return "make a kernel object shared between processes (System V IPC or a POSIX message queue)";
   if (is({SCMP_SYS(fcntl)})) return "ask for signals on a file (fcntl F_SETOWN, F_SETSIG or F_SETLEASE)";
+  if (is({SCMP_SYS(sched_setaffinity), SCMP_SYS(sched_setscheduler), SCMP_SYS(sched_setparam), SCMP_SYS(sched_setattr), SCMP_SYS(prlimit64),
+          SCMP_SYS(migrate_pages), SCMP_SYS(move_pages), SCMP_SYS(setpriority), SCMP_SYS(ioprio_set)}))
+    return "change the scheduling, priority or limits of another process";
   char* name = ::seccomp_syscall_resolve_num_arch(SCMP_ARCH_NATIVE, number);
   std::string what = std::string("make the system call ") + (name != nullptr ? name : std::to_string(number).c_str());
   std::free(name);

@@ -378,5 +378,19 @@ TEST(Replay, ALogThatIsNotOneSaysSo) {
             log.string() + ": the log was changed after grading, or signed with another secret: its signature does not match");
 }
 
+// A class folder lists its links and special files, so that compiling each refuses it (never
+// following it) and the gradebook says why; a linked folder is not a student's folder of files.
+TEST(Submissions, LinksAndSpecialFilesInAClassAreListedToBeRefused) {
+  const fs::path klass = fs::path(::testing::TempDir()) / "grade_test_links" / "class";
+  fs::remove_all(klass.parent_path());
+  fs::create_directories(klass / "bob");
+  std::ofstream(klass / "bob" / "go.cpp") << "// bob's\n";
+  std::ofstream(klass / "ann.cpp") << "// ann's\n";
+  fs::create_symlink("/etc/shadow", klass / "eve.cpp");
+  fs::create_symlink("ann.cpp", klass / "notes.txt");
+  fs::create_directory_symlink("bob", klass / "dan");
+  EXPECT_EQ(submissionsIn(klass), (std::vector<fs::path>{klass / "ann.cpp", klass / "bob", klass / "dan", klass / "eve.cpp", klass / "notes.txt"}));
+}
+
 }  // namespace
 }  // namespace frob::course

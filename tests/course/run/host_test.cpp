@@ -133,27 +133,28 @@ TEST_P(Hostile, FailsItsRobotWithAReasonAndNothingElse) {
 
 INSTANTIATE_TEST_SUITE_P(
     Sandbox, Hostile,
-    ::testing::Values(Case{"segfault", "ada: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.50 s"},
-                      Case{"abort", "ada: crashed with SIGABRT (abort(), a failed assert, or an exception nothing caught) at t = 0.50 s"},
-                      Case{"stack_overflow", "ada: crashed with SIGSEGV: its stack overflowed (a recursion that never ends?) at t = 0.50 s"},
-                      Case{"endless_loop", "ada: used more than 1 s of CPU in one step (an endless loop?) at t = 0.50 s"},
-                      Case{"sleeps", "ada: did not answer within 1 s in one step (it waited or slept) at t = 0.50 s"},
-                      Case{"forks", "ada: tried to start another process (not allowed) at t = 0.50 s"},
-                      Case{"runs_shell", "ada: tried to start another process (not allowed) at t = 0.50 s"},
-                      Case{"opens_socket", "ada: tried to open a network socket (not allowed) at t = 0.50 s"},
-                      Case{"signals_parent", "ada: tried to signal another process (not allowed) at t = 0.50 s"},
-                      Case{"shares_memory",
-                           "ada: tried to make a kernel object shared between processes (System V IPC or a POSIX message queue) (not "
-                           "allowed) at t = 0.50 s"},
-                      Case{"signals_by_file",
-                           "ada: tried to ask for signals on a file (fcntl F_SETOWN, F_SETSIG or F_SETLEASE) (not allowed) at t = 0.50 s"},
-                      Case{"reads_outside", "ada: tried to read /etc/passwd (not allowed) at t = 0.50 s"},
-                      Case{"writes_outside", "ada: tried to write /tmp/frob-hostile-was-here (not allowed) at t = 0.50 s"},
-                      Case{"forged_exit",
-                           "ada: ended its program with exit status 0 (a controller must not call exit; its results would "
-                           "not count) at t = 0.50 s"},
-                      Case{"throws_int", "ada: an exception of unknown type"},
-                      Case{"commands_nan", "ada: the controller commanded non-finite wheels {forward nan m/s, turn 0.000 rad/s} at t = 0.500 s"}),
+    ::testing::Values(
+        Case{"segfault", "ada: crashed with SIGSEGV (a bad pointer, or an index out of range?) at t = 0.50 s"},
+        Case{"abort", "ada: crashed with SIGABRT (abort(), a failed assert, or an exception nothing caught) at t = 0.50 s"},
+        Case{"stack_overflow", "ada: crashed with SIGSEGV: its stack overflowed (a recursion that never ends?) at t = 0.50 s"},
+        Case{"endless_loop", "ada: used more than 1 s of CPU in one step (an endless loop?) at t = 0.50 s"},
+        Case{"sleeps", "ada: did not answer within 1 s in one step (it waited or slept) at t = 0.50 s"},
+        Case{"forks", "ada: tried to start another process (not allowed) at t = 0.50 s"},
+        Case{"runs_shell", "ada: tried to start another process (not allowed) at t = 0.50 s"},
+        Case{"opens_socket", "ada: tried to open a network socket (not allowed) at t = 0.50 s"},
+        Case{"signals_parent", "ada: tried to signal another process (not allowed) at t = 0.50 s"},
+        Case{"renices_others", "ada: tried to change the scheduling, priority or limits of another process (not allowed) at t = 0.50 s"},
+        Case{"shares_memory",
+             "ada: tried to make a kernel object shared between processes (System V IPC or a POSIX message queue) (not "
+             "allowed) at t = 0.50 s"},
+        Case{"signals_by_file", "ada: tried to ask for signals on a file (fcntl F_SETOWN, F_SETSIG or F_SETLEASE) (not allowed) at t = 0.50 s"},
+        Case{"reads_outside", "ada: tried to read /etc/passwd (not allowed) at t = 0.50 s"},
+        Case{"writes_outside", "ada: tried to write /tmp/frob-hostile-was-here (not allowed) at t = 0.50 s"},
+        Case{"forged_exit",
+             "ada: ended its program with exit status 0 (a controller must not call exit; its results would "
+             "not count) at t = 0.50 s"},
+        Case{"throws_int", "ada: an exception of unknown type"},
+        Case{"commands_nan", "ada: the controller commanded non-finite wheels {forward nan m/s, turn 0.000 rad/s} at t = 0.500 s"}),
     [](const ::testing::TestParamInfo<Case>& info) { return info.param.module; });
 
 // A host that closes its output makes the pipe poll ready for ever: the grader still waits for the
@@ -216,6 +217,74 @@ TEST(Sandbox, ForgedRecordsPastTheirCapsFailTheRobot) {
   ASSERT_EQ(o.failures.size(), 1u);
   EXPECT_EQ(o.failures[0].message, "ada: its controller host sent a reply that cannot be read: a task's name longer than 256 bytes");
   EXPECT_DOUBLE_EQ(o.failures[0].time, 0.5);
+}
+
+// A host that makes the wake-up channel blocking, by either call that can, and tries to take the
+// grader's wake-ups, holds no end of it the grader reads: the step that never answers fails at its
+// deadline. (Were the grader's end shared with the host, the grader could block in a read for ever:
+// ctest's timeout.)
+TEST(Sandbox, NoFlagAHostSetsMakesTheGraderBlock) {
+  for (const std::string name : {"clears_wake_flag_fcntl", "clears_wake_flag_ioctl"}) {
+    const Outcome o = runHostile({name});
+    EXPECT_EQ(o.output.find("took a wake-up"), std::string::npos) << name << ": " << o.output;
+    ASSERT_EQ(o.failures.size(), 1u) << name;
+    const std::string& why = o.failures[0].message;
+    EXPECT_TRUE(why == "ada: did not answer within 1 s in one step (it waited or slept) at t = 0.50 s" ||
+                why == "ada: used more than 1 s of CPU in one step (an endless loop?) at t = 0.50 s")
+        << name << ": " << why;
+  }
+}
+
+// A copy of /usr/bin/true whose loader cannot find its C library: it ends with exit status 127
+// before its first instruction, as a host program does whose libraries are missing.
+fs::path unloadableProgram(const fs::path& dir) {
+  std::ifstream in("/usr/bin/true", std::ios::binary);
+  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  for (std::size_t at; (at = bytes.find(std::string("libc.so.6\0", 10))) != std::string::npos;) bytes[at + 3] = 'q';
+  const fs::path program = dir / "unloadable";
+  std::ofstream(program, std::ios::binary) << bytes;
+  fs::permissions(program, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec | fs::perms::others_read);
+  return program;
+}
+
+// A host program that cannot be run, or that dies before its first instruction, is frob's failure
+// (kGraderFailure: no grade may rest on it), never the controller's; a controller that ends its
+// program the same way in a global constructor is the controller's.
+TEST(Sandbox, AHostProgramThatCannotStartIsTheGradersFailure) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "host_test_unstartable";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "not_a_program") << "#!/bin/sh\n";  // not executable
+  fs::permissions(dir / "not_a_program", fs::perms::owner_read | fs::perms::owner_write | fs::perms::others_read);
+  const auto start = [](const fs::path& program) {
+    return ControllerHost::start({testing::hostileModule("segfault")}, {"segfault"}, {.program = program});
+  };
+  const Result<std::shared_ptr<ControllerHost>> missing = start(dir / "missing"), denied = start(dir / "not_a_program");
+  const Result<std::shared_ptr<ControllerHost>> unloadable = start(unloadableProgram(dir));
+  for (const Status& s : {missing.status(), denied.status(), unloadable.status()}) EXPECT_TRUE(isGraderFailure(s)) << s.error();
+  EXPECT_NE(missing.error().find("No such file or directory"), std::string::npos) << missing.error();
+  EXPECT_NE(denied.error().find("Permission denied"), std::string::npos) << denied.error();
+  EXPECT_NE(unloadable.error().find("the controller host could not start: exit status 127: "), std::string::npos) << unloadable.error();
+  EXPECT_NE(unloadable.error().find("libq.so.6"), std::string::npos) << unloadable.error();
+  const Outcome own = runHostile({"exits_127_in_constructor"});
+  EXPECT_EQ(own.startError,
+            "the controller 'exits_127_in_constructor' failed: ended its program with exit status 127 (a controller must not call exit; its "
+            "results would not count) at t = 0.00 s (in a global constructor)");
+}
+
+// What a controller prints reaches the terminal with its control characters shown, not acted on;
+// a character cut across two writes arrives whole.
+TEST(Sandbox, EscapeSequencesAControllerPrintsAreShownNotActedOn) {
+  const Outcome o = runHostile({"prints_escapes"});
+  EXPECT_EQ(o.output, "\\x1b[2J\\x1b]52;c;ZXZpbA==\\x07\\x1bPq#0\\x1b\\\\u009b31m\\x0dTotal 7 / 7 \\xe9\ncaf\xc3\xa9\n");
+}
+
+// A host cannot read what the kernel shows of another process's scheduling, nor lock a file every
+// host may read: two hosts could pass notes through either.
+TEST(Sandbox, AHostSeesNothingOfAnotherProcessesSchedulingAndTakesNoLock) {
+  const Outcome o = runHostile({"reads_others_scheduling"});
+  EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
+  EXPECT_EQ(o.lastWheels, (Wheels{0.1, 0.0}));
 }
 
 // A controller that answers each step just inside its deadline falls behind the run's pace and

@@ -8,6 +8,7 @@
 ///   g.score() / g.maxScore()
 
 #include "frob/grade/rubric.hpp"
+#include "frob/grade/wheel_log.hpp"
 #include "frob/run/host.hpp"
 #include "frob/run/session.hpp"
 
@@ -30,6 +31,7 @@ struct GradeDef {
   bool visibleOnly = false;    ///< grade only the visible checks (a student checking locally)
   HostDef host;                ///< the controller host's limits
   std::filesystem::path logs;  ///< a folder for each run's wheel log (for --replay); empty: none
+  std::string student;         ///< who submitted, where known, named in the logs; "" when not
   CompilerSetup compiler = compilerSetup();
   std::optional<KeptWorlds> kept;  ///< the secret's hidden worlds to grade in; unset: those of fairHiddenWorlds()
   /// Runs allowed at once, shared by the grades of a class (gradeAll sets it): a run's processes
@@ -84,8 +86,10 @@ struct CheckGrade {
 /// A submission's grade.
 struct Grade {
   std::string assignment;
-  std::string submission;    ///< the file or folder, as given
-  std::string compileError;  ///< the compiler's complaint when it did not compile (then every check scores 0)
+  std::string submission;      ///< the file or folder, as given
+  std::string submissionHash;  ///< SHA-256 of its files, in hex (submissionHash()), as its logs name it
+  std::string compileError;    ///< the compiler's complaint when it did not compile (then every check scores 0)
+  std::string graderFailure;   ///< why frob or the machine could not grade it (kGraderFailure): then it has no grade at all, not 0
   std::vector<CheckGrade> checks;
   std::vector<std::string> notes;  ///< e.g. output that was cut
   std::string sandboxMissing;      ///< the sandbox's layers this machine could not apply, one per line; for the instructor only
@@ -96,7 +100,8 @@ struct Grade {
 };
 
 /// Compiles and grades `submission`, a .cpp file or a folder of several (see compileSubmission()). Never fails on the submission's account: a compile
-/// error, a crash or a hang scores 0 in the checks it touched, with the reason.
+/// error, a crash or a hang scores 0 in the checks it touched, with the reason. A failure of frob or the machine (a host that cannot
+/// start, a full disk) stops it with Grade::graderFailure set: no score stands.
 [[nodiscard]] Grade grade(const GradeDef& def, const std::filesystem::path& submission);
 
 /// Grades each of `submissions` (a class), `jobs` at a time, in their order; `progress(done, total)`
@@ -105,7 +110,8 @@ struct Grade {
                                           const std::function<void(std::size_t done, std::size_t total)>& progress = {});
 
 /// The submissions in `dir`, sorted: each .cpp file in it, compiled alone, and each subfolder that holds
-/// .cpp files, a submission of several files.
+/// .cpp files, a submission of several files; links and special files too, which compiling refuses
+/// (never followed: one could name the secret, /etc/shadow or a classmate's file).
 [[nodiscard]] std::vector<std::filesystem::path> submissionsIn(const std::filesystem::path& dir);
 /// What to grade for controller file `file`: its folder when the file is the folder's one controller
 /// and other .cpp files lie beside it (a submission of several files), else the file alone.
@@ -135,6 +141,9 @@ struct Assignment {
 /// What replaying a wheel log gives: the run's verdict and trajectory, recomputed.
 struct Replay {
   std::string check;
+  std::string submission;      ///< whose run it was, as the log names it
+  std::string submissionHash;  ///< SHA-256 of that submission's files
+  std::string student;         ///< who submitted it, where the grading knew; "" otherwise
   RunGrade run;
 };
 
@@ -142,7 +151,8 @@ struct Replay {
 /// again; the verdict, reason and trajectory hash are those of the original run, bit for bit. A log
 /// is signed with the secret it was graded with (HMAC-SHA256 over its text); one that is unsigned,
 /// edited, or signed with another secret is refused, and so is one whose replay strays from the
-/// graded trajectory.
-[[nodiscard]] Result<Replay> replay(const std::filesystem::path& log, const std::string& secret);
+/// graded trajectory. A log names the submission it was graded for: given `submission`, one of any
+/// other submission (another SHA-256 of its files) is refused.
+[[nodiscard]] Result<Replay> replay(const std::filesystem::path& log, const std::string& secret, const std::filesystem::path& submission = {});
 
 }  // namespace frob::course

@@ -17,7 +17,7 @@ namespace frob::course {
 /// The grade as a person reads it in a terminal: one line per check (name, score / points,
 /// PASS, FAIL or PARTIAL, "[hidden]" or "[after_due_date]" for checks students do not see), the
 /// failed runs' reasons indented under it, the compile error, the total and the notes. Plain ASCII
-/// columns; control characters in names and reasons are shown as '?'.
+/// columns; control characters in names and reasons are shown as visible escapes (terminalSafe()).
 [[nodiscard]] std::string scoreTable(const Grade& grade);
 
 /// Writes Gradescope's autograder results.json: the score, the execution time (whole seconds), a
@@ -35,7 +35,8 @@ namespace frob::course {
 /// Writes a class gradebook (CSV, RFC 4180, CRLF line ends): submission,score,max_score,result, then
 /// one column per check; one row per grade, sorted by submission. The result says "graded", "did not
 /// compile: " with the compiler's first error, or "failed at run time in N of M runs: " with the
-/// first such reason (each cut to its first 80 bytes). Two grades of one submission fail.
+/// first such reason (each cut to its first 80 bytes); a submission frob failed to grade
+/// (Grade::graderFailure) has no score at all and "NOT GRADED: " with why. Two grades of one submission fail.
 [[nodiscard]] Status writeGradebook(const std::vector<Grade>& grades, const std::filesystem::path& path);
 
 /// Merges gradebooks written by writeGradebook (one per shard of a class) into `out`: their headers

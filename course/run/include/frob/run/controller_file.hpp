@@ -14,6 +14,15 @@
 
 namespace frob::course {
 
+/// Begins the message of every failure that is frob's or the machine's, never the submission's (a
+/// compiler or controller host that cannot start, a full disk, a compiler that crashed): no grade
+/// may rest on it.
+inline constexpr std::string_view kGraderFailure = "the grader failed: ";
+/// A failure of frob or the machine, never the submission's: `what` after kGraderFailure.
+[[nodiscard]] inline Status graderFailure(const std::string& what) { return Status::failure(std::string(kGraderFailure) + what); }
+/// Whether `s` failed through frob or the machine, not the submission (graderFailure()).
+[[nodiscard]] inline bool isGraderFailure(const Status& s) { return s.error().starts_with(kGraderFailure); }
+
 /// How controller files are compiled. compilerSetup() gives the one the project was built with.
 struct CompilerSetup {
   std::string compiler;                    ///< the C++ compiler, as found on PATH or absolute

@@ -39,6 +39,7 @@ struct HostDef {
   std::uint64_t tasks = 64;                      ///< its processes and threads at once
   std::uint64_t spinNanoseconds = 50'000;        ///< the grader spins this long for a reply before it sleeps
   std::function<void(std::string_view)> output;  ///< where its output goes; empty: this process's stderr
+  std::filesystem::path program;                 ///< the host program; empty: frob-controller-host (frob::layout())
   bool checked = false;                          ///< its modules were compiled with compilerSetup(true): load the sanitizers' runtime,
                                                  ///< watch memory instead of limiting address space, and explain their reports
 };

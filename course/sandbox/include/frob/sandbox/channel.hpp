@@ -2,8 +2,9 @@
 /// The shared memory between the grader (trusted) and a controller host (untrusted): a header with
 /// a doorbell each way, then a setup area, then an area per robot (its frame in, its reply out).
 /// A doorbell is a sequence number in shared memory: the waiter spins on it briefly, then sleeps
-/// (the host on a futex, the trusted side in poll on an eventfd); the ringer wakes it only if it
-/// sleeps, so a step in which both sides spin makes no system call at all.
+/// (the host on a futex, the trusted side in poll, with a deadline, on the read end of a pipe that
+/// only it holds); the ringer wakes it only if it sleeps, so a step in which both sides spin makes no
+/// system call at all.
 /// The trusted side sizes the channel once and seals it against shrinking and growing before the
 /// host starts, so the host cannot pull memory from under it; should a read of it fault anyway
 /// (SIGBUS), the mapping is replaced by zeros and the channel reports that it was cut.
@@ -105,7 +106,7 @@ class Channel {
 /// Sleeps on `bell` (a futex) until its sequence is `sequence`; spins first for `spinNanoseconds`,
 /// offering the core at every look.
 void waitFutex(Doorbell& bell, std::uint32_t sequence, std::uint64_t spinNanoseconds);
-/// Sets `bell` to `sequence` and wakes its waiter if it sleeps: on the futex, or by writing `eventFd`.
-void ring(Doorbell& bell, std::uint32_t sequence, int eventFd = -1);
+/// Sets `bell` to `sequence` and wakes its waiter if it sleeps: on the futex, or by writing to `wakeFd`.
+void ring(Doorbell& bell, std::uint32_t sequence, int wakeFd = -1);
 
 }  // namespace frob::sandbox

@@ -1,0 +1,96 @@
+// What frob grade does when the failure is its own or the machine's, not the submission's: a host
+// program that cannot start, a compiler that crashes. No score stands (never 0 as the student's),
+// and the cause is named.
+#include "frob/grade/grade.hpp"
+#include "frob/grade/grade_report.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace frob::course {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kRubric = R"(title = "Stand"
+seconds = 1
+[[check]]
+name = "stands"
+points = 2
+worlds = ["room.toml"]
+seeds = [1, 2]
+collisions = { max = 0 }
+)";
+
+constexpr const char* kStill =
+    "#include <frob/frob.hpp>\nfrob::Behavior<frob::Wheels> still(const frob::Robot&) { return frob::wheels(0.0, 0.0); }\nFROB_CONTROLLER(still)\n";
+
+class GraderFailure : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(::testing::TempDir()) / "grade_infrastructure_test" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "assignment");
+    std::ofstream(dir_ / "assignment" / "rubric.toml") << kRubric;
+    std::ofstream(dir_ / "assignment" / "room.toml") << "size = [4.0, 3.0]\n[[robot]]\nname = \"ada\"\nstart = [1.0, 1.0]\n";
+    std::ofstream(dir_ / "still.cpp") << kStill;
+    Result<Rubric> rubric = loadRubric(dir_ / "assignment" / "rubric.toml");
+    ASSERT_TRUE(rubric.ok()) << rubric.error();
+    def_ = {.rubric = rubric.value(), .assignment = "stand"};
+    def_.compiler.cacheDir = fs::path(FROB_TEST_CACHE_DIR);
+  }
+  fs::path dir_;
+  GradeDef def_;
+};
+
+// A copy of /usr/bin/true whose loader cannot find its C library (exit status 127 before its first
+// instruction), as a host program whose libraries are missing or being replaced.
+fs::path unloadableProgram(const fs::path& dir) {
+  std::ifstream in("/usr/bin/true", std::ios::binary);
+  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  for (std::size_t at; (at = bytes.find(std::string("libc.so.6\0", 10))) != std::string::npos;) bytes[at + 3] = 'q';
+  const fs::path program = dir / "unloadable";
+  std::ofstream(program, std::ios::binary) << bytes;
+  fs::permissions(program, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec | fs::perms::others_read);
+  return program;
+}
+
+TEST_F(GraderFailure, AHostThatCannotStartIsNoGrade) {
+  def_.host.program = unloadableProgram(dir_);
+  const Grade g = grade(def_, dir_ / "still.cpp");
+  EXPECT_NE(g.graderFailure.find("the grader failed: the controller host could not start: exit status 127"), std::string::npos) << g.graderFailure;
+  ASSERT_EQ(g.checks.size(), 1u);
+  EXPECT_EQ(g.checks[0].runs.size(), 1u) << "grading went on after the grader failed";
+  // The gradebook gives it no score, not 0, and says why.
+  ASSERT_TRUE(writeGradebook({g}, dir_ / "grades.csv").ok());
+  std::ifstream in(dir_ / "grades.csv");
+  std::string header, row;
+  std::getline(in, header), std::getline(in, row);
+  EXPECT_EQ(row.rfind((dir_ / "still.cpp").string() + ",,2,NOT GRADED: the grader failed: the controller host could not start", 0), 0u) << row;
+  EXPECT_EQ(row.back(), '\r');
+  EXPECT_EQ(row.substr(row.size() - 2), ",\r") << "a check's column holds a score: " << row;
+}
+
+// clang crashes on purpose at `#pragma clang __debug crash`; before it, more warnings than the
+// output kept: the crash's own words, at the end, are kept.
+TEST_F(GraderFailure, ACompilerCrashIsNoGradeAndItsEndIsKept) {
+  std::string source = "#include <frob/frob.hpp>\n";
+  for (int i = 0; i < 12000; ++i) source += "#warning a long warning to push the crash past the first half of what is kept\n";
+  source += "#pragma clang __debug crash\n";
+  std::ofstream(dir_ / "crashes_clang.cpp") << source << kStill;
+  const Grade g = grade(def_, dir_ / "crashes_clang.cpp");
+  EXPECT_EQ(g.compileError, "");
+  EXPECT_EQ(g.graderFailure.rfind("the grader failed: the compiler crashed compiling '", 0), 0u) << g.graderFailure.substr(0, 300);
+  EXPECT_NE(g.graderFailure.find("bytes cut ...]"), std::string::npos);
+  EXPECT_NE(g.graderFailure.find("PLEASE submit a bug report"), std::string::npos);
+  // The whole command it prints names the grader's folders by name only.
+  EXPECT_EQ(g.graderFailure.find(fs::absolute(def_.compiler.cacheDir).string()), std::string::npos);
+  EXPECT_EQ(g.graderFailure.find(def_.compiler.precompiledHeader), std::string::npos);
+  EXPECT_NE(g.graderFailure.find("$FROB_CACHE_DIR/"), std::string::npos);
+  EXPECT_TRUE(g.checks.empty());
+}
+
+}  // namespace
+}  // namespace frob::course
