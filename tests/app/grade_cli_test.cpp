@@ -215,7 +215,7 @@ TEST(GradeCli, PractiseTheHiddenChecksOnTheirFamily) {
   std::ofstream(dir / "forward" / "rubric.toml")
       << std::string(kRubric) +
              "[[check]]\nname = \"unseen warehouses\"\nvisibility = \"hidden\"\n"
-             "generated = { kind = \"warehouse_box\", secret = 2 }\ngoal = { point = \"p3\", within = 0.1 }\n";
+             "generated = { kind = \"warehouse_box\", secret = 2 }\ngoal = { point = \"p3\", within = 0.1, by = 60 }\n";
   std::ofstream(dir / "sub.cpp") << driver("0.0");
   const FrobResult r = runFrob(dir, {"grade", "forward", "sub.cpp", "--practice", "2", "--seed", "5"});
   ASSERT_EQ(r.status, 0) << r.err;

@@ -127,10 +127,11 @@ TEST(BugAssignment, ForgettingTaskCatchStopsAtTheFirstError) {
 
 // Example 06 pasted onto the starter (goal corrected): the paper's BUG goes all the way round every
 // obstacle and on to the closest point. In the trap field that takes longer than the run; in the
-// open field and two of the hidden ones it arrives, late and (all but once) past the BUG1 bound.
+// open field and two of the hidden ones it arrives, late and (all but once) past the BUG1 bound, and
+// in one of those two after the 100 s the hidden check allows.
 TEST(BugAssignment, ThePapersBugCirclesForeverAndDrivesPastTheBound) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "circles_forever.cpp"));
-  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1}, {kHiddenBound, 0.5}}));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 0.5}, {kHiddenBound, 0.5}}));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 872466220: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kBound), HasSubstr("in worlds/field.toml, seed 402455347: drove 31.42 m to goal; the BUG1 bound is 30.92 m"));
   EXPECT_THAT(reasons(g, kHidden), HasSubstr("in hidden world 4: never came within 0.30 m of goal"));
@@ -138,15 +139,15 @@ TEST(BugAssignment, ThePapersBugCirclesForeverAndDrivesPastTheBound) {
 }
 
 // No BUG at all: it steers at the goal by odometry and pushes along whatever is in the way. In the
-// open field it slides round two obstacles to the goal on a path well inside the BUG1 bound: only
-// the bound check's limit on touching fails it (before, it passed): a bump at a corner the sonars
-// cannot hear is brief, pushing along an obstacle is not. Two of the hidden fields let it through,
-// one of them with so little pushing that it keeps within the bound's limit.
+// open field it slides round two obstacles to the goal on a path well inside the BUG1 bound, but
+// every second of pushing counts as a collision (before, each push was one, and it passed "reaches
+// the goal"): a bump at a corner the sonars cannot hear is brief, pushing along an obstacle is not.
+// One hidden field lets it through with so little pushing that it keeps within the bound's limits.
 TEST(BugAssignment, SlidingAlongObstaclesIsNoPathRoundThem) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "slides_along.cpp"));
-  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1}, {kHiddenBound, 0.5}}));
-  EXPECT_THAT(reasons(g, kBound), HasSubstr("in worlds/field.toml, seed 402455347: pressed its bumpers for 4.9 s in all, the longest touch from 26.6 "
-                                            "s to 29.3 s; at most 3.0 s allowed"));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}, {kHiddenBound, 0.5}}));
+  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 872466220: touched a wall at"));
+  EXPECT_THAT(reasons(g, kReaches), HasSubstr("4 allowed)"));
 }
 
 // No sensing: round the field's edge by odometry. The spurs beside the start cut both ways along
@@ -167,7 +168,8 @@ TEST(BugAssignment, CopiedExampleSixGetsNothing) {
 }
 
 // Example 6 with its goal corrected to (13.5, 13.5) is still not an answer: it crosses neither
-// visible field in time, and in every hidden field it fails the BUG1 bound (it reaches the goal in three).
+// visible field in time, and in every hidden field it fails the BUG1 bound (it reaches the goal in
+// three, one of them after the 100 s allowed).
 TEST(BugAssignment, ExampleSixWithTheGoalCorrectedDoesNotPass) {
   std::string source = readFile(example("06_bug.cpp"));
   const std::string goal = "Point2 goal{13, 13};";
@@ -179,7 +181,7 @@ TEST(BugAssignment, ExampleSixWithTheGoalCorrectedDoesNotPass) {
   std::ofstream(dir / "example06_goal_corrected.cpp") << source;
 
   course::Grade g = gradeFile(kAssignment, dir / "example06_goal_corrected.cpp");
-  EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 1.5}, {kHiddenBound, 0}}));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 1}, {kHiddenBound, 0}}));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 872466220: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kBound),
               HasSubstr("in worlds/field.toml, seed 402455347: never came within 0.30 m of goal, so its path cannot be measured"));

@@ -112,13 +112,14 @@ TEST(GoToGoalAssignment, TooSlowMissesTheTimeLimit) {
 }
 
 // A route worked out by hand round the lounge's furniture: full marks in the lounge, and it runs
-// into the furniture of both hidden rooms. This is what the hidden check is for.
+// into the furniture of both hidden rooms, and pushes on (a second collision). This is what the
+// hidden check is for.
 TEST(GoToGoalAssignment, HardCodedRouteFailsOnlyTheHiddenRooms) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "hard_coded_route.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kInOrder, 3}, {kInTime, 2}, {kSofa, 2}, {kOtherRooms, 0}}));
   EXPECT_EQ(failedIn(g, kOtherRooms), "generated lounge, hidden world 1\ngenerated lounge, hidden world 2\n");
-  EXPECT_THAT(reasons(g, kOtherRooms), HasSubstr("in hidden world 1: touched a wall at 29.3 s\n"));
-  EXPECT_THAT(reasons(g, kOtherRooms), HasSubstr("in hidden world 2: touched a wall at 27.7 s\n"));
+  EXPECT_THAT(reasons(g, kOtherRooms), HasSubstr("in hidden world 1: touched a wall at 29.3 s (2 collisions; 0 allowed)\n"));
+  EXPECT_THAT(reasons(g, kOtherRooms), HasSubstr("in hidden world 2: touched a wall at 27.7 s (2 collisions; 0 allowed)\n"));
 }
 
 }  // namespace

@@ -79,7 +79,7 @@ TEST(ParallelAssignment, StarterOnlyPatrols) {
   course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "starter.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kPatrol, 2}, {kKey, 0}, {kBump, 0}, {kBudget, 0}, {kOtherKeys, 0}, {kOtherBox, 0}}));
   for (const std::string& check : {kKey, kBudget}) EXPECT_THAT(reasons(g, check), HasSubstr(kStillMoving)) << check;
-  EXPECT_THAT(reasons(g, kBump), HasSubstr(kStillMoving));  // it pushes the box on
+  EXPECT_THAT(reasons(g, kBump), HasSubstr("collisions; 1 allowed)"));  // it pushes the box on: a collision for every second of it
   EXPECT_THAT(reasons(g, kOtherKeys), HasSubstr(kMovedAfterTheKey));
   EXPECT_THAT(reasons(g, kOtherBox), HasSubstr("its task never returned a value"));
 }
@@ -90,7 +90,7 @@ TEST(ParallelAssignment, CopiedExample7IgnoresKeyAndBumpersAndGivesNoReason) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "copied_example.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kPatrol, 2}, {kKey, 0}, {kBump, 0}, {kBudget, 0}, {kOtherKeys, 0}, {kOtherBox, 0}}));
   EXPECT_THAT(reasons(g, kKey), HasSubstr(kStillMoving));
-  EXPECT_THAT(reasons(g, kBump), HasSubstr(kStillMoving));
+  EXPECT_THAT(reasons(g, kBump), HasSubstr("collisions; 1 allowed)"));
   EXPECT_THAT(reasons(g, kBudget), HasSubstr("not budget (reported by the controller)"));
 }
 
@@ -110,18 +110,20 @@ TEST(ParallelAssignment, IgnoringTheKeyFailsTheKeyChecks) {
 }
 
 // Any key stops it: right in the visible key world, wrong when another key is pressed before s. It
-// reports "key", but before the simulator pressed s.
+// stops, and reports "key", before the simulator pressed s: it was not moving until s.
 TEST(ParallelAssignment, StoppingOnAnyKeyFailsTheOtherKeysCheck) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "stops_on_any_key.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kPatrol, 2}, {kKey, 2}, {kBump, 2}, {kBudget, 2}, {kOtherKeys, 0}, {kOtherBox, 1}}));
-  EXPECT_THAT(reasons(g, kOtherKeys), HasSubstr("in hidden world 1: its task returned key at 15.7 s, before the key s was pressed (at 21.9 s)"));
+  EXPECT_THAT(
+      reasons(g, kOtherKeys),
+      HasSubstr("in hidden world 1: stood still for 2.0 s of the 2 s before the key s was pressed (at 21.9 s); it must be moving until then"));
 }
 
 // The watcher does not watch the bumpers: the robot pushes past the box and patrols on.
 TEST(ParallelAssignment, IgnoringTheBumpersFailsTheBoxChecks) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "ignores_bumper.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kPatrol, 2}, {kKey, 2}, {kBump, 0}, {kBudget, 2}, {kOtherKeys, 1}, {kOtherBox, 0}}));
-  EXPECT_THAT(reasons(g, kBump), HasSubstr(kStillMoving));  // it pushes the box on
+  EXPECT_THAT(reasons(g, kBump), HasSubstr("collisions; 1 allowed)"));  // it pushes the box on: a collision for every second of it
   EXPECT_THAT(reasons(g, kOtherBox), HasSubstr("in hidden world 1: its task never returned a value"));
 }
 

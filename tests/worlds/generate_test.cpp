@@ -12,6 +12,8 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <set>
 
 namespace frob::worlds {
 namespace {
@@ -189,8 +191,8 @@ TEST(Generate, TheSameKindAndSeedGiveTheSameWorld) {
   const std::pair<WorldKind, std::uint64_t> golden[] = {
       {WorldKind::Obstacles, 0x2a9e3bdc9cc43da8}, {WorldKind::Maze, 0x8d6d1211bd3c238a},          {WorldKind::Rooms, 0x6c928bc0cf02103b},
       {WorldKind::Loop, 0xddba8c29c890a141},      {WorldKind::FurnishedRoom, 0x2bca8182ec9938e1}, {WorldKind::Outline, 0xe6392ee7c31b3288},
-      {WorldKind::Lounge, 0x404342d5d8f7eb66},    {WorldKind::WarehouseKeys, 0x6d2d417e0ad8ad6f}, {WorldKind::WarehouseBox, 0xccf5985e0d6ab3eb},
-      {WorldKind::Crossing, 0xa8ed5179b56a8f91}};
+      {WorldKind::Lounge, 0x399272dd52c0b66c},    {WorldKind::WarehouseKeys, 0x6d2d417e0ad8ad6f}, {WorldKind::WarehouseBox, 0xccf5985e0d6ab3eb},
+      {WorldKind::Crossing, 0x8ba29af7ec54dfb7}};
   for (const auto& [kind, hash] : golden) {
     const std::string text = toToml(generateWorld(kind, 1).value());
     EXPECT_EQ(text, toToml(generateWorld(kind, 1).value()));
@@ -268,6 +270,33 @@ TEST(Generate, ALoungeBlocksEveryLegBetweenTheWaypoints) {
   }
 }
 
+// go_to_goal: no fixed way is clear in every lounge. Pieces stand against the walls, and free ones
+// well away from the legs' lines; in 40 lounges, a piece comes within the body's width (plus 0.1 m)
+// of every point of a grid over the room but those near the waypoints and the start, so no line
+// through the room and no way along its walls is kept clear.
+TEST(Generate, ALoungeKeepsNoWayClearForAFixedRoute) {
+  std::vector<WorldDef> lounges;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) lounges.push_back(generateWorld(WorldKind::Lounge, seed).value());
+  int againstAWall = 0, blocked = 0, points = 0;
+  for (const WorldDef& w : lounges) {
+    againstAWall += std::any_of(w.walls.begin(), w.walls.end(), [&](const WallDef& wall) {
+      return wall.shape == WallShape::Rectangle &&
+             (wall.points[0].x() == 0 || wall.points[0].y() == 0 || wall.points[1].x() == 12 || wall.points[1].y() == 10);
+    });
+  }
+  EXPECT_EQ(againstAWall, 40);
+  const Point2 keep[] = {{3.0, 2.5}, {3.5, 7.5}, {9.0, 7.0}, {8.5, 2.5}, {1.5, 1.5}};
+  for (double x = 0.5; x < 12; x += 0.5) {
+    for (double y = 0.5; y < 10; y += 0.5) {
+      const Point2 p(x, y);
+      if (std::any_of(std::begin(keep), std::end(keep), [&](const Point2& q) { return (q - p).norm() < 1.3; })) continue;
+      ++points;
+      blocked += std::any_of(lounges.begin(), lounges.end(), [&](const WorldDef& w) { return nearestWall(w.walls, p) < 2 * kRadius + 0.1; });
+    }
+  }
+  EXPECT_EQ(blocked, points);
+}
+
 // parallel: other keys, then s, last, between 16 and 24 s; or a box across the patrol's way.
 TEST(Generate, AWarehouseHasTheEventsItsChecksWaitFor) {
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
@@ -291,7 +320,9 @@ TEST(Generate, AWarehouseHasTheEventsItsChecksWaitFor) {
   }
 }
 
-// multi_robot: 2 to 4 robots, each goal opposite its start through the centre, goals 2 m apart.
+// multi_robot: 2 to 4 robots, each goal opposite its start through the centre, goals 2 m apart;
+// starts 2 to 4 m from the centre, each robot with a start delay (0 to 4 s) and top speed (0.4 to
+// 0.6 m/s) of its own, written to the world file, so that no timetable fits every crossing.
 TEST(Generate, ACrossingSendsEveryRobotThroughTheCentre) {
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     const WorldDef w = generateWorld(WorldKind::Crossing, seed).value();
@@ -304,8 +335,27 @@ TEST(Generate, ACrossingSendsEveryRobotThroughTheCentre) {
       EXPECT_LT((*goal + r.start.position - Point2(10, 10)).norm(), 1e-9) << "seed " << seed << ": " << r.name;
       for (const Point2& g : goals) EXPECT_GT((g - *goal).norm(), 2.0) << "seed " << seed;
       goals.push_back(*goal);
+      EXPECT_GE((r.start.position - Point2(5, 5)).norm(), 2.0 - 1e-3);
+      EXPECT_LE((r.start.position - Point2(5, 5)).norm(), 4.0 + 1e-3);
+      EXPECT_GE(r.drive.startDelay, 0.0);
+      EXPECT_LE(r.drive.startDelay, 4.0);
+      EXPECT_GE(r.drive.maxSpeed, 0.4);
+      EXPECT_LE(r.drive.maxSpeed, 0.6);
+    }
+    const std::string file = ::testing::TempDir() + "crossing.toml";
+    std::ofstream(file) << toToml(w);
+    const Result<WorldDef> back = loadWorld(file);
+    ASSERT_TRUE(back) << back.error();
+    for (std::size_t i = 0; i < w.robots.size(); ++i) {
+      EXPECT_EQ(back->robots[i].drive.startDelay, w.robots[i].drive.startDelay);
+      EXPECT_EQ(back->robots[i].drive.maxSpeed, w.robots[i].drive.maxSpeed);
     }
   }
+  std::set<double> delays;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    for (const RobotDef& r : generateWorld(WorldKind::Crossing, seed).value().robots) delays.insert(r.drive.startDelay);
+  }
+  EXPECT_GT(*delays.rbegin() - *delays.begin(), 3.0);
 }
 
 }  // namespace

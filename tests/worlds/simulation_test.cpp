@@ -61,6 +61,21 @@ TEST(Simulation, DrivesForwardAndTurnsWithinItsLimits) {
   EXPECT_NEAR(sim.frame(0).turnRate, 1.0, 1e-5);
 }
 
+// A late start: the wheels do not answer for start_delay seconds, then drive as usual (0.5 s to
+// reach 0.5 m/s, as above: 0.375 m in the second after the delay).
+TEST(Simulation, AStartDelayHoldsTheWheelsUntilIt) {
+  Simulation sim(ideal(R"(
+    size = [20, 20]
+    [[robot]]
+    start = [2, 10]
+    drive = { max_speed = 0.5, acceleration = 1.0, start_delay = 1.5 }
+  )"));
+  drive(sim, 150, {.forward = 2.0});
+  EXPECT_EQ(sim.truePose(0).position.x(), 2.0);
+  drive(sim, 100, {.forward = 2.0});
+  EXPECT_NEAR(sim.truePose(0).position.x(), 2.375, 0.01);
+}
+
 TEST(Simulation, AWallStopsARobotAndItsBumperFiresOnce) {
   // A robot 2 m from a wall drives straight at it for 10 s: it must stop at the wall, not pass it.
   Simulation sim(ideal(R"(

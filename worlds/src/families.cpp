@@ -167,17 +167,23 @@ WorldDef lounge(Random& r, std::uint64_t seed) {
       }
     }
   }
-  // One or two more against the walls (shelves, cabinets), off the straight lines.
-  for (int attempt = 0, more = r.integer(1, 2); more > 0 && attempt < 200; ++attempt) {
-    const double length = r.uniform(1.0, 2.5), deep = r.uniform(0.4, 1.0);
+  // Shelves and cabinets against any wall, anywhere along it, up to 1.6 m deep, and pieces standing
+  // anywhere else: no line through the room and no way along its walls is kept clear, so no route
+  // fixed in advance passes all lounges (a way round every piece remains: keepsPromises).
+  const auto clearOfTheWay = [&](const Piece& p) {
+    return distanceTo(start, p) >= 0.9 && std::all_of(wp.begin(), wp.end(), [&](const Point2& q) { return distanceTo(q, p) >= 0.8; });
+  };
+  for (int attempt = 0, more = r.integer(3, 4); more > 0 && attempt < 200; ++attempt) {
+    const double length = r.uniform(1.0, 3.0), deep = r.uniform(0.4, 1.6);
     const bool alongX = r.coin(), low = r.coin();
     const double at = alongX ? r.uniform(0, 12 - length) : r.uniform(0, 10 - length);
     const Piece p{alongX ? rectangleWall({at, low ? 0.0 : 10 - deep}, {at + length, low ? deep : 10.0})
                          : rectangleWall({low ? 0.0 : 12 - deep, at}, {low ? deep : 12.0, at + length})};
-    bool offTheLines = segmentDistance(start, wp[0], p) > 1.0;
-    for (std::size_t k = 0; k + 1 < wp.size(); ++k) offTheLines = offTheLines && segmentDistance(wp[k], wp[k + 1], p) > 1.0;
-    const bool clearOfTheRest = gapTo(p, w.walls) >= 1.0 && distanceTo(start, p) >= 0.9;
-    if (offTheLines && clearOfTheRest) add(w, p), --more;
+    if (gapTo(p, w.walls) >= 1.0 && clearOfTheWay(p)) add(w, p), --more;
+  }
+  for (int attempt = 0, more = r.integer(2, 3); more > 0 && attempt < 200; ++attempt) {
+    const Piece p = furniture(r, {r.uniform(0.6, 11.4), r.uniform(0.6, 9.4)}, allWalls(w));
+    if (standsClear(p, w) && clearOfTheWay(p)) add(w, p), --more;
   }
   return w;
 }
@@ -240,7 +246,8 @@ WorldDef crossing(Random& r, std::uint64_t seed) {
   for (int i = 0, n = r.integer(2, 4), attempt = 0; i < n && attempt < 400; ++attempt) {
     // Now and then face to face with one already placed, on its way (as in a swap); else anywhere.
     const double angle = !angles.empty() && r.integer(0, 2) == 0 ? angles[r.next() % angles.size()] + pi : r.uniform(-pi, pi);
-    const double radius = r.uniform(3.0, 4.0);
+    // From 2 to 4 m out: robots reach the middle up to 4 s apart, so no one clock (a roundabout in lock-step) keeps them apart.
+    const double radius = r.uniform(2.0, 4.0);
     const Point2 start(mm(centre.x() + std::cos(angle) * radius), mm(centre.y() + std::sin(angle) * radius)), goal = centre + (centre - start);
     // Bodies apart at the start; goals 2 m apart, so that a robot parked at its goal is not in another's way; and ways
     // that are one line (face to face) or cross at 60 degrees or more, so that no two robots drive side by side.
@@ -253,7 +260,11 @@ WorldDef crossing(Random& r, std::uint64_t seed) {
                        std::all_of(angles.begin(), angles.end(), [&](double a) { return between(a, angle) < 0.05 || between(a, angle) >= pi / 3; });
     if (!apart) continue;
     starts.push_back(start), goals.push_back(goal), angles.push_back(angle);
-    w.robots.push_back({.name = names[i], .start = {.position = start, .heading = r.uniform(-pi, pi)}});
+    // Each robot's wheels answer after a delay of its own, up to 4 s, and reach a top speed of its own:
+    // one clock for all predicts no one.
+    w.robots.push_back({.name = names[i],
+                        .start = {.position = start, .heading = r.uniform(-pi, pi)},
+                        .drive = {.maxSpeed = r.uniform(0.4, 0.6), .startDelay = r.uniform(0.0, 4.0)}});
     w.points.push_back({std::string("goal_") + names[i], goal});
     ++i;
   }

@@ -71,6 +71,7 @@ void snap(WorldDef& w) {
     wall.radius = mm(wall.radius);
   }
   for (KeyEventDef& k : w.keys) k.time = mm(k.time);
+  for (RobotDef& r : w.robots) r.drive.startDelay = mm(r.drive.startDelay), r.drive.maxSpeed = mm(r.drive.maxSpeed);
 }
 
 // A world of one of the first kinds: one robot, and the point "goal".
@@ -278,6 +279,8 @@ std::string toToml(const WorldDef& w) {
   for (const RobotDef& r : w.robots) {
     t += "\n[[robot]]\nname = \"" + r.name + "\"\nstart = " + point(r.start.position) + "\nheading_deg = " + number(r.start.heading * 180.0 / pi) +
          "\n";
+    if (r.drive.startDelay > 0 || r.drive.maxSpeed != DriveDef{}.maxSpeed)
+      t += "drive = { max_speed = " + number(r.drive.maxSpeed) + ", start_delay = " + number(r.drive.startDelay) + " }\n";
   }
   for (const KeyEventDef& k : w.keys) t += "\n[[key]]\ntime = " + number(k.time) + "\nkey = \"" + std::string(1, k.key) + "\"\n";
   for (const WallDef& wall : w.walls) {

@@ -402,7 +402,7 @@ void Simulation::step(std::span<const Wheels> wheels) {
   for (std::size_t i = 0; i < s.robots.size(); ++i) {
     RobotState& r = s.robots[i];
     r.bumps.clear();
-    Wheels w = i < wheels.size() ? wheels[i] : Wheels{};
+    Wheels w = i < wheels.size() && s.steps * dt >= r.def.drive.startDelay - 1e-9 ? wheels[i] : Wheels{};
     if (!std::isfinite(w.forward) || !std::isfinite(w.turn)) {
       ++r.invalid;
       w = {};

@@ -175,6 +175,7 @@ Status checkRobot(const RobotDef& r) {
   if (bad(d.turnAcceleration, 1e-6, 1e4)) return Status::failure("drive.turn_acceleration: must lie in (0, 10000] rad/s^2");
   if (bad(d.slip, 0.0, 0.5)) return Status::failure("drive.slip: must lie in [0, 0.5]");
   if (bad(d.slipTime, 0.01, 1e4)) return Status::failure("drive.slip_time: must lie in [0.01, 10000] s");
+  if (bad(d.startDelay, 0.0, 1e4)) return Status::failure("drive.start_delay: must lie in [0, 10000] s");
   if (bad(r.startSpread.position, 0.0, 1.0)) return Status::failure("start_spread.position: must lie in [0, 1] m");
   if (bad(r.startSpread.heading, 0.0, pi)) return Status::failure("start_spread.heading_deg: must lie in [0, 180] degrees");
   if (!finite(r.start.position) || !std::isfinite(r.start.heading)) return Status::failure("start: must be finite");

@@ -226,11 +226,11 @@ class Parser : TomlReader {
   }
 
   bool readDrive(const toml::table& t, const std::string& f, DriveDef& d) {
-    return onlyKeys(t, f, {"max_speed", "max_turn_rate", "acceleration", "turn_acceleration", "slip", "slip_time"}) &&
+    return onlyKeys(t, f, {"max_speed", "max_turn_rate", "acceleration", "turn_acceleration", "slip", "slip_time", "start_delay"}) &&
            optNumber(t, "max_speed", f + "max_speed", d.maxSpeed) && optNumber(t, "max_turn_rate", f + "max_turn_rate", d.maxTurnRate) &&
            optNumber(t, "acceleration", f + "acceleration", d.acceleration) &&
            optNumber(t, "turn_acceleration", f + "turn_acceleration", d.turnAcceleration) && optNumber(t, "slip", f + "slip", d.slip) &&
-           optNumber(t, "slip_time", f + "slip_time", d.slipTime);
+           optNumber(t, "slip_time", f + "slip_time", d.slipTime) && optNumber(t, "start_delay", f + "start_delay", d.startDelay);
   }
 
   bool readStartSpread(const toml::table& t, const std::string& f, StartSpreadDef& s) {

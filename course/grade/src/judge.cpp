@@ -49,8 +49,21 @@ std::size_t closestTo(const std::vector<Point2>& path, const Point2& p, std::siz
 // still stopping bounces, or glances round a corner onto the next face (seconds).
 constexpr double kSameCollision = 0.5;
 
+// A touch that goes on while the robot drives counts again for every second of driving it lasts:
+// pushing along an obstacle is many collisions, not one (seconds).
+constexpr double kSlidePerCollision = 1.0;
+// Below this the centre stands still: a robot pressed against what it stopped at slides nowhere (m/s).
+constexpr double kStill = 0.02;
+// A robot following an event may stand still this long in the `within` s before it: a step or two
+// between driving and turning at a corner, not a stop (seconds).
+constexpr double kStandingBefore = 0.25;
+// How late a reported event may come when the rubric states no `within`: seen a step after it
+// happened, a controller ends its task at once (seconds).
+constexpr double kReportLatency = 1.0;
+
 // The contacts that began a collision: touching spans and contacts (each in the step before it was
-// sensed) merged where less than kSameCollision apart, the first contact of each.
+// sensed) merged where less than kSameCollision apart, the first contact of each; then, for each
+// started kSlidePerCollision of driving while touching after the first, one more at that instant.
 std::vector<std::pair<double, Point2>> collisionsOf(const Track& t, double dt) {
   std::vector<std::pair<double, double>> touches = t.touching;
   for (const auto& contact : t.contacts) touches.emplace_back(contact.first - dt, contact.first);
@@ -64,11 +77,24 @@ std::vector<std::pair<double, Point2>> collisionsOf(const Track& t, double dt) {
     }
   }
   std::vector<std::pair<double, Point2>> starts;
-  std::size_t group = 0, counted = merged.size();  // `counted`: the group of the last start
+  std::vector<std::size_t> groups;  // the group each start began
+  std::size_t group = 0;
   for (const auto& contact : t.contacts) {
     while (merged[group].second < contact.first - 1e-9) ++group;
-    if (group != counted) starts.push_back(contact), counted = group;
+    if (groups.empty() || groups.back() != group) starts.push_back(contact), groups.push_back(group);
   }
+  for (const std::size_t g : groups) {
+    double slid = 0.0;  // driving while touching, in this collision's touching spans
+    for (const auto& [from, to] : t.touching) {
+      if (from < merged[g].first - 1e-9 || to > merged[g].second + 1e-9) continue;
+      for (auto k = static_cast<std::size_t>(std::max(1.0, std::ceil(from / dt - 1e-9))); k < t.path.size() && k * dt <= to + 1e-9; ++k) {
+        if ((t.path[k] - t.path[k - 1]).norm() / dt < kStill) continue;
+        slid += dt;
+        if (slid > kSlidePerCollision + 1e-9) starts.emplace_back(static_cast<double>(k) * dt, t.path[k]), slid -= kSlidePerCollision;
+      }
+    }
+  }
+  std::stable_sort(starts.begin(), starts.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   return starts;
 }
 
@@ -182,14 +208,33 @@ class Judge {
     return {.at = 0.0};
   }
 
+  // How fast the fastest point of the body moves at step k (k >= 1): the centre's speed, plus the
+  // rim's from turning on the spot (m/s).
+  double bodySpeed(const Track& t, std::size_t k) const {
+    const double turn = k < t.heading.size() ? std::abs(std::remainder(t.heading[k] - t.heading[k - 1], 2 * pi)) * t.radius : 0.0;
+    return ((t.path[k] - t.path[k - 1]).norm() + turn) / run_.dt;
+  }
+
   std::string stopped(const Track& t) {
     const Event e = event(t);
     if (!e.at) return e.never + ", so it had nothing to stop for";
     const std::size_t n = t.path.size();
+    const bool follows = c_.afterKey != 0 || c_.afterContact;
+    if (follows) {
+      // Moving until the event: it stood still at most kStandingBefore of the `within` s before it.
+      double stood = 0.0;
+      for (std::size_t k = 1; k < n && timeOf(k) <= *e.at + 1e-9; ++k) {
+        if (timeOf(k) > *e.at - c_.within + 1e-9 && bodySpeed(t, k) < c_.speed) stood += run_.dt;
+      }
+      if (stood > kStandingBefore + 1e-9) {
+        return format("stood still for %.1f s of the %g s before %s (at %s); it must be moving until then", stood, c_.within, e.what.c_str(),
+                      secondsText(*e.at).c_str());
+      }
+    }
     const std::size_t after = static_cast<std::size_t>(std::ceil((*e.at + c_.within) / run_.dt - 1e-9));
-    const std::size_t from = c_.afterKey != 0 || c_.afterContact ? std::min(after, n - 1) : n - 1;
+    const std::size_t from = follows ? std::min(after, n - 1) : n - 1;
     for (std::size_t k = std::max<std::size_t>(from, 1); k < n; ++k) {
-      const double speed = (t.path[k] - t.path[k - 1]).norm() / run_.dt;
+      const double speed = bodySpeed(t, k);
       if (speed < c_.speed) continue;
       if (k == n - 1 && from >= n - 1) return format("was still moving at %.2f m/s at the end; it should stop (below %.2f m/s)", speed, c_.speed);
       return format("was moving at %.2f m/s at %s, %.1f s after %s; it should stop within %g s (below %.2f m/s)", speed,
@@ -208,6 +253,13 @@ class Judge {
     if (!e.at) return "its task returned " + c_.value + ", but " + e.never;
     if (t.returnedAt + run_.dt < *e.at - 1e-9) {  // a step's grace: an event is seen in the frame after it
       return "its task returned " + c_.value + " at " + secondsText(t.returnedAt) + ", before " + e.what + " (at " + secondsText(*e.at) + ")";
+    }
+    if (c_.afterKey != 0 || c_.afterContact || c_.afterDistance > 0) {
+      const double latency = c_.within > 0 ? c_.within : kReportLatency;
+      if (t.returnedAt > *e.at + latency + 1e-9) {
+        return "its task returned " + c_.value + " at " + secondsText(t.returnedAt) + ", " + secondsText(t.returnedAt - *e.at) + " after " + e.what +
+               format("; at most %g s later allowed", latency);
+      }
     }
     return "";
   }

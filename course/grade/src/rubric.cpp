@@ -33,7 +33,7 @@ const CriterionSpec kCriteria[] = {
     {"robots_apart", Kind::RobotsApart, {"min"}},
     {"path_ratio", Kind::PathRatio, {"max", "point", "within"}},
     {"bug1_bound", Kind::Bug1Bound, {"point", "within"}},
-    {"returns", Kind::Returns, {"value", "after_key", "after_contact", "after_distance"}},
+    {"returns", Kind::Returns, {"value", "after_key", "after_contact", "after_distance", "within"}},
 };
 
 class RubricReader : worlds::TomlReader {
@@ -117,6 +117,11 @@ class RubricReader : worlds::TomlReader {
     }
     if (!readGenerated(t, field, c) || !readWorlds(t, field, c) || !readSeeds(t, field, c)) return false;
     if (c.criteria.empty()) return fail(c.line, field + "name", "check '" + c.name + "' has no criterion");
+    // Unbounded, a place is reached by anything that wanders long enough: a check students cannot see must say by when.
+    for (const Criterion& k : c.criteria) {
+      if (c.visibility != Visibility::Visible && (k.kind == Kind::Goal || k.kind == Kind::Waypoints) && k.seconds <= 0)
+        return fail(k.line, field + std::string(toString(k.kind)) + ".by", "missing: a check that is not visible must give the time allowed");
+    }
     // In the order written (TOML tables list their keys sorted): the first that fails gives the reason.
     std::stable_sort(c.criteria.begin(), c.criteria.end(), [](const Criterion& a, const Criterion& b) { return a.line < b.line; });
     return true;
@@ -229,7 +234,9 @@ class RubricReader : worlds::TomlReader {
       case Kind::Returns: {
         const toml::node* n = t.get("value");
         if (n == nullptr) return fail(c.line, field + "value", "missing");
-        if (!readEvent(t, field, c) || !optNumber(t, "after_distance", field + "after_distance", c.afterDistance)) return false;
+        if (!readEvent(t, field, c) || !optNumber(t, "after_distance", field + "after_distance", c.afterDistance) ||
+            !optNumber(t, "within", field + "within", c.within))
+          return false;
         if (const auto* b = n->as_boolean()) return c.value = b->get() ? "true" : "false", true;
         if (const auto* i = n->as_integer()) return c.value = std::to_string(i->get()), true;
         return string(*n, field + "value", c.value);

@@ -245,7 +245,7 @@ TEST_F(Grading, HiddenWorldsAreTheFirstDrawsTheReferencePasses) {
         << "title = \"Fair\"\nreference = \"still.cpp\"\nseconds = 0.5\n[[check]]\nname = \"near the room\"\n"
            "visibility = \"hidden\"\ngenerated = { kind = \"furnished_room\", secret = 3 }\n"
            "goal = { point = \"room\", within = "
-        << within << " }\n";
+        << within << ", by = 60 }\n";
     return loadRubric(dir_ / "assignment" / "fair.toml").value();
   };
   GradeDef def = def_;
@@ -309,9 +309,9 @@ TEST_F(Grading, EachCheckRunsInItsOwnDraws) {
   std::ofstream(dir_ / "assignment" / "two.toml")
       << "title = \"Two\"\nseconds = 0.5\n"
          "[[check]]\nname = \"first\"\nvisibility = \"hidden\"\nseeds = [1]\n"
-         "generated = { kind = \"furnished_room\", secret = 1 }\ngoal = { point = \"room\", within = 100 }\n"
+         "generated = { kind = \"furnished_room\", secret = 1 }\ngoal = { point = \"room\", within = 100, by = 60 }\n"
          "[[check]]\nname = \"second\"\nvisibility = \"hidden\"\nseeds = [1]\n"
-         "generated = { kind = \"furnished_room\", secret = 1 }\ngoal = { point = \"room\", within = 100 }\n";
+         "generated = { kind = \"furnished_room\", secret = 1 }\ngoal = { point = \"room\", within = 100, by = 60 }\n";
   GradeDef def = def_;
   def.rubric = loadRubric(dir_ / "assignment" / "two.toml").value();
   const Grade g = grade(def, dir_ / "assignment" / "still.cpp");

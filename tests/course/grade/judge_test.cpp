@@ -77,6 +77,27 @@ TEST(Judge, StoppedWithinItsTimeOfAKeyAndStillAtTheEnd) {
   EXPECT_EQ(run(c, stopsAt(2.8, 6), r).reason, "the key s was never pressed, so it had nothing to stop for");
 }
 
+// A robot that stopped at a time of its choosing, before the key came, did not stop for the key: it
+// must be moving (a point of its body faster than `speed`; turning on the spot counts) until the
+// event, all but 0.25 s of the `within` s before it.
+TEST(Judge, StoppedForAnEventOnlyIfMovingUntilIt) {
+  RunRecord r = room();
+  r.keys = {{.time = 2.0, .key = 's'}};
+  const Criterion c{.kind = Kind::Stopped, .speed = 0.05, .afterKey = 's', .within = 1.0};
+  EXPECT_EQ(run(c, stopsAt(0.5, 6), r).reason,
+            "stood still for 1.0 s of the 1 s before the key s was pressed (at 2.0 s); it must be moving until then");
+  EXPECT_EQ(run(c, stopsAt(1.7, 6), r).reason,
+            "stood still for 0.3 s of the 1 s before the key s was pressed (at 2.0 s); it must be moving until then");
+  EXPECT_TRUE(run(c, stopsAt(1.8, 6), r).passed) << "0.2 s standing: a pause between driving and turning";
+  Track turns = stopsAt(1.0, 6);  // stops at 1 s, then turns on the spot at 1 rad/s until 2.2 s: its rim moves at 0.23 m/s
+  turns.heading.assign(turns.path.size(), 0.0);
+  for (std::size_t k = 11; k < turns.heading.size(); ++k) turns.heading[k] = 0.1 * static_cast<double>(std::min<std::size_t>(k, 22) - 10);
+  EXPECT_TRUE(run(c, turns, r).passed);
+  turns.heading.back() += 0.5;  // a turn at the end is not stopped either
+  EXPECT_EQ(run(c, turns, r).reason,
+            "was moving at 1.15 m/s at 6.0 s, 4.0 s after the key s was pressed; it should stop within 1 s (below 0.05 m/s)");
+}
+
 TEST(Judge, StoppedWithinItsTimeOfTheFirstContact) {
   const Criterion c{.kind = Kind::Stopped, .speed = 0.05, .afterContact = true, .within = 0.5};
   Track t = stopsAt(2.0, 4);
@@ -108,6 +129,25 @@ TEST(Judge, AReportedEventMustHaveHappenedFirst) {
   EXPECT_TRUE(run(budget, t).passed);
   t.returnedAt = 1.5;
   EXPECT_EQ(run(budget, t).reason, "its task returned budget at 1.5 s, before it had driven 0.5 m (at 1.7 s)");
+}
+
+// ... and a report long after the event is a guess, not a report: at most `within` s late (1 s unless given).
+TEST(Judge, AReportedEventMustComeSoonAfterIt) {
+  RunRecord r = room();
+  r.keys = {{.time = 2.0, .key = 's'}};
+  Track t = stopsAt(3.0, 5);
+  t.returned = "key";
+  t.returnedAt = 3.0;
+  Criterion key{.kind = Kind::Returns, .value = "key", .afterKey = 's'};
+  EXPECT_TRUE(run(key, t, r).passed);
+  t.returnedAt = 3.2;
+  EXPECT_EQ(run(key, t, r).reason, "its task returned key at 3.2 s, 1.2 s after the key s was pressed; at most 1 s later allowed");
+  key.within = 0.5;
+  t.returnedAt = 2.6;
+  EXPECT_EQ(run(key, t, r).reason, "its task returned key at 2.6 s, 0.6 s after the key s was pressed; at most 0.5 s later allowed");
+  t.returned = "true";
+  t.returnedAt = 4.0;
+  EXPECT_TRUE(run({.kind = Kind::Returns, .value = "true"}, t, r).passed) << "no event: no latency";
 }
 
 TEST(Judge, CollisionsNameTheFirstOneOverTheLimit) {
@@ -152,6 +192,20 @@ TEST(Judge, CollisionsMayCapTheTimeSpentTouching) {
   t.touching.back().second = 30.0;
   EXPECT_FALSE(run(brief, t).passed);
   EXPECT_TRUE(run({.kind = Kind::Collisions, .count = 2}, t).passed) << "no time cap unless one is given";
+}
+
+// Pushing along a wall is one collision per second (started) of driving while touching it; standing
+// pressed against what it stopped at is one.
+TEST(Judge, PushingAlongCountsOneCollisionPerSecondOfIt) {
+  Track t = straight(1, 2.75, 0.5, 6);  // its body against the north wall
+  t.contacts = {{1.0, {1.5, 2.75}}};
+  t.touching = {{1.0, 3.55}};  // 26 steps of 0.1 s driving while touching: 2.6 s
+  EXPECT_TRUE(run({.kind = Kind::Collisions, .count = 3}, t).passed);
+  EXPECT_EQ(run({.kind = Kind::Collisions, .count = 2}, t).reason, "touched a wall at 3.0 s at (2.5, 2.8) (3 collisions; 2 allowed)");
+  Track pressed = stopsAt(1.0, 20);
+  pressed.contacts = {{1.0, {1.3, 1.5}}};
+  pressed.touching = {{1.0, 20.0}};
+  EXPECT_TRUE(run({.kind = Kind::Collisions, .count = 1}, pressed).passed);
 }
 
 TEST(Judge, ClearanceIsMeasuredFromTheBody) {

@@ -143,6 +143,10 @@ INSTANTIATE_TEST_SUITE_P(
         Mistake{"points = 4", "points = \"four\"", "6: check[0].points: expected a number"},
         Mistake{"name = \"hidden fields\"", "name = \"reaches the goal\"", "12: check[1].name: 'reaches the goal' names two checks"},
         Mistake{"goal = { within = 0.2, by = 60 }\ncollisions = { max = 0 }\n", "", "4: check[0].name: check 'reaches the goal' has no criterion"},
+        Mistake{"returns = { value = true }", "goal = { within = 0.3 }",
+                "20: check[1].goal.by: missing: a check that is not visible must give the time allowed"},
+        Mistake{"returns = { value = true }", "waypoints = { points = [\"a\"], within = 0.3 }",
+                "20: check[1].waypoints.by: missing: a check that is not visible must give the time allowed"},
         Mistake{"seconds = 90", "seconds = [", "4: syntax error: Error while parsing value: could not determine value type"}));
 
 TEST(Rubric, GeneratedWorldsFromSeedsAndFromTheSecret) {

@@ -30,10 +30,12 @@ enum class WorldKind {
                   ///< (wander)
   Outline,        ///< a closed room with alcoves and pillars (concave and convex corners); points a-f on the path 40 cm from the wall on the right
                   ///< (wall_follow)
-  Lounge,         ///< 12 x 10 m, the handout's waypoints wp1-wp4; one piece of furniture across each leg, more off the lines (go_to_goal)
+  Lounge,  ///< 12 x 10 m, the handout's waypoints wp1-wp4; a piece across each leg, shelves anywhere along the walls and pieces anywhere else: no
+           ///< fixed way stays clear (go_to_goal)
   WarehouseKeys,  ///< the warehouse patrol p1-p4; other keys pressed, then "s" between 14 and 24 s (parallel)
   WarehouseBox,   ///< the warehouse patrol p1-p4; a box across one of its legs (parallel)
-  Crossing,       ///< 10 x 10 m, 2-4 robots ada, bob, cy, dee; goal_<name> opposite each start through "centre" (5, 5) (multi_robot)
+  Crossing,  ///< 10 x 10 m, 2-4 robots ada, bob, cy, dee 2-4 m from "centre" (5, 5), goal_<name> opposite each start through it; each robot with a
+             ///< start delay (0-4 s) and top speed (0.4-0.6 m/s) of its own (multi_robot)
 };
 
 /// The kinds by name: "obstacles", "maze", "rooms", "loop", "furnished_room", ...

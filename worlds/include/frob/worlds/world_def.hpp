@@ -111,6 +111,7 @@ struct DriveDef {
   double turnAcceleration = 3.0;  ///< rad/s^2
   double slip = 0.03;             ///< relative error of the achieved speeds, standard deviation (0: none)
   double slipTime = 2.0;          ///< seconds over which the slip error changes
+  double startDelay = 0.0;        ///< seconds from the start during which the wheels do not answer (a late start; 0: none)
 };
 
 /// Where a robot really starts: within `position` metres of its `start` and `heading` radians of

@@ -24,17 +24,18 @@ enum class Visibility { Visible, Hidden, AfterDueDate };
 /// "{robot}", replaced by each robot's name ("goal_{robot}").
 struct Criterion {
   enum class Kind {
-    Goal,          ///< within `distance` of point `point` by `seconds`
-    Waypoints,     ///< within `distance` of each of `points`, in order, by `seconds`
-    Stopped,       ///< moving slower than `speed` at the end; with an event, at every step from `within` s after it to the end
-    Collisions,    ///< at most `count` collisions (touches 0.5 s apart or more), and when `seconds` > 0 at most that long touching in all
-    Clearance,     ///< the body never nearer a wall than `distance`
+    Goal,        ///< within `distance` of point `point` by `seconds`
+    Waypoints,   ///< within `distance` of each of `points`, in order, by `seconds`
+    Stopped,     ///< moving slower than `speed` at the end; with an event, moving in the `within` s before it and slower from `within` s after it
+    Collisions,  ///< at most `count` collisions (touches 0.5 s apart or more, one more per second of driving on while touching), and when `seconds` >
+                 ///< 0 at most that long touching in all
+    Clearance,   ///< the body never nearer a wall than `distance`
     WallDistance,  ///< the body `distance` ± `tolerance` from the nearest wall (on `side`, when given) for `fraction` of the run after `after` s
     Coverage,      ///< the robot's centre visited `fraction` of the free cells of size `cell`
     RobotsApart,   ///< robots' bodies never nearer each other than `distance`
     PathRatio,     ///< path until within `distance` of `point` at most `ratio` times the shortest collision-free path
     Bug1Bound,     ///< path until within `distance` of `point` at most the direct distance + 1.5 × the perimeters of obstacles met
-    Returns,       ///< the top task returned `value` (reported by the controller), and no sooner than the event it names happened
+    Returns,       ///< the top task returned `value` (reported by the controller), no sooner than the event it names and at most `within` s later
   };
   Kind kind = Kind::Goal;
   std::string point = "goal";
@@ -53,7 +54,7 @@ struct Criterion {
   char afterKey = 0;           ///< the first press of this key
   bool afterContact = false;   ///< the robot's first contact
   double afterDistance = 0.0;  ///< the robot's true path reaching this length, m (Returns only)
-  double within = 0.0;         ///< Stopped: seconds allowed after the event
+  double within = 0.0;         ///< Stopped: seconds allowed after the event (and moving in as many before it); Returns: the report's latency (0: 1 s)
   std::string side;            ///< WallDistance: "right" or "left" of the robot's heading; "": any wall
   int line = 0;                ///< where the rubric gives it
 };
