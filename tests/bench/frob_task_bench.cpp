@@ -10,9 +10,10 @@ using namespace bench;
 
 Robot benchRobot() { return Robot(nomadSpec(), ScriptedSensors{}); }
 
-// A task that ends at the first step after it starts (one switch per step).
+// A task that lasts one step of the benchmark's clock (one switch per step). Tasks start at their
+// event's instant, so a shorter timer would chain many tasks within one step.
 Task<Wheels> oneStep() {
-  return mkTask([](const TaskState&) { return std::pair{wheels(0.1, 0.2), after(1e-6)}; });
+  return mkTask([](const TaskState&) { return std::pair{wheels(0.1, 0.2), after(0.01)}; });
 }
 
 Task<Wheels> switchEveryStep() {
