@@ -1,6 +1,7 @@
 // What frob grade does when the failure is its own or the machine's, not the submission's: a host
 // program that cannot start, a compiler that crashes. No score stands (never 0 as the student's),
 // and the cause is named.
+#include "../../support/unloadable_program.hpp"
 #include "frob/grade/grade.hpp"
 #include "frob/grade/grade_report.hpp"
 
@@ -45,20 +46,8 @@ class GraderFailure : public ::testing::Test {
   GradeDef def_;
 };
 
-// A copy of /usr/bin/true whose loader cannot find its C library (exit status 127 before its first
-// instruction), as a host program whose libraries are missing or being replaced.
-fs::path unloadableProgram(const fs::path& dir) {
-  std::ifstream in("/usr/bin/true", std::ios::binary);
-  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  for (std::size_t at; (at = bytes.find(std::string("libc.so.6\0", 10))) != std::string::npos;) bytes[at + 3] = 'q';
-  const fs::path program = dir / "unloadable";
-  std::ofstream(program, std::ios::binary) << bytes;
-  fs::permissions(program, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec | fs::perms::others_read);
-  return program;
-}
-
 TEST_F(GraderFailure, AHostThatCannotStartIsNoGrade) {
-  def_.host.program = unloadableProgram(dir_);
+  def_.host.program = frob::testing::unloadableProgram(dir_);
   const Grade g = grade(def_, dir_ / "still.cpp");
   EXPECT_NE(g.graderFailure.find("the grader failed: the controller host could not start: exit status 127"), std::string::npos) << g.graderFailure;
   ASSERT_EQ(g.checks.size(), 1u);

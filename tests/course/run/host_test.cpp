@@ -3,6 +3,7 @@
 // a student can act on, and never the process that holds the world.
 #include "frob/run/host.hpp"
 
+#include "../../support/unloadable_program.hpp"
 #include "../sandbox/hostile.hpp"
 #include "frob/frob.hpp"
 #include "frob/worlds/registry.hpp"
@@ -235,18 +236,6 @@ TEST(Sandbox, NoFlagAHostSetsMakesTheGraderBlock) {
   }
 }
 
-// A copy of /usr/bin/true whose loader cannot find its C library: it ends with exit status 127
-// before its first instruction, as a host program does whose libraries are missing.
-fs::path unloadableProgram(const fs::path& dir) {
-  std::ifstream in("/usr/bin/true", std::ios::binary);
-  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  for (std::size_t at; (at = bytes.find(std::string("libc.so.6\0", 10))) != std::string::npos;) bytes[at + 3] = 'q';
-  const fs::path program = dir / "unloadable";
-  std::ofstream(program, std::ios::binary) << bytes;
-  fs::permissions(program, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec | fs::perms::others_read);
-  return program;
-}
-
 // A host program that cannot be run, or that dies before its first instruction, is frob's failure
 // (kGraderFailure: no grade may rest on it), never the controller's; a controller that ends its
 // program the same way in a global constructor is the controller's.
@@ -260,7 +249,7 @@ TEST(Sandbox, AHostProgramThatCannotStartIsTheGradersFailure) {
     return ControllerHost::start({testing::hostileModule("segfault")}, {"segfault"}, {.program = program});
   };
   const Result<std::shared_ptr<ControllerHost>> missing = start(dir / "missing"), denied = start(dir / "not_a_program");
-  const Result<std::shared_ptr<ControllerHost>> unloadable = start(unloadableProgram(dir));
+  const Result<std::shared_ptr<ControllerHost>> unloadable = start(frob::testing::unloadableProgram(dir));
   for (const Status& s : {missing.status(), denied.status(), unloadable.status()}) EXPECT_TRUE(isGraderFailure(s)) << s.error();
   EXPECT_NE(missing.error().find("No such file or directory"), std::string::npos) << missing.error();
   EXPECT_NE(denied.error().find("Permission denied"), std::string::npos) << denied.error();
