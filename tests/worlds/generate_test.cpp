@@ -353,7 +353,8 @@ TEST(Generate, ACrossingSendsEveryRobotThroughTheCentre) {
   }
   std::set<double> delays;
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
-    for (const RobotDef& r : generateWorld(WorldKind::Crossing, seed).value().robots) delays.insert(r.drive.startDelay);
+    const WorldDef w = generateWorld(WorldKind::Crossing, seed).value();  // a named world: a range-for keeps no temporary alive
+    for (const RobotDef& r : w.robots) delays.insert(r.drive.startDelay);
   }
   EXPECT_GT(*delays.rbegin() - *delays.begin(), 3.0);
 }

@@ -32,6 +32,7 @@ class RunnerNode final : public BehaviorNode<A> {
   RunnerNode& operator=(const RunnerNode&) = delete;
   ~RunnerNode() override {
     if (slot_.frame) slot_.frame.destroy();  // stops every task still running, innermost last
+    ctx_.destroyReplaced();
   }
 
   /// The task's result or error once it has ended (done() is true).
@@ -87,6 +88,7 @@ class RunnerNode final : public BehaviorNode<A> {
       startedAt_ = now.id;
       ctx_.snapshot(here_);
       task_.startIn(slot_, &ctx_, std::noop_coroutine(), parentRecord_, nullptr).resume();
+      ctx_.destroyReplaced();
     }
     for (int transitions = 0;; ++transitions) {
       AtomicBase<A>* atom = ctx_.current;
@@ -113,6 +115,7 @@ class RunnerNode final : public BehaviorNode<A> {
       ctx_.current = nullptr;
       ctx_.snapshot(here_);
       atom->waiter.resume();
+      ctx_.destroyReplaced();
     }
   }
 

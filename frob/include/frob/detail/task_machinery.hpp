@@ -145,7 +145,14 @@ struct RunContext {
   std::exception_ptr origin;                                     // an unexpected exception, and the task it first left
   std::string originTask;
   std::int64_t nextScope = 0;
-  UsedOccurrences used;  // one occurrence is delivered once
+  UsedOccurrences used;                           // one occurrence is delivered once
+  std::vector<std::coroutine_handle<>> replaced;  // frames that became another task: the runner destroys them
+
+  // Destroys the frames that became another task, once the resume they did so in has returned:
+  // a compiler may still touch a frame after its await_suspend hands over to the next one.
+  void destroyReplaced() {
+    for (std::coroutine_handle<> h : std::exchange(replaced, {})) h.destroy();
+  }
 
   // The paper's snapRobot: record where the robot is as one task ends and the next begins, at the
   // instant of the event that ended it (`at`'s lag before the sample).
@@ -460,9 +467,8 @@ auto TaskPromise<A, B>::await_transform(Become<A, B>&& b) {
       p.end(TaskEnd::Replaced, "became " + next.name());
       if (p.caller != nullptr && p.caller->catcher != nullptr) next = static_cast<Catcher<A, B>*>(p.caller->catcher)->absorb(std::move(next));
       ResultSlot<R>& mine = *p.slot;
-      std::coroutine_handle<> h = next.startIn(mine, p.ctx, p.continuation, p.parentRecord, p.caller);
-      self.destroy();  // destroys this awaiter too: nothing of it is touched after this line
-      return h;
+      p.ctx->replaced.push_back(self);  // destroyed by the runner once this resume has returned
+      return next.startIn(mine, p.ctx, p.continuation, p.parentRecord, p.caller);
     }
     void await_resume() noexcept {}
   };
