@@ -282,7 +282,7 @@ WorldDef crossing(Random& r, std::uint64_t seed) {
   }
   // Every circle round the centre of 1 to 3 m (a roundabout) runs into a pillar, a body 5 cm deep
   // at least: a world whose pillars leave one clear keeps no promise, and another is drawn.
-  for (double radius = 1.0; radius <= 3.0; radius += 0.05) {
+  for (double radius = 1.0; radius <= 3.0; radius += 0.01) {
     const bool blocked = std::any_of(w.walls.begin(), w.walls.end(), [&](const WallDef& p) {
       return std::abs((p.points[0] - centre).norm() - radius) < p.radius + kRadius - kBlockDepth;
     });
