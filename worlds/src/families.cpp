@@ -13,7 +13,8 @@ namespace {
 
 using Piece = std::vector<WallDef>;  // one piece of furniture: its walls, placed together
 
-constexpr double kPassage = 0.8;  // between furniture and anything else: room for the body and a margin
+constexpr double kPassage = 0.8;      // between furniture and anything else: room for the body and a margin
+constexpr double kBlockDepth = 0.05;  // how far into a pillar a body on a way blocked by it runs, at least
 
 // The nearest gap between `piece` and any of `walls`.
 double gapTo(const Piece& piece, const std::vector<WallDef>& walls) {
@@ -267,6 +268,25 @@ WorldDef crossing(Random& r, std::uint64_t seed) {
                         .drive = {.maxSpeed = r.uniform(0.4, 0.6), .startDelay = r.uniform(0.0, 4.0)}});
     w.points.push_back({std::string("goal_") + names[i], goal});
     ++i;
+  }
+  // Round pillars (heard from every side) at drawn places round the middle, the centre included,
+  // 1.5 m or more apart and 1 m or more from the walls, leaving room round every start and goal: no
+  // way fixed in advance (a lane beside the straight way, a roundabout) stays clear in most
+  // crossings, and a robot that looks out goes round them.
+  for (int attempt = 0, more = r.integer(4, 6); more > 0 && attempt < 400; ++attempt) {
+    const double angle = r.uniform(-pi, pi), out = r.uniform(0.0, 3.8);
+    const WallDef p = circleWall(centre + out * Vec2(std::cos(angle), std::sin(angle)), r.uniform(0.2, 0.4));
+    const auto roomy = [&](const Point2& q) { return distanceToWall(q, p) >= 0.9; };
+    const bool apart = gapTo({p}, w.walls) >= 1.5 && gapTo({p}, allWalls(w)) >= 1.0;
+    if (apart && std::all_of(starts.begin(), starts.end(), roomy) && std::all_of(goals.begin(), goals.end(), roomy)) w.walls.push_back(p), --more;
+  }
+  // Every circle round the centre of 1 to 3 m (a roundabout) runs into a pillar, a body 5 cm deep
+  // at least: a world whose pillars leave one clear keeps no promise, and another is drawn.
+  for (double radius = 1.0; radius <= 3.0; radius += 0.01) {
+    const bool blocked = std::any_of(w.walls.begin(), w.walls.end(), [&](const WallDef& p) {
+      return std::abs((p.points[0] - centre).norm() - radius) < p.radius + kRadius - kBlockDepth;
+    });
+    if (!blocked) return {};
   }
   return w;
 }

@@ -35,7 +35,8 @@ enum class WorldKind {
   WarehouseKeys,  ///< the warehouse patrol p1-p4; other keys pressed, then "s" between 14 and 24 s (parallel)
   WarehouseBox,   ///< the warehouse patrol p1-p4; a box across one of its legs (parallel)
   Crossing,  ///< 10 x 10 m, 2-4 robots ada, bob, cy, dee 2-4 m from "centre" (5, 5), goal_<name> opposite each start through it; each robot with a
-             ///< start delay (0-4 s) and top speed (0.4-0.6 m/s) of its own (multi_robot)
+             ///< start delay (0-4 s) and top speed (0.4-0.6 m/s) of its own; 4-6 round pillars round the middle, every circle of 1-3 m round the
+             ///< centre blocked (multi_robot)
 };
 
 /// The kinds by name: "obstacles", "maze", "rooms", "loop", "furnished_room", ...
