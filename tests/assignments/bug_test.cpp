@@ -110,7 +110,7 @@ TEST(BugAssignment, StarterScoresNothing) {
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 872466220: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 872466220: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kBound), HasSubstr("so its path cannot be measured"));
-  EXPECT_THAT(reasons(g, kHidden), HasSubstr("never came within 0.30 m of goal"));
+  EXPECT_THAT(judged(g, kHidden), HasSubstr("never came within 0.30 m of goal"));
 }
 
 // Without taskCatch, the first error ends the controller. In the trap field going round takes
@@ -127,15 +127,16 @@ TEST(BugAssignment, ForgettingTaskCatchStopsAtTheFirstError) {
 
 // Example 06 pasted onto the starter (goal corrected): the paper's BUG goes all the way round every
 // obstacle and on to the closest point. In the trap field that takes longer than the run; in the
-// open field and two of the hidden ones it arrives, late and (all but once) past the BUG1 bound, and
-// in one of those two after the 100 s the hidden check allows.
+// open field and one of the hidden ones it arrives, late and past the BUG1 bound, and in another
+// after the 100 s the hidden check allows.
 TEST(BugAssignment, ThePapersBugCirclesForeverAndDrivesPastTheBound) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "circles_forever.cpp"));
-  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 0.5}, {kHiddenBound, 0.5}}));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1}, {kHiddenBound, 0.5}}));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 872466220: never came within 0.30 m of goal"));
-  EXPECT_THAT(reasons(g, kBound), HasSubstr("in worlds/field.toml, seed 402455347: drove 31.42 m to goal; the BUG1 bound is 30.92 m"));
-  EXPECT_THAT(reasons(g, kHidden), HasSubstr("in hidden world 4: never came within 0.30 m of goal"));
-  EXPECT_THAT(reasons(g, kHiddenBound), HasSubstr("the BUG1 bound is"));
+  EXPECT_THAT(reasons(g, kBound), HasSubstr("in worlds/field.toml, seed 402455347: drove 31.43 m to goal; the BUG1 bound is 30.91 m"));
+  EXPECT_THAT(judged(g, kHidden), HasSubstr("in hidden world 1: reached goal at 101.3 s; allowed 100 s"));
+  EXPECT_THAT(judged(g, kHidden), HasSubstr("in hidden world 2: never came within 0.30 m of goal"));
+  EXPECT_THAT(judged(g, kHiddenBound), HasSubstr("the BUG1 bound is"));
 }
 
 // No BUG at all: it steers at the goal by odometry and pushes along whatever is in the way. In the
@@ -155,7 +156,7 @@ TEST(BugAssignment, SlidingAlongObstaclesIsNoPathRoundThem) {
 TEST(BugAssignment, ABlindDriveAlongTheWallsReachesNoGoal) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "drives_along_the_walls.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}, {kHiddenBound, 0}}));
-  EXPECT_THAT(reasons(g, kHidden), HasSubstr("in hidden world 1: never came within 0.30 m of goal"));
+  EXPECT_THAT(judged(g, kHidden), HasSubstr("in hidden world 1: never came within 0.30 m of goal"));
 }
 
 // Course example 6 copied as it is drives to the reference world's goal (13, 13), not the
@@ -186,7 +187,7 @@ TEST(BugAssignment, ExampleSixWithTheGoalCorrectedDoesNotPass) {
   EXPECT_THAT(reasons(g, kBound),
               HasSubstr("in worlds/field.toml, seed 402455347: never came within 0.30 m of goal, so its path cannot be measured"));
   for (const char* world : {"hidden world 1", "hidden world 2", "hidden world 3", "hidden world 4"}) {
-    EXPECT_THAT(reasons(g, kHiddenBound), HasSubstr(world));
+    EXPECT_THAT(judged(g, kHiddenBound), HasSubstr(world));
   }
 }
 

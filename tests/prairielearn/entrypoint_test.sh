@@ -59,7 +59,9 @@ solution() {
   grade --gradable true --score 1 "${visible[@]}" --test "Hidden checks=3/3"
 }
 
-# A route worked out by hand round the lounge: the visible checks pass, the hidden rooms do not.
+# A route worked out by hand round the lounge: the visible checks pass, and of the two hidden lounges
+# drawn for this file it gets round one (a blind route earns at most a third of the hidden points over
+# many draws: tests/assignments/blind_adversary_test.cpp).
 # The question's own secret (tests/secret.txt) stands before the course's (here an empty line, which
 # frob would refuse).
 wrong_submission() {
@@ -67,7 +69,7 @@ wrong_submission() {
   echo ci-test-secret > "$grade/tests/secret.txt"
   echo > "$grade/serverFilesCourse/frob/secret.txt"
   cp "$wrong/hard_coded_route.cpp" "$grade/student/my controller.cpp"
-  grade --gradable true --score 0.7 "${visible[@]}" --test "Hidden checks=0/3" --message-has "not shown"
+  grade --gradable true --score 0.85 "${visible[@]}" --test "Hidden checks=1.5/3" --message-has "not shown"
 }
 
 # A controller that does not compile: not gradable (no attempt used up), the compiler's message shown.

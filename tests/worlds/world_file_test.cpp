@@ -150,7 +150,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadWorld{"slip out of range", "size = [4, 4]\n[[robot]]\nstart = [2, 2]\ndrive = { slip = 0.7 }\n",
                  "maze.toml:3: robot[0].drive.slip: must lie in [0, 0.5]"},
         BadWorld{"typo in a start spread", "size = [4, 4]\n[start_spread]\nheading = 1\n[[robot]]\nstart = [2, 2]\n",
-                 "maze.toml:3: start_spread.heading: unknown key (expected one of position, heading_deg)"},
+                 "maze.toml:3: start_spread.heading: unknown key (expected one of position, heading_deg, known_position, known_heading_deg)"},
         BadWorld{"robot outside", "size = [4, 4]\n[[robot]]\nstart = [5, 2]\n",
                  "maze.toml:3: robot[0].start: the robot (radius 0.23 m, start_spread.position 0.02 m) may reach outside the world"},
         BadWorld{"robots overlap", "size = [4, 4]\n[[robot]]\nstart = [2, 2]\n[[robot]]\nstart = [2.2, 2]\n",

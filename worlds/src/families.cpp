@@ -77,8 +77,8 @@ Piece furniture(Random& r, const Point2& c, const std::vector<WallDef>& walls) {
 WorldDef furnishedRoom(Random& r, std::uint64_t seed) {
   const double width = r.uniform(5.5, 7.5), depth = r.uniform(4.5, 6.5), hall = 2.0, door = r.uniform(1.0, 1.2);
   const double doorAt = r.uniform(1.5, width - 1.5 - door), doorMid = doorAt + door / 2;
-  WorldDef w = base("Generated furnished room, entered from a hall on its south side", {width, depth + hall}, seed,
-                    {doorMid + r.uniform(-0.1, 0.1), r.uniform(0.5, 0.8)}, 90 + r.uniform(-10, 10));
+  WorldDef w = base("Generated furnished room, entered from a hall on its south side", {width, depth + hall}, seed, {doorMid, 0.65}, 90);
+  knownSpread(w, 0.15, 10);
   // The house beside the hall (solid), and round door posts.
   w.walls = {rectangleWall({0, 0}, {doorAt, hall}), rectangleWall({doorAt + door, 0}, {width, hall}), circleWall({doorAt, hall}, 0.1),
              circleWall({doorAt + door, hall}, 0.1)};
@@ -105,7 +105,8 @@ WorldDef outline(Random& r, std::uint64_t seed) {
   const double width = r.uniform(6.0, 7.5), height = r.uniform(5.0, 6.0), margin = 0.5;
   const Point2 o(margin, margin);
   WorldDef w = base("Generated room with pillars against its walls, to follow with the wall on the right", {width + 2 * margin, height + 2 * margin},
-                    seed, o + Vec2(r.uniform(1.2, 1.8), r.uniform(0.78, 0.88)), r.uniform(-8, 8));
+                    seed, o + Vec2(r.uniform(1.2, 1.8), 0.83), 0);
+  knownSpread(w, 0.05, 8);
   w.enclosed = false;
   // The outline counter-clockwise from its south-west corner (the robot goes round it that way with
   // the wall on its right); a pillar against the east, north or west side (two concave corners and
@@ -148,8 +149,8 @@ WorldDef outline(Random& r, std::uint64_t seed) {
 
 WorldDef lounge(Random& r, std::uint64_t seed) {
   const std::array<Point2, 4> wp = {Point2(3.0, 2.5), Point2(3.5, 7.5), Point2(9.0, 7.0), Point2(8.5, 2.5)};
-  WorldDef w = base("Generated lounge: the handout's four waypoints, furniture drawn on the way between them", {12, 10}, seed,
-                    {1.5 + r.uniform(-0.2, 0.2), 1.5 + r.uniform(-0.2, 0.2)}, r.uniform(-20, 20));
+  WorldDef w = base("Generated lounge: the handout's four waypoints, furniture drawn on the way between them", {12, 10}, seed, {1.5, 1.5}, 0);
+  knownSpread(w, 0.25, 20);
   for (std::size_t k = 0; k < wp.size(); ++k) w.points.push_back({"wp" + std::to_string(k + 1), wp[k]});
   const Point2 start = w.robots[0].start.position;
   const auto fits = [&](const Piece& p) {
@@ -194,7 +195,8 @@ namespace {
 // The warehouse of the parallel assignment: the patrol p1 to p4 round a block of shelves, with a
 // shelf along the north wall; the block's size and the start are drawn.
 WorldDef warehouse(Random& r, std::uint64_t seed, const char* what) {
-  WorldDef w = base(what, {8, 6}, seed, {1.0 + r.uniform(-0.15, 0.15), 1.0 + r.uniform(-0.15, 0.15)}, r.uniform(-20, 20));
+  WorldDef w = base(what, {8, 6}, seed, {1.0, 1.0}, 0);
+  knownSpread(w, 0.2, 20);
   w.points = {{"p1", {1.5, 1.5}}, {"p2", {6.5, 1.5}}, {"p3", {6.5, 4.5}}, {"p4", {1.5, 4.5}}};
   w.walls.push_back(rectangleWall({r.uniform(2.3, 2.7), r.uniform(2.4, 2.6)}, {r.uniform(5.3, 5.7), r.uniform(3.4, 3.6)}));
   const double shelf = r.uniform(1.8, 2.2);
@@ -264,7 +266,7 @@ WorldDef crossing(Random& r, std::uint64_t seed) {
     // Each robot's wheels answer after a delay of its own, up to 4 s, and reach a top speed of its own:
     // one clock for all predicts no one.
     w.robots.push_back({.name = names[i],
-                        .start = {.position = start, .heading = r.uniform(-pi, pi)},
+                        .start = {.position = start, .heading = r.integer(-3, 4) * pi / 4},  // as the handed-out worlds face
                         .drive = {.maxSpeed = r.uniform(0.4, 0.6), .startDelay = r.uniform(0.0, 4.0)}});
     w.points.push_back({std::string("goal_") + names[i], goal});
     ++i;
@@ -288,6 +290,7 @@ WorldDef crossing(Random& r, std::uint64_t seed) {
     });
     if (!blocked) return {};
   }
+  knownSpread(w, 0.1, 10);
   return w;
 }
 

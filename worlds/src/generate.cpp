@@ -21,6 +21,10 @@ WorldDef base(const char* what, const Vec2& size, std::uint64_t seed, const Poin
   return w;
 }
 
+void knownSpread(WorldDef& w, double metres, double degrees) {
+  for (RobotDef& r : w.robots) r.startSpread.knownPosition = metres, r.startSpread.knownHeading = degrees * pi / 180.0;
+}
+
 std::vector<WallDef> allWalls(const WorldDef& w) {
   std::vector<WallDef> all = w.walls;
   if (w.enclosed) {
@@ -104,6 +108,7 @@ bool keepsPromises(const WorldDef& w) {
 WorldDef obstacles(Random& r, std::uint64_t seed) {
   WorldDef w = base("Generated obstacle field: blocks, pillars, spurs from the walls and a trap between the start and the goal", {15, 15}, seed,
                     {1.5, 1.5}, 45, {13.5, 13.5});
+  knownSpread(w, 0.1, 10);
   const double apart = 2 * kRadius + 0.3;  // a wall follower passes between two obstacles without touching either
   std::vector<WallDef> placed;
   std::optional<WallDef> trapArea;  // the square an L spans: the trap stands alone, with nothing in it or near it
@@ -279,6 +284,9 @@ std::string toToml(const WorldDef& w) {
   for (const RobotDef& r : w.robots) {
     t += "\n[[robot]]\nname = \"" + r.name + "\"\nstart = " + point(r.start.position) + "\nheading_deg = " + number(r.start.heading * 180.0 / pi) +
          "\n";
+    if (r.startSpread.knownPosition > 0 || r.startSpread.knownHeading > 0)
+      t += "start_spread = { known_position = " + number(r.startSpread.knownPosition) +
+           ", known_heading_deg = " + number(r.startSpread.knownHeading * 180.0 / pi) + " }\n";
     if (r.drive.startDelay > 0 || r.drive.maxSpeed != DriveDef{}.maxSpeed)
       t += "drive = { max_speed = " + number(r.drive.maxSpeed) + ", start_delay = " + number(r.drive.startDelay) + " }\n";
   }

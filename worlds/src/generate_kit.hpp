@@ -34,6 +34,10 @@ class Random {
 [[nodiscard]] double mm(double v);
 /// A world with one robot, "nomad", at `start`.
 [[nodiscard]] WorldDef base(const char* what, const Vec2& size, std::uint64_t seed, const Point2& start, double headingDeg);
+/// Every robot of `w` starts within `metres` and `degrees` of its start, drawn in each run and known
+/// to it (StartSpreadDef): as the handed-out worlds of its assignment do, so that no start tells a
+/// generated world from a handed-out one.
+void knownSpread(WorldDef& w, double metres, double degrees);
 /// The walls of `w` with its enclosure, as the simulator builds them.
 [[nodiscard]] std::vector<WallDef> allWalls(const WorldDef& w);
 /// Nearest distance between two walls (0 when they touch or overlap), sampled along the edges of `a`.

@@ -16,7 +16,7 @@ namespace frob::worlds::detail {
 }
 
 // Which stream of a robot a generator feeds.
-enum class Stream : std::uint64_t { Sonar = 1, Odometry = 2, Slip = 3, Start = 4 };
+enum class Stream : std::uint64_t { Sonar = 1, Odometry = 2, Slip = 3, Start = 4, KnownStart = 5 };
 
 // xoshiro256**: small, fast and the same on every platform (unlike std:: distributions).
 class Rng {

@@ -161,7 +161,7 @@ struct Simulation::Impl : b2ContactListener {
     RobotState r;
     r.def = d;
     r.spec = robotSpec(d);
-    const Pose2 truth = trueStart(d, index);
+    const Pose2 known = knownStart(d, index), truth = trueStart(d, known, index);
     b2BodyDef def;
     def.type = b2_dynamicBody;
     def.position.Set(static_cast<float>(truth.position.x()), static_cast<float>(truth.position.y()));
@@ -204,8 +204,8 @@ struct Simulation::Impl : b2ContactListener {
     r.cosCutoff = std::cos(s.specularCutoff);
     r.previous = poseOf(r.body);
     r.previousCos = std::cos(r.previous.heading), r.previousSin = std::sin(r.previous.heading);
-    const bool offset = truth.position != d.start.position || truth.heading != d.start.heading;
-    r.odometry = offset ? Pose2{d.start.position, wrapAngle(d.start.heading)} : r.previous;
+    const bool offset = truth.position != known.position || truth.heading != known.heading;
+    r.odometry = offset ? Pose2{known.position, wrapAngle(known.heading)} : r.previous;
     r.exactOdometry = !offset && d.odometry.translation == 0 && d.odometry.heading == 0 && d.odometry.turn == 0;
     r.pressed.assign(static_cast<std::size_t>(d.bumpers), 0);
     r.sonarRng = detail::Rng(seed, index, detail::Stream::Sonar);
@@ -222,15 +222,21 @@ struct Simulation::Impl : b2ContactListener {
     robots.push_back(std::move(r));
   }
 
-  // Robot `index`'s true starting pose: its start, moved by an offset drawn from the seed
-  // uniformly within the start spread.
-  Pose2 trueStart(const RobotDef& d, std::size_t index) const {
-    const StartSpreadDef& s = d.startSpread;
-    if (s.position == 0 && s.heading == 0) return d.start;
-    detail::Rng rng(seed, index, detail::Stream::Start);
-    const double distance = s.position * std::sqrt(rng.uniform()), direction = 2 * pi * rng.uniform();
-    const double turn = s.heading * (2 * rng.uniform() - 1);
-    return {d.start.position + distance * unitVector(direction), wrapAngle(d.start.heading + turn)};
+  // `from` moved by an offset drawn from `stream` uniformly within `position` metres and `heading` radians.
+  Pose2 drawnNear(const Pose2& from, double position, double heading, std::size_t index, detail::Stream stream) const {
+    if (position == 0 && heading == 0) return from;
+    detail::Rng rng(seed, index, stream);
+    const double distance = position * std::sqrt(rng.uniform()), direction = 2 * pi * rng.uniform();
+    const double turn = heading * (2 * rng.uniform() - 1);
+    return {from.position + distance * unitVector(direction), wrapAngle(from.heading + turn)};
+  }
+  // Robot `index`'s starting pose as it knows it, where its odometry begins.
+  Pose2 knownStart(const RobotDef& d, std::size_t index) const {
+    return drawnNear(d.start, d.startSpread.knownPosition, d.startSpread.knownHeading, index, detail::Stream::KnownStart);
+  }
+  // Robot `index`'s true starting pose, within the start spread of the `known` one.
+  Pose2 trueStart(const RobotDef& d, const Pose2& known, std::size_t index) const {
+    return drawnNear(known, d.startSpread.position, d.startSpread.heading, index, detail::Stream::Start);
   }
 
   // Box2D calls this during Step when two fixtures start touching.

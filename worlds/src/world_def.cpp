@@ -178,6 +178,8 @@ Status checkRobot(const RobotDef& r) {
   if (bad(d.startDelay, 0.0, 1e4)) return Status::failure("drive.start_delay: must lie in [0, 10000] s");
   if (bad(r.startSpread.position, 0.0, 1.0)) return Status::failure("start_spread.position: must lie in [0, 1] m");
   if (bad(r.startSpread.heading, 0.0, pi)) return Status::failure("start_spread.heading_deg: must lie in [0, 180] degrees");
+  if (bad(r.startSpread.knownPosition, 0.0, 1.0)) return Status::failure("start_spread.known_position: must lie in [0, 1] m");
+  if (bad(r.startSpread.knownHeading, 0.0, pi)) return Status::failure("start_spread.known_heading_deg: must lie in [0, 180] degrees");
   if (!finite(r.start.position) || !std::isfinite(r.start.heading)) return Status::failure("start: must be finite");
   return {};
 }
@@ -203,8 +205,9 @@ Status checkWorld(const WorldDef& w, const SourceLines& at) {
     if (Status e = checkRobot(r); !e) return Status::failure(field + e.error());
     const Point2& p = r.start.position;
     // Wherever the start spread puts it, the robot starts clear of everything.
-    const double reach = r.radius + r.startSpread.position;
-    const std::string body = "the robot (radius " + fmt(r.radius) + " m, start_spread.position " + fmt(r.startSpread.position) + " m)";
+    const double reach = r.radius + r.startSpread.reach();
+    const std::string body = "the robot (radius " + fmt(r.radius) + " m, start_spread.position " + fmt(r.startSpread.position) + " m" +
+                             (r.startSpread.knownPosition > 0 ? " and known_position " + fmt(r.startSpread.knownPosition) + " m)" : ")");
     if (p.x() - reach < 0 || p.y() - reach < 0 || p.x() + reach > w.size.x() || p.y() + reach > w.size.y())
       return Status::failure(field + "start: " + body + " may reach outside the world");
     for (std::size_t k = 0; k < w.walls.size(); ++k)
@@ -212,7 +215,7 @@ Status checkWorld(const WorldDef& w, const SourceLines& at) {
         return Status::failure(field + "start: " + body + " may touch wall[" + std::to_string(k) +
                                "]; move it away or set start_spread.position = 0");
     for (std::size_t k = 0; k < i; ++k)
-      if ((w.robots[k].start.position - p).norm() < w.robots[k].radius + w.robots[k].startSpread.position + reach)
+      if ((w.robots[k].start.position - p).norm() < w.robots[k].radius + w.robots[k].startSpread.reach() + reach)
         return Status::failure(field + "start: " + body + " may overlap robot[" + std::to_string(k) + "]");
   }
   for (std::size_t i = 0; i < w.keys.size(); ++i) {

@@ -234,8 +234,10 @@ class Parser : TomlReader {
   }
 
   bool readStartSpread(const toml::table& t, const std::string& f, StartSpreadDef& s) {
-    return onlyKeys(t, f, {"position", "heading_deg"}) && optNumber(t, "position", f + "position", s.position) &&
-           optNumber(t, "heading_deg", f + "heading_deg", s.heading, kDeg);
+    return onlyKeys(t, f, {"position", "heading_deg", "known_position", "known_heading_deg"}) &&
+           optNumber(t, "position", f + "position", s.position) && optNumber(t, "heading_deg", f + "heading_deg", s.heading, kDeg) &&
+           optNumber(t, "known_position", f + "known_position", s.knownPosition) &&
+           optNumber(t, "known_heading_deg", f + "known_heading_deg", s.knownHeading, kDeg);
   }
 
   bool readRobot(const toml::table& t, const std::string& f) {

@@ -16,7 +16,6 @@
 #include <fstream>
 #include <map>
 #include <optional>
-#include <regex>
 #include <sstream>
 
 namespace frob::course {
@@ -79,6 +78,7 @@ void judgeRun(const Check& check, const RunRecord& record, RunGrade& out) {
   for (const Track& t : record.robots) {
     if (!t.failure.empty()) {
       out.reason = "the controller failed: " + t.failure;
+      out.kind = "the controller failed";
       return;
     }
   }
@@ -86,6 +86,7 @@ void judgeRun(const Check& check, const RunRecord& record, RunGrade& out) {
     Verdict v = judge(c, record);
     if (!v.passed) {
       out.reason = std::move(v.reason);
+      out.kind = "it failed the rubric's \"" + std::string(toString(c.kind)) + "\" criterion";
       return;
     }
   }
@@ -152,18 +153,9 @@ std::string CheckGrade::place(std::size_t k) const {
   return runs.at(k).world + ", seed " + std::to_string(runs.at(k).seed);
 }
 
-namespace {
-
-// `text` without the coordinates of the places it names (" at (3.1, 4.5)").
-std::string withoutPlaces(const std::string& text) {
-  static const std::regex coordinates(R"( at \(-?[0-9.]+, -?[0-9.]+\))");
-  return std::regex_replace(text, coordinates, "");
-}
-
-}  // namespace
-
 std::string CheckGrade::reasonShown(std::size_t k) const {
-  return visibility == Visibility::Visible ? runs.at(k).reason : withoutPlaces(runs.at(k).reason);
+  if (visibility == Visibility::Visible) return runs.at(k).reason;
+  return runs.at(k).kind + " (hidden worlds give no details: practise with frob grade --practice)";
 }
 
 std::string CheckGrade::output() const {
@@ -178,7 +170,7 @@ std::string CheckGrade::output() const {
 
 std::vector<std::string> CheckGrade::hintsShown(std::size_t k) const {
   std::vector<std::string> shown;
-  for (const std::string& h : runs.at(k).hints) shown.push_back(visibility == Visibility::Visible ? h : withoutPlaces(h));
+  if (visibility == Visibility::Visible) shown = runs.at(k).hints;
   return shown;
 }
 
@@ -212,6 +204,7 @@ void runCheck(const GradeDef& def, const CompiledController& compiled, const Che
   Result<RobotHosts> hosts = RobotHosts::start({compiled.module}, {compiled.source}, {0}, world.robots.size(), def.host);
   if (!hosts) {
     r.reason = hosts.error();
+    r.kind = "the controller's program could not start";
     if (isGraderFailure(hosts.status())) g.graderFailure = hosts.error();
     return;
   }
@@ -288,6 +281,7 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
     if (!check.generated || check.generated->secret == 0) continue;
     const Result<worlds::WorldDef> first = worlds::generateWorld(check.generated->kind, drawnWorldSeed(check, def.secret, 0));
     generated.add(std::string_view(first ? worlds::toToml(first.value()) : first.error()));
+    generated.add(std::string_view(" pool " + std::to_string(check.generated->poolSize())));
   }
   const std::string reference = format("%016" PRIx64 " starter %016" PRIx64 " simulation %016" PRIx64 " worlds %016" PRIx64, hashOf(rubric.reference),
                                        hashOf(rubric.starter), worlds::simulationFingerprint(), generated.value());
@@ -309,7 +303,7 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
   quiet.logs.clear();
   for (const Check& check : rubric.checks) {
     if (!check.generated || check.generated->secret == 0) continue;
-    const int wanted = check.generated->secret, tries = 10 * wanted;
+    const int wanted = check.generated->poolSize(), tries = 10 * wanted;
     std::vector<int>& mine = kept[check.name];
     for (int k = 0; static_cast<int>(mine.size()) < wanted && k < tries; ++k) {
       const WorldRef ref{.name = "draw " + std::to_string(k), .generated = check.generated->kind, .worldSeed = drawnWorldSeed(check, def.secret, k)};
@@ -358,7 +352,7 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
     if (!g.graderFailure.empty()) break;  // no grade: nothing more to run
     CheckGrade cg{.name = check.name, .points = check.points, .visibility = check.visibility};
     const std::vector<std::uint64_t> seeds = seedsOf(check, def.secret);
-    for (const WorldRef& w : worldsOf(check, def.secret, kept)) {
+    for (const WorldRef& w : worldsOf(check, def.secret, kept, g.submissionHash)) {
       const std::string key = w.generated ? std::string(toString(*w.generated)) + " " + std::to_string(w.worldSeed) : w.name;
       auto known = loaded.find(key);
       if (known == loaded.end()) known = loaded.emplace(key, loadWorldRef(w)).first;
@@ -367,9 +361,10 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
         if (!g.graderFailure.empty()) break;
         RunGrade& r = cg.runs.emplace_back(RunGrade{.world = w.name, .seed = seed});
         if (!compiled) {
-          r.reason = "the submission did not compile";
+          r.reason = r.kind = "the submission did not compile";
         } else if (!world) {
           r.reason = "the world could not be loaded: " + world.error();
+          r.kind = "the world could not be loaded";
         } else {
           const auto began = std::chrono::steady_clock::now();
           runCheck(def, compiled.value(), check, w, world.value(), r, g);

@@ -2,6 +2,7 @@
 // report needs around one grade (its assignment's rubric, a film of a run).
 #include "frob/base/layout.hpp"
 #include "frob/grade/grade.hpp"
+#include "frob/grade/wheel_log.hpp"
 #include "frob/run/controller_file.hpp"
 #include "frob/run/format.hpp"
 #include "frob/worlds/registry.hpp"
@@ -109,7 +110,7 @@ Result<std::uint64_t> filmRun(const GradeDef& def, const fs::path& submission, c
                               const RunOutputs& outputs) {
   const auto check = std::find_if(def.rubric.checks.begin(), def.rubric.checks.end(), [&](const Check& c) { return c.name == checkName; });
   if (check == def.rubric.checks.end()) return Status::failure("no check '" + checkName + "'");
-  const std::vector<WorldRef> all = worldsOf(*check, def.secret, def.kept.value_or(KeptWorlds{}));
+  const std::vector<WorldRef> all = worldsOf(*check, def.secret, def.kept.value_or(KeptWorlds{}), submissionHash(submission));
   const auto ref = std::find_if(all.begin(), all.end(), [&](const WorldRef& w) { return w.name == run.world; });
   if (ref == all.end()) return Status::failure("no world '" + run.world + "' in check '" + checkName + "'");
   Result<worlds::WorldDef> world = loadWorldRef(*ref);

@@ -16,6 +16,8 @@ using Kind = Criterion::Kind;
 
 namespace {
 
+constexpr int kPoolPerWorld = 8;  // a submission's hidden worlds are chosen among 8 fair draws per world, by default
+
 // The criteria a check may name, with the keys each takes.
 struct CriterionSpec {
   std::string_view key;
@@ -131,7 +133,7 @@ class RubricReader : worlds::TomlReader {
     const toml::node* n = t.get("generated");
     if (n == nullptr) return true;
     const toml::table* g = table(*n, field + "generated");
-    if (g == nullptr || !onlyKeys(*g, field + "generated.", {"kind", "seeds", "secret"})) return false;
+    if (g == nullptr || !onlyKeys(*g, field + "generated.", {"kind", "seeds", "secret", "pool"})) return false;
     GeneratedWorlds gen;
     std::string kind;
     const toml::node* k = g->get("kind");
@@ -142,6 +144,8 @@ class RubricReader : worlds::TomlReader {
     if (!seedList(*g, "seeds", field + "generated.seeds", gen.seeds) || !optInteger(*g, "secret", field + "generated.secret", 0, 1000, gen.secret))
       return false;
     if (gen.seeds.empty() && gen.secret == 0) return fail(*n, field + "generated", "give seeds, or a number of secret ones");
+    gen.pool = std::min(1000, kPoolPerWorld * gen.secret);  // each submission its own draws: probing by resubmitting learns little
+    if (!optInteger(*g, "pool", field + "generated.pool", gen.secret, 1000, gen.pool)) return false;
     c.generated = gen;
     return true;
   }
@@ -308,17 +312,24 @@ std::vector<std::uint64_t> seedsOf(const Check& check, const std::string& secret
 
 std::uint64_t drawnWorldSeed(const Check& check, const std::string& secret, int k) { return secretSeed(secret, "world\n", check, k); }
 
-std::vector<WorldRef> worldsOf(const Check& check, const std::string& secret, const KeptWorlds& kept) {
+std::vector<WorldRef> worldsOf(const Check& check, const std::string& secret, const KeptWorlds& kept, const std::string& submission) {
   std::vector<WorldRef> all = check.worlds;
   if (!check.generated) return all;
   const GeneratedWorlds& g = *check.generated;
   const std::string kind = toString(g.kind);
   for (std::uint64_t seed : g.seeds)
     all.push_back({.name = "generated " + kind + ", seed " + std::to_string(seed), .generated = g.kind, .worldSeed = seed});
-  std::vector<int> draws(static_cast<std::size_t>(g.secret));
-  for (int k = 0; k < g.secret; ++k) draws[static_cast<std::size_t>(k)] = k;
+  std::vector<int> draws(static_cast<std::size_t>(g.poolSize()));
+  for (std::size_t k = 0; k < draws.size(); ++k) draws[k] = static_cast<int>(k);
   if (const auto it = kept.find(check.name); it != kept.end()) draws = it->second;
-  for (std::size_t k = 0; k < draws.size(); ++k) {
+  // The submission's own: the first `secret` of a shuffle of the pool keyed by the secret and the
+  // submission (Fisher-Yates, one hash per place); a pool of no more is every submission's, in order.
+  const std::size_t wanted = std::min(draws.size(), static_cast<std::size_t>(g.secret));
+  for (std::size_t k = 0; k < wanted && draws.size() > wanted && !submission.empty(); ++k) {
+    const std::uint64_t h = secretSeed(secret, "submission\n" + submission + "\n", check, static_cast<int>(k));
+    std::swap(draws[k], draws[k + h % (draws.size() - k)]);
+  }
+  for (std::size_t k = 0; k < wanted; ++k) {
     all.push_back({.name = "generated " + kind + ", hidden world " + std::to_string(k + 1),
                    .generated = g.kind,
                    .worldSeed = drawnWorldSeed(check, secret, draws[k])});

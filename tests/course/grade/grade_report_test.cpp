@@ -30,24 +30,30 @@ TEST(ScoreTable, ExactText) {
             "avoids walls      0.5 / 1  PARTIAL\n"
             "    in maze, seed 3: touched a wall at 41.2 s at (3.1, 4.5)\n"
             "secret worlds       0 / 2  FAIL     [hidden]\n"
-            "    in hidden world 1: not within 0.3 m of goal by 60 s\n"
-            "----------------  -------  -------\n"
-            "Total             2.5 / 5\n"
-            "Note: the controller printed more than 1 MB; the rest was cut\n");
+            "    in hidden world 1: it failed the rubric's \"goal\" criterion" +
+                kNoDetails +
+                "\n"
+                "----------------  -------  -------\n"
+                "Total             2.5 / 5\n"
+                "Note: the controller printed more than 1 MB; the rest was cut\n");
 }
 
-// A check that is not visible names no world, seed or place: nothing a student could rebuild it from.
-TEST(CheckGrade, AHiddenRunsReasonNamesNoWorldSeedOrPlace) {
+// A check that is not visible names no world, seed or place, and says only what failed: no measure,
+// time or text a controller could choose to read a hidden world out through its reason or hints.
+TEST(CheckGrade, AHiddenRunSaysOnlyWhatFailed) {
   CheckGrade c{.name = "hidden",
                .points = 1,
                .visibility = Visibility::Hidden,
-               .runs = {fail("generated obstacles, hidden world 1", 1234, "touched a wall at 41.2 s at (3.1, -4.5)")}};
-  c.runs[0].hints = {"it pushed against a wall from 23.4 s at (4.8, 6.5)"};
-  EXPECT_EQ(c.output(), "in hidden world 1: touched a wall at 41.2 s\n  hint: it pushed against a wall from 23.4 s\n");
+               .runs = {fail("generated obstacles, hidden world 1", 1234, "never came within 0.30 m of wp1 (closest 1.86 m, at (3.1, -4.5))",
+                             "it failed the rubric's \"waypoints\" criterion")}};
+  c.runs[0].hints = {"nomad's task 'sonar 1.86' ran from 0.0 s to the end of the run"};
+  EXPECT_EQ(c.output(), "in hidden world 1: it failed the rubric's \"waypoints\" criterion" + kNoDetails + "\n");
+  c.visibility = Visibility::AfterDueDate;
+  EXPECT_EQ(c.output(), "in hidden world 1: it failed the rubric's \"waypoints\" criterion" + kNoDetails + "\n");
   c.visibility = Visibility::Visible;
   EXPECT_EQ(c.output(),
-            "in generated obstacles, hidden world 1, seed 1234: touched a wall at 41.2 s at (3.1, -4.5)\n"
-            "  hint: it pushed against a wall from 23.4 s at (4.8, 6.5)\n");
+            "in generated obstacles, hidden world 1, seed 1234: never came within 0.30 m of wp1 (closest 1.86 m, at (3.1, -4.5))\n"
+            "  hint: nomad's task 'sonar 1.86' ran from 0.0 s to the end of the run\n");
 }
 
 TEST(ScoreTable, CompileErrorAndControlCharacters) {
@@ -65,14 +71,18 @@ TEST(ScoreTable, CompileErrorAndControlCharacters) {
             "esc\\x1b[2J             0 / 2  FAIL\n"
             "    in empty, seed 1: the submission did not compile\n"
             "third of a point  0.3333 / 1  PARTIAL  [after_due_date]\n"
-            "    in hidden world 2: bad \\x07 bell\n"
-            "    in hidden world 3: x\n"
-            "The submission did not compile:\n"
-            "    bob.cpp:3:1: error: expected ';'\n"
-            "      int x = 1\n"
-            "              ^\n"
-            "----------------  ----------  -------\n"
-            "Total             0.3333 / 3\n");
+            "    in hidden world 2: bad \\x07 bell" +
+                kNoDetails +
+                "\n"
+                "    in hidden world 3: x" +
+                kNoDetails +
+                "\n"
+                "The submission did not compile:\n"
+                "    bob.cpp:3:1: error: expected ';'\n"
+                "      int x = 1\n"
+                "              ^\n"
+                "----------------  ----------  -------\n"
+                "Total             0.3333 / 3\n");
 }
 
 // ---- Gradescope ----------------------------------------------------------------------------------
@@ -110,7 +120,7 @@ TEST(Gradescope, FieldsAsTheSpecificationNamesThem) {
          {"score", 0},
          {"max_score", 2},
          {"status", "failed"},
-         {"output", "in hidden world 1: not within 0.3 m of goal by 60 s\n"},
+         {"output", "in hidden world 1: it failed the rubric's \"goal\" criterion" + kNoDetails + "\n"},
          {"visibility", "hidden"},
          {"tags", json::array()}}}},
   };
@@ -206,6 +216,7 @@ TEST(JUnit, ReadsBackWithAStrictXmlParser) {
   Grade g = sample();
   g.assignment = "go \"to\" <goal> & 'back'";
   g.checks[1].runs[0].reason = kHostile;
+  g.checks[2].visibility = Visibility::Visible;
   g.checks[2].runs[0].reason = "two lines,\nkept\tapart\r\n";
   const Status s = writeJUnit(g, dir / "junit.xml");
   ASSERT_TRUE(s.ok()) << s.error();
@@ -220,12 +231,12 @@ TEST(JUnit, ReadsBackWithAStrictXmlParser) {
   EXPECT_EQ(one(doc.get(), "/testsuite/@time"), "12.600");
   EXPECT_EQ(select(doc.get(), "/testsuite/testcase/@name"),
             (std::vector<std::string>{"reaches the goal / empty, seed 1", "reaches the goal / maze, seed 2", "avoids walls / maze, seed 3",
-                                      "avoids walls / maze, seed 4", "secret worlds / hidden world 1"}));
+                                      "avoids walls / maze, seed 4", "secret worlds / rooms, seed 7"}));
   EXPECT_EQ(select(doc.get(), "/testsuite/testcase/@classname"), std::vector<std::string>(5, g.assignment));
   EXPECT_EQ(select(doc.get(), "//testcase[@name='avoids walls / maze, seed 3']/failure/@message"), std::vector<std::string>{kHostileRead});
   EXPECT_EQ(select(doc.get(), "//testcase[@name='avoids walls / maze, seed 3']/failure"), std::vector<std::string>{""});  // said once
   // Line breaks and tabs survive in attributes (a parser turns raw ones into spaces).
-  EXPECT_EQ(select(doc.get(), "//testcase[@name='secret worlds / hidden world 1']/failure/@message"),
+  EXPECT_EQ(select(doc.get(), "//testcase[@name='secret worlds / rooms, seed 7']/failure/@message"),
             std::vector<std::string>{"two lines,\nkept\tapart\r\n"});
   EXPECT_EQ(select(doc.get(), "//failure").size(), 2u);
   EXPECT_EQ(one(doc.get(), "/testsuite/system-out"), "the controller printed more than 1 MB; the rest was cut\n");

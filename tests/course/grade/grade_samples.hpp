@@ -26,9 +26,14 @@ using support::Doc, support::one, support::parseHtml, support::parseXml, support
 
 inline RunGrade pass(std::string world, std::uint64_t seed) { return {.world = std::move(world), .seed = seed, .passed = true}; }
 
-inline RunGrade fail(std::string world, std::uint64_t seed, std::string reason) {
-  return {.world = std::move(world), .seed = seed, .passed = false, .reason = std::move(reason)};
+// `kind`: what a check that is not visible shows of it; by default the reason itself.
+inline RunGrade fail(std::string world, std::uint64_t seed, std::string reason, std::string kind = "") {
+  if (kind.empty()) kind = reason;
+  return {.world = std::move(world), .seed = seed, .passed = false, .reason = std::move(reason), .kind = std::move(kind)};
 }
+
+// What a check that is not visible adds to what failed.
+inline const std::string kNoDetails = " (hidden worlds give no details: practise with frob grade --practice)";
 
 // Markup, both quotes, an ampersand and a control character XML 1.0 forbids even as a reference.
 inline const std::string kHostile = "bumped <script>alert(1)</script> & \"double\" 'single' \x01 here";
@@ -47,7 +52,7 @@ inline Grade sample() {
        .points = 2,
        .score = 0,
        .visibility = Visibility::Hidden,
-       .runs = {fail("rooms", 7, "not within 0.3 m of goal by 60 s")}},
+       .runs = {fail("rooms", 7, "not within 0.3 m of goal by 60 s", "it failed the rubric's \"goal\" criterion")}},
   };
   g.notes = {"the controller printed more than 1 MB; the rest was cut"};
   return g;

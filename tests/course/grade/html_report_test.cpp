@@ -194,7 +194,8 @@ TEST(HtmlReportInChromium, DomHasTheRowsTheTextAndTheDataUris) {
   EXPECT_EQ(select(dom.get(), "//table/tbody/tr/td[4]"), (std::vector<std::string>{"PASS", "PARTIAL", "FAIL"}));
   // The hostile reason is text in its cell, not markup: the browser made no <script> of it.
   EXPECT_EQ(select(dom.get(), "//table/tbody/tr/td[5]"),
-            (std::vector<std::string>{"", "in maze, seed 3: " + kHostileRead, "in hidden world 1: not within 0.3 m of goal by 60 s"}));
+            (std::vector<std::string>{"", "in maze, seed 3: " + kHostileRead,
+                                      "in hidden world 1: it failed the rubric's \"goal\" criterion" + kNoDetails}));
   EXPECT_TRUE(select(dom.get(), "//script").empty());
   EXPECT_EQ(select(dom.get(), "//ul[@class='notes']/li"), std::vector<std::string>{"the controller printed more than 1 MB; the rest was cut"});
   // The media are data: URIs holding exactly the files' bytes.

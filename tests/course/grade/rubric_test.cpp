@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 namespace frob::course {
 namespace {
@@ -172,6 +173,55 @@ goal = { within = 0.5 }
 
   const fs::path bad = rubricFile("generated_bad", "[[check]]\nname = \"x\"\ngenerated = { kind = \"forest\", seeds = [1] }\nstopped = {}\n");
   EXPECT_EQ(loadRubric(bad).error(), bad.string() + ":3: check[0].generated.kind: unknown kind 'forest' (one of " + worlds::worldKindNames() + ")");
+}
+
+// Each submission runs in `secret` worlds of the pool, chosen by its hash: the same files the same
+// worlds, other files others, every pool member someone's, none outside the pool.
+TEST(Rubric, EachSubmissionIsGradedInHiddenWorldsOfItsOwnFromThePool) {
+  const auto checkWith = [](const std::string& generated) {
+    const fs::path file = rubricFile("pool", "[[check]]\nname = \"fields\"\nvisibility = \"hidden\"\ngenerated = { kind = \"obstacles\", " +
+                                                 generated + " }\ngoal = { within = 0.5, by = 60 }\n");
+    Result<Rubric> r = loadRubric(file);
+    EXPECT_TRUE(r.ok()) << r.error();
+    return r.value().checks.at(0);
+  };
+  const Check check = checkWith("secret = 2");
+  EXPECT_EQ(check.generated->pool, 16);  // 8 per world a submission runs in
+  std::set<std::uint64_t> pool;
+  for (int k = 0; k < 16; ++k) pool.insert(drawnWorldSeed(check, "s3cret", k));
+  const auto hidden = [&](const Check& c, const std::string& submission, const KeptWorlds& kept = {}) {
+    std::vector<std::uint64_t> seeds;
+    for (const WorldRef& w : worldsOf(c, "s3cret", kept, submission)) seeds.push_back(w.worldSeed);
+    return seeds;
+  };
+  std::set<std::uint64_t> used;
+  std::set<std::vector<std::uint64_t>> draws;
+  for (int k = 0; k < 40; ++k) {
+    const std::string submission = "sha256 of submission " + std::to_string(k);
+    const std::vector<std::uint64_t> mine = hidden(check, submission);
+    ASSERT_EQ(mine.size(), 2u);
+    EXPECT_NE(mine[0], mine[1]);
+    for (std::uint64_t seed : mine) EXPECT_TRUE(pool.contains(seed)) << seed;
+    EXPECT_EQ(hidden(check, submission), mine);  // reproducible
+    used.insert(mine.begin(), mine.end());
+    draws.insert(mine);
+  }
+  EXPECT_EQ(used, pool);
+  EXPECT_GE(draws.size(), 30u);  // of 240 ordered pairs, 40 submissions rarely share one
+  // The pool is the draws kept fair for the check, where there are some.
+  const KeptWorlds kept{{"fields", {3, 5, 7, 9}}};
+  for (std::uint64_t seed : hidden(check, "another submission", kept)) {
+    EXPECT_TRUE(seed == drawnWorldSeed(check, "s3cret", 3) || seed == drawnWorldSeed(check, "s3cret", 5) ||
+                seed == drawnWorldSeed(check, "s3cret", 7) || seed == drawnWorldSeed(check, "s3cret", 9))
+        << seed;
+  }
+  // A pool of as many as a submission runs in: every submission in the same worlds, the first draws.
+  const Check shared = checkWith("secret = 2, pool = 2");
+  EXPECT_EQ(hidden(shared, "one"), hidden(shared, "two"));
+  EXPECT_EQ(hidden(shared, "one"), (std::vector<std::uint64_t>{drawnWorldSeed(shared, "s3cret", 0), drawnWorldSeed(shared, "s3cret", 1)}));
+
+  const fs::path bad = rubricFile("pool_bad", "[[check]]\nname = \"x\"\ngenerated = { kind = \"obstacles\", secret = 3, pool = 2 }\nstopped = {}\n");
+  EXPECT_EQ(loadRubric(bad).error(), bad.string() + ":3: check[0].generated.pool: must lie in [3, 1000]");
 }
 
 // A reference solution beside the rubric; the events a stopped or returns criterion follows.

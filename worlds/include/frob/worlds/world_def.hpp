@@ -114,19 +114,25 @@ struct DriveDef {
   double startDelay = 0.0;        ///< seconds from the start during which the wheels do not answer (a late start; 0: none)
 };
 
-/// Where a robot really starts: within `position` metres of its `start` and `heading` radians of
-/// its heading, drawn from the seed. Its odometry begins at `start`: the robot does not know the
-/// offset. All zero: it starts exactly at `start`.
+/// Where a robot starts. Its odometry begins at its `start` moved by an offset drawn from the seed
+/// within `knownPosition` metres and `knownHeading` radians (the robot knows it: a start drawn anew
+/// in every run, handed-out and generated worlds alike), and it really starts within `position`
+/// metres and `heading` radians of that, drawn too (the robot does not know this offset). All zero:
+/// it starts exactly at `start`.
 struct StartSpreadDef {
   double position = 0.02;           ///< metres, at most
   double heading = 0.5 * pi / 180;  ///< radians either way, at most
+  double knownPosition = 0.0;       ///< metres, at most
+  double knownHeading = 0.0;        ///< radians either way, at most
+  /// How far from `start` the robot's body may begin, in metres.
+  [[nodiscard]] double reach() const { return knownPosition + position; }
 };
 
 /// One robot: a disc (Nomad 200 style) with sonars, bumpers and odometry.
 struct RobotDef {
   std::string name;            ///< may be empty; then "robot<i>"
   Pose2 start;                 ///< starting pose, as the robot believes it (see startSpread)
-  StartSpreadDef startSpread;  ///< how far the true start may lie from `start`
+  StartSpreadDef startSpread;  ///< how far the known and the true start may lie from `start`
   double radius = 0.23;        ///< body radius, metres
   double density = 50.0;       ///< kg/m^2 (only matters when robots push each other)
   int bumpers = 8;             ///< bumper sectors around the body, counter-clockwise from the front

@@ -57,6 +57,7 @@ struct RunGrade {
   std::uint64_t seed = 0;
   bool passed = false;
   std::string reason;                ///< why it failed, in words a student can act on; "" when it passed
+  std::string kind;                  ///< what failed, as a check that is not visible says it: nothing the controller chose
   std::vector<std::string> hints;    ///< what common mistake the run shows, naming the fix (course/diagnose.hpp)
   std::uint64_t trajectoryHash = 0;  ///< of every true pose (replays must match it)
   std::filesystem::path log;         ///< its wheel log, when logs are kept
@@ -73,10 +74,10 @@ struct CheckGrade {
   /// Where run k took place, as a student may read it: "maze, seed 3"; for a check that is not
   /// visible, "hidden world 2" (nothing to rebuild the world from).
   [[nodiscard]] std::string place(std::size_t k) const;
-  /// Why run k failed, as a student may read it: for a check that is not visible, without the
-  /// coordinates of where it happened.
+  /// Why run k failed, as a student may read it: for a check that is not visible, only what failed
+  /// (no measure, place, time or text the controller could have chosen to read out a hidden world).
   [[nodiscard]] std::string reasonShown(std::size_t k) const;
-  /// The hints of run k, as a student may read them (as reasonShown()).
+  /// The hints of run k, as a student may read them: none for a check that is not visible.
   [[nodiscard]] std::vector<std::string> hintsShown(std::size_t k) const;
   /// The reasons of the failed runs, one line each ("in maze, seed 3: touched a wall at 41.2 s at (3.1, 4.5)";
   /// "in hidden world 2: touched a wall at 41.2 s"), each followed by its hints ("  hint: ...").

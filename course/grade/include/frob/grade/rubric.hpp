@@ -71,7 +71,10 @@ struct WorldRef {
 struct GeneratedWorlds {
   worlds::WorldKind kind = worlds::WorldKind::Obstacles;
   std::vector<std::uint64_t> seeds;
-  int secret = 0;  ///< how many more, drawn from the secret (named without their seed)
+  int secret = 0;  ///< how many more each submission runs in, drawn from the secret (named without their seed)
+  int pool = 0;    ///< of how many fair draws of the secret a submission's `secret` are chosen, by its hash
+  /// The pool's size: never fewer than the worlds a submission runs in.
+  [[nodiscard]] int poolSize() const { return pool > secret ? pool : secret; }
 };
 
 /// One check: points for meeting every criterion, in every world with every seed.
@@ -107,7 +110,7 @@ struct Rubric {
 [[nodiscard]] Result<Rubric> loadRubric(const std::filesystem::path& file);
 
 /// Which of the worlds each check draws from the secret it keeps, by check name: the indices of the
-/// draws (0, 1, 2, ...) in order. A check without an entry keeps the first `GeneratedWorlds::secret`.
+/// draws (0, 1, 2, ...) in its pool, in order. A check without an entry keeps the first `GeneratedWorlds::pool`.
 using KeptWorlds = std::map<std::string, std::vector<int>>;
 
 /// The seeds a check runs with: its own, then `secretSeeds` derived from `secret` and the check's
@@ -115,9 +118,11 @@ using KeptWorlds = std::map<std::string, std::vector<int>>;
 [[nodiscard]] std::vector<std::uint64_t> seedsOf(const Check& check, const std::string& secret);
 /// The generator's seed of a check's draw `k` from the secret.
 [[nodiscard]] std::uint64_t drawnWorldSeed(const Check& check, const std::string& secret, int k);
-/// The worlds a check runs in: those it names, then those it generates (the secret's draws from
-/// `secret`, those `kept` names when it names them for this check).
-[[nodiscard]] std::vector<WorldRef> worldsOf(const Check& check, const std::string& secret, const KeptWorlds& kept = {});
+/// The worlds a check runs in: those it names, then those it generates: `secret` of its pool of the
+/// secret's draws (those `kept` names when it names them for this check), chosen by `submission` (its
+/// hash; "": the first ones), so that each submission is graded in worlds of its own.
+[[nodiscard]] std::vector<WorldRef> worldsOf(const Check& check, const std::string& secret, const KeptWorlds& kept = {},
+                                             const std::string& submission = "");
 /// The rubric a student practises the hidden checks with: each check that draws worlds from the
 /// secret, made visible and run instead in `worlds` worlds of its kind drawn from `seed` (never from
 /// an instructor's secret); the other checks left out.
