@@ -208,7 +208,9 @@ cp "$wrong/hard_coded_route.cpp" "$work/wrong_submission/controller.cpp"
 interruptible 600 env -C "$work" "$frob" grade "$assignment" wrong_submission/controller.cpp \
   --secret secret.txt --results host.json > "$work/host.log" 2>&1 || { cat "$work/host.log" >&2; fail "grading on the host"; }
 host_score=$("$python" -c 'import json, sys; print(json.load(open(sys.argv[1]))["score"])' "$work/host.json")
-grade wrong_submission --score "$host_score" "${visible[@]}" --scores-of "$work/host.json"
+host_hidden=$("$python" -c 'import json, sys; print(*(t["score"] for t in json.load(open(sys.argv[1]))["tests"] if t["name"] == sys.argv[2]))' \
+  "$work/host.json" "other rooms, other furniture")
+grade wrong_submission --score "$host_score" "${visible[@]}" --test "other rooms, other furniture=$host_hidden/3" --scores-of "$work/host.json"
 
 # A controller that does not compile: 0, and the compiler's message, naming the line.
 mkdir "$work/compile_error"
