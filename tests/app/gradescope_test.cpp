@@ -128,6 +128,29 @@ TEST(GradescopeZip, HoldsTheSourcesTheAssignmentAndTheScripts) {
   EXPECT_EQ(fs::status(unpacked / "run_autograder").permissions() & fs::perms::owner_exec, fs::perms::owner_exec);
   EXPECT_EQ(fs::status(unpacked / "setup.sh").permissions() & fs::perms::owner_exec, fs::perms::owner_exec);
 
+  // The reference solution goes apart, for setup.sh alone, which grades it with the build it made
+  // and fails unless it gets full marks; a build that grades otherwise is caught there.
+  EXPECT_NE(std::find(names.begin(), names.end(), "reference/solution.cpp"), names.end());
+  const std::string setup = readFile(unpacked / "setup.sh");
+  EXPECT_NE(setup.find("check_reference.sh assignments/drive reference/*"), std::string::npos) << setup;
+  EXPECT_NE(setup.find("trap 'rm -rf reference"), std::string::npos) << setup;
+  const auto checkReference = [&](const std::string& reference) {
+    std::ofstream(unpacked / "reference" / "solution.cpp") << reference;
+    const fs::path cache = freshFolder("gradescope_zip_cache");
+    fs::copy(unpacked / "cache", cache, fs::copy_options::recursive);
+    const std::string command =
+        "cd " + unpacked.string() + " && FROB=" FROB_EXECUTABLE " FROB_GRADE_SECRET=course-secret FROB_CACHE_DIR=" + cache.string() +
+        " bash course/autograder/check_reference.sh assignments/drive reference/solution.cpp > " + (dir / "check.txt").string() + " 2>&1";
+    return std::pair{std::system(command.c_str()), readFile(dir / "check.txt")};
+  };
+  const auto [full, fullSays] = checkReference(kGood);
+  EXPECT_EQ(full, 0) << fullSays;
+  EXPECT_NE(fullSays.find("check_reference.sh: the reference solution reference/solution.cpp gets full marks"), std::string::npos) << fullSays;
+  const auto [lost, lostSays] = checkReference(kForged);
+  EXPECT_NE(lost, 0) << lostSays;
+  EXPECT_NE(lostSays.find("check_reference.sh: the reference solution reference/solution.cpp lost points here (the checks above)"), std::string::npos)
+      << lostSays;
+
   // The reference solution: full marks, the hidden check graded with the secret in the zip.
   const nlohmann::json good = runAutograder(dir / "autograder.zip", "good", kGood);
   EXPECT_EQ(good["score"], 5.0) << good.dump(1);

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Gradescope, from nothing: the go_to_goal autograder zip (made by the frob built here, with the
-# test secret tests/assignments uses) is unpacked into
-# a fresh Debian 12 root (mmdebstrap --variant=minbase, from the Debian archive) as Gradescope lays
-# out /autograder; setup.sh runs there as root, as on Gradescope's base image, and builds frob with
-# clang-15; then run_autograder grades, each in a fresh instance of that image (an overlay on it):
+# test secret tests/assignments uses) is unpacked into a fresh Debian root of SUITE (bookworm,
+# Debian 12, or trixie, Debian 13: mmdebstrap --variant=minbase, from the Debian archive) as
+# Gradescope lays out /autograder; setup.sh runs there as root, as on Gradescope's base image,
+# builds frob with the newest clang the suite has, and proves the build: the reference solution gets
+# full marks (it is then gone from the root). A reference run there gives the trajectory hash it
+# gives here. Then run_autograder grades, each in a fresh instance of that image (an overlay on it):
 #   the reference solution               full marks, 10 / 10
 #   hard_coded_route.cpp (typical wrong) the grade the host's frob gives it: its hidden rooms are its
 #                                        own, drawn from the secret and its hash, the same here
@@ -24,9 +26,9 @@
 #
 # Needs root, mmdebstrap (tests/gradescope/packages.txt), overlayfs and the Debian archive
 # (FROB_DEBIAN_MIRROR, default http://deb.debian.org/debian), else exits 77 (skipped), saying why.
-# Usage: fresh_root_test.sh FROB SOURCE_DIR PYTHON DEADLINE_SECONDS
+# Usage: fresh_root_test.sh FROB SOURCE_DIR PYTHON DEADLINE_SECONDS [SUITE]
 set -euo pipefail
-frob=$1 source=$2 python=$3 deadline=$((SECONDS + $4))
+frob=$1 source=$2 python=$3 deadline=$((SECONDS + $4)) suite=${5:-bookworm}
 here=$(cd "$(dirname "$0")" && pwd)
 mirror=${FROB_DEBIAN_MIRROR:-http://deb.debian.org/debian}
 security=${FROB_DEBIAN_SECURITY_MIRROR:-http://deb.debian.org/debian-security}
@@ -81,7 +83,7 @@ trap 'status=$?; trap - EXIT; cleanup; exit $status' EXIT
 trap 'exit 143' TERM INT HUP  # through the EXIT trap
 chmod 755 "$work"
 export FROB_CACHE_DIR=$work/host-cache  # the host's frob's compiled controllers
-timeout 60 /usr/lib/apt/apt-helper download-file "$mirror/dists/bookworm/InRelease" "$work/InRelease" > /dev/null 2>&1 ||
+timeout 60 /usr/lib/apt/apt-helper download-file "$mirror/dists/$suite/InRelease" "$work/InRelease" > /dev/null 2>&1 ||
   skip "no network: cannot reach the Debian archive at $mirror"
 root=$work/root
 needed_gb=4  # the root is some 1.7 GB once setup.sh has run
@@ -126,13 +128,13 @@ interruptible 300 env -C "$work" "$frob" grade "$assignment" --gradescope-zip au
   { cat "$work/zip.log" >&2; fail "frob grade --gradescope-zip"; }
 echo "made autograder.zip in $((SECONDS - start)) s"
 
-# The fresh Debian 12 root, in namespaces of its own (mmdebstrap's own mounts die with them).
+# The fresh Debian root, in namespaces of its own (mmdebstrap's own mounts die with them).
 start=$SECONDS
 interruptible 900 unshare --mount --pid --fork --kill-child --mount-proc --propagation private \
-  mmdebstrap --mode=root --variant=minbase bookworm "$root" "deb $mirror bookworm main" "deb $mirror bookworm-updates main" \
-  "deb $security bookworm-security main" > "$work/mmdebstrap.log" 2>&1 || { tail -n 40 "$work/mmdebstrap.log" >&2; fail "mmdebstrap"; }
+  mmdebstrap --mode=root --variant=minbase "$suite" "$root" "deb $mirror $suite main" "deb $mirror $suite-updates main" \
+  "deb $security $suite-security main" > "$work/mmdebstrap.log" 2>&1 || { tail -n 40 "$work/mmdebstrap.log" >&2; fail "mmdebstrap"; }
 mmdebstrap_seconds=$((SECONDS - start))
-echo "mmdebstrap: a minimal Debian 12 root in $mmdebstrap_seconds s ($(du -sm "$root" | cut -f1) MB)"
+echo "mmdebstrap: a minimal $suite root in $mmdebstrap_seconds s ($(du -sm "$root" | cut -f1) MB)"
 
 # Gradescope's layout: the zip unpacked into /autograder/source (Unix permissions kept), its
 # run_autograder and setup.sh copied to /autograder.
@@ -151,29 +153,38 @@ for script in setup.sh run_autograder; do
   cp -p "$root/autograder/source/$script" "$root/autograder/$script"
 done
 
-# setup.sh, as root on the fresh root: installs clang-15 and frob's libraries, builds frob.
+# setup.sh, as root on the fresh root: installs a clang and frob's libraries, builds frob, grades the reference.
 start=$SECONDS
 in_root 1800 "" bash -c 'cd /autograder/source && exec bash ./setup.sh' > "$work/setup.log" 2>&1 ||
   { tail -n 60 "$work/setup.log" >&2; fail "setup.sh (its last lines above)"; }
 [ -x "$root/autograder/source/build/app/frob" ] || { tail -n 60 "$work/setup.log" >&2; fail "setup.sh built no frob"; }
 setup_seconds=$((SECONDS - start))
-echo "setup.sh: installed the packages and built frob in $setup_seconds s (the root is now $(du -sm "$root" | cut -f1) MB)"
+grep -q "check_reference.sh: the reference solution reference/solution.cpp gets full marks" "$work/setup.log" ||
+  { tail -n 60 "$work/setup.log" >&2; fail "setup.sh did not prove the build with the reference solution"; }
+[ ! -e "$root/autograder/source/reference" ] || fail "setup.sh left the reference solution where submissions run"
+echo "setup.sh: installed the packages, built frob with $(grep -o 'building frob with clang-[0-9]*' "$work/setup.log" | cut -d' ' -f4) and proved it on the reference in $setup_seconds s (the root is now $(du -sm "$root" | cut -f1) MB)"
 
-# The controllers' sandbox in a fresh instance of the image: every layer the host's frob applies
+# The controllers' sandbox in a fresh instance of the image: every layer the host's frob applies, and
+# the reference's whole run in the lounge the same, to the last bit of its trajectory's hash
 # (frob grade would grade without one, saying so only on stderr). In a chroot, the kernel refuses frob the
 # user namespace it makes (unshare: EPERM).
 sandbox_layers() { sed -n '/"sandbox": \[/,/^ \]/p' "$1"; }
-interruptible 300 env -C "$work" "$frob" run "$assignment/solution.cpp" --world "$assignment/worlds/lounge.toml" --seconds 1 --json \
+interruptible 300 env -C "$work" "$frob" run "$assignment/solution.cpp" --world "$assignment/worlds/lounge.toml" --json \
   > "$work/host-run.json" 2> "$work/host-run.log" || { cat "$work/host-run.log" >&2; fail "frob run on the host"; }
 mkdir -p "$work/grades/sandbox/upper/autograder/submission"
 cp "$assignment/solution.cpp" "$work/grades/sandbox/upper/autograder/submission/go_to_goal.cpp"
 in_root 300 "$work/grades/sandbox" /autograder/source/build/app/frob run /autograder/submission/go_to_goal.cpp \
-  --world /autograder/source/assignments/go_to_goal/worlds/lounge.toml --seconds 1 --json > "$work/root-run.json" 2> "$work/root-run.log" ||
+  --world /autograder/source/assignments/go_to_goal/worlds/lounge.toml --json > "$work/root-run.json" 2> "$work/root-run.log" ||
   { cat "$work/root-run.log" >&2; fail "frob run in the image"; }
 grep -q '"applied": true' "$work/host-run.json" || { cat "$work/host-run.json" >&2; fail "no sandbox layers in frob run --json"; }
 diff -u <(sandbox_layers "$work/host-run.json") <(sandbox_layers "$work/root-run.json") >&2 ||
   fail "the controllers' sandbox in the image differs from the host's (diff above)"
 echo "the controllers' sandbox in the image: $(grep -c '"applied": true' "$work/root-run.json") layers applied, as on the host"
+trajectory() { grep -o '"trajectory_hash": "[^"]*"' "$1"; }
+[ -n "$(trajectory "$work/host-run.json")" ] || { cat "$work/host-run.json" >&2; fail "no trajectory hash in frob run --json"; }
+[ "$(trajectory "$work/host-run.json")" = "$(trajectory "$work/root-run.json")" ] ||
+  fail "the reference's run in the image is not the host's: $(trajectory "$work/root-run.json"), here $(trajectory "$work/host-run.json")"
+echo "the reference's run in the lounge: the same trajectory in the image as here, $(trajectory "$work/root-run.json")"
 
 # grade CASE CHECK...: CASE's submission ($work/CASE/, made by the caller) graded by run_autograder in
 # a fresh instance of the image, as Gradescope grades it (from /autograder, as root, its output

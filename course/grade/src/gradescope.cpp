@@ -17,21 +17,41 @@ namespace fs = std::filesystem;
 namespace {
 
 // Gradescope runs it once on its base image, Ubuntu 22.04 unless the course chose another. It
-// assumes apt-get and Debian's or Ubuntu's package names, and clang 15 or newer (Ubuntu 22.04's
-// newest; GCC 12 and older clangs mishandle coroutines, see README); nothing here can run Ubuntu,
-// so it is kept small.
+// assumes apt-get and Debian's or Ubuntu's package names; it takes the newest clang from 15 up
+// (GCC 12 and older clangs mishandle coroutines, see README). Nothing here can run Ubuntu, so it
+// proves itself: the reference solution, shipped for this alone, must get full marks.
 constexpr const char* kSetup = R"sh(#!/usr/bin/env bash
-# Builds frob for the autograder (Gradescope runs this once, as root, on its base image).
+# Builds frob for the autograder (Gradescope runs this once, as root, on its base image), then
+# grades the reference solution: a build that does not give it full marks fails here, with the reason.
 set -euo pipefail
 cd /autograder/source
+scratch=$(mktemp -d)
+trap 'rm -rf reference "$scratch"' EXIT  # no submission may read the reference solution
 apt-get update -qq
+# The newest clang from 15 up among the system's packages (Ubuntu 22.04: 15, Debian 12: 16, Debian 13: 19).
+clang=
+for version in $(seq 40 -1 15); do
+  if apt-cache show "clang-$version" > /dev/null 2>&1; then clang=$version && break; fi
+done
+if [ -z "$clang" ]; then
+  echo "setup.sh: this system's packages hold no clang from 15 up, which frob needs (GCC and older clangs mishandle coroutines)" >&2
+  exit 1
+fi
+echo "setup.sh: building frob with clang-$clang"
 DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
-  cmake ninja-build pkg-config clang-15 libeigen3-dev libbox2d-dev libassimp-dev libosmesa6-dev libpng-dev \
+  cmake ninja-build pkg-config "clang-$clang" libeigen3-dev libbox2d-dev libassimp-dev libosmesa6-dev libpng-dev \
   libfreetype-dev fonts-dejavu-core libavcodec-dev libavformat-dev libavutil-dev libswscale-dev \
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libseccomp-dev libzip-dev libssl-dev zlib1g-dev
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER=clang-15 -DCMAKE_CXX_COMPILER=clang++-15 \
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER="clang-$clang" -DCMAKE_CXX_COMPILER="clang++-$clang" \
   -DFROB_BUILD_TESTS=OFF
 cmake --build build
+if [ -z "$(ls reference 2> /dev/null)" ]; then
+  echo "setup.sh: the rubric names no reference solution: nothing proves that this build grades" >&2
+  exit 0
+fi
+if [ -d cache ]; then cp -r cache/. "$scratch/"; fi  # the fair hidden worlds
+if [ -f secret.txt ]; then export FROB_GRADE_SECRET="$(head -n 1 secret.txt)"; fi
+FROB=build/app/frob FROB_CACHE_DIR="$scratch" bash course/autograder/check_reference.sh assignments/ASSIGNMENT reference/*
 )sh";
 
 // Gradescope runs it for each submission; the script it calls finds the controller (PrairieLearn's
@@ -104,9 +124,13 @@ Status writeGradescopeZip(const GradescopeZipDef& def, const fs::path& out) {
   const std::string partial = render::partialPath(out.string());
   Zip zip(partial);
   if (!zip.ok()) return Status::failure(out.string() + ": cannot write the zip");
-  std::string run = kRun;
+  std::string setup = kSetup, run = kRun;
+  setup.replace(setup.find("ASSIGNMENT"), 10, def.assignment);
   run.replace(run.find("ASSIGNMENT"), 10, def.assignment);
-  bool ok = zip.addText("setup.sh", kSetup, true) && zip.addText("run_autograder", run, true);
+  bool ok = zip.addText("setup.sh", setup, true) && zip.addText("run_autograder", run, true);
+  // The reference solution, which setup.sh grades and then removes: never among the assignment's files.
+  if (!def.reference.empty() && fs::is_regular_file(def.reference))
+    ok = ok && zip.addFile("reference/" + def.reference.filename().string(), def.reference);
   if (!def.secret.empty()) ok = ok && zip.addText("secret.txt", def.secret + "\n", false);
   if (!def.keptWorlds.empty() && fs::is_regular_file(def.keptWorlds)) {
     ok = ok && zip.addFile("cache/hidden-worlds/" + def.keptWorlds.filename().string(), def.keptWorlds);
