@@ -87,7 +87,7 @@ TEST(GradeCli, ASandboxLayerThisMachineLacksIsSaidToTheInstructorOnly) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err.find("frob: the controllers ran with parts of their sandbox missing on this machine:\n"), 0u) << r.err;
   EXPECT_NE(r.err.find("\nnamespaces: NOT applied (not available: unshare: No space left on device"), std::string::npos) << r.err;
-  // Root there, but nobody has no uid in that namespace: the controller stays root, and that is said too.
+  // Root there, but the host's own user has no uid in that namespace: the controller stays root, and that is said too.
   EXPECT_NE(r.err.find("\nunprivileged user: NOT applied"), std::string::npos) << r.err;
   const std::string results = readFile(dir / "r.json");
   EXPECT_EQ(nlohmann::json::parse(results)["score"], 3.0);

@@ -10,7 +10,7 @@ make_work() {
   work=$(mktemp -d "${TMPDIR:-/tmp}/frob-cluster-test-XXXXXX")
   trap 'status=$?; trap - EXIT; stop_child; if declare -F cleanup > /dev/null; then cleanup; fi; rm -rf "$work"; exit $status' EXIT
   trap 'exit 143' TERM INT HUP  # through the EXIT trap
-  chmod 755 "$work"  # run as root, the controller host is `nobody`
+  chmod 755 "$work"  # run as root, the controller host runs as a user of its own
   # Compiled controllers, shared by every machine as on a cluster's filesystem: each file compiles once.
   export FROB_CACHE_DIR="$work/cache"
 }

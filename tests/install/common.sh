@@ -11,6 +11,6 @@ lacks() { ! grep -qF -- "$2" "$1" || { cat "$1" >&2; fail "$1 contains '$2'"; };
 make_work() {
   work=$(mktemp -d "${TMPDIR:-/tmp}/frob-install-test-XXXXXX")
   trap 'rm -rf "$work"' EXIT
-  chmod 755 "$work"  # run as root, the controller host is `nobody`, and runs from a prefix in here
+  chmod 755 "$work"  # run as root, the controller host runs as a user of its own, and runs from a prefix in here
   export FROB_CACHE_DIR="$work/cache"
 }

@@ -17,7 +17,7 @@ wrong=$source/tests/assignments/go_to_goal
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/frob-prairielearn-test-XXXXXX")
 trap 'rm -rf "$work"' EXIT
-chmod 755 "$work"                  # run as root, frob compiles and runs controllers as nobody
+chmod 755 "$work"                  # run as root, frob compiles and runs controllers as users of their own
 export FROB_CACHE_DIR="$work/cache"  # shared by the cases: the hidden worlds are checked once
 unset FROB_GRADE_SECRET
 

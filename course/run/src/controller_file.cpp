@@ -235,10 +235,41 @@ std::string tooMany(const fs::path& dir, std::size_t n) {
          " compile with it";
 }
 
+// Says once, on stderr, that the compiler stayed root because its own user could not read frob's files
+// (in a folder only root may enter). (A user namespace without the id is said with the host's layers.)
+void warnIfRoot(const std::vector<sandbox::Layer>& layers) {
+  static std::once_flag said;
+  for (const sandbox::Layer& l : layers) {
+    if (l.name == "unprivileged user" && !l.applied && !l.required && ::geteuid() == 0)
+      std::call_once(said, [&] { std::fprintf(stderr, "frob: warning: the compiler runs as root here: %s\n", l.note.c_str()); });
+  }
+}
+
+// `text` as the compiler is given it: its messages name the file `shown` (a #line directive),
+// after the byte-order mark a file may begin with.
+std::string marked(const std::string& text, const fs::path& shown) {
+  std::string line = "#line 1 \"";
+  for (const char c : shown.string()) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte >= 0x7f || c == '"' || c == '\\') {
+      char octal[8];
+      std::snprintf(octal, sizeof octal, "\\%03o", byte);
+      line += octal;
+    } else {
+      line += c;
+    }
+  }
+  const std::string_view bom = "\xEF\xBB\xBF";
+  const bool marks = text.starts_with(bom);
+  return (marks ? std::string(bom) : std::string()) + line + "\"\n" + (marks ? text.substr(bom.size()) : text);
+}
+
 // Compiles `text`, the contents of `source`, with `companions` (the .cpp files among them are
-// compiled too): the compiler reads `file` in `cwd` and the folder it is in.
-Result<CompiledController> compile(const fs::path& source, const std::string& text, const std::vector<Companion>& companions, const fs::path& file,
-                                   const fs::path& cwd, const CompilerSetup& setup, std::string* messages) {
+// compiled too), from copies in a folder of the compiler's own: it reads no file of the submission's,
+// only these texts (what the cache knows it by), and its messages name each file as `shown` and
+// Companion::file say.
+Result<CompiledController> compile(const fs::path& source, const std::string& text, const std::vector<Companion>& companions, const fs::path& shown,
+                                   const CompilerSetup& setup, std::string* messages) {
   // The cache key: the source and the files beside it, how it is compiled, and the headers and program it is compiled for.
   const bool pch = !setup.precompiledHeader.empty() && fs::exists(setup.precompiledHeader);
   worlds::Fnv1a key;
@@ -269,46 +300,58 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
     return CompiledController{.module = module, .source = source.string(), .checked = setup.checked};
   }
 
-  // A build folder of its own: the only place the compiler may write.
+  // A folder of the compiler's own, which its user may enter wherever frob runs from (the cache may be
+  // in root's home), and the only one it may write; the module is then stored in the cache.
   std::error_code ec;
   fs::create_directories(setup.cacheDir, ec);
   if (ec) return graderFailure("cannot create the controller cache '" + setup.cacheDir.string() + "': " + ec.message());
-  removeStale(fs::absolute(setup.cacheDir), "build");  // left by a frob that was killed while it compiled
-  Result<Scratch> folder = Scratch::make(fs::absolute(setup.cacheDir), "build");
-  if (!folder) return graderFailure("cannot make a build folder in '" + setup.cacheDir.string() + "'");
-  const std::string build = folder.value().path().string();
-  const fs::path absolute = fs::absolute(cwd / file);
-  const fs::path partial = fs::path(build) / "module.so";
+  const fs::path temp = fs::temp_directory_path(ec);
+  static std::once_flag swept;
+  std::call_once(swept, [&] { removeStale(temp, "frob-compile"); });  // left by a frob that was killed while it compiled
+  removeStale(fs::absolute(setup.cacheDir), "build");
+  Result<Scratch> folder = Scratch::make(temp, "frob-compile");
+  if (!folder) return graderFailure("cannot make a folder to compile in: " + folder.error());
+  const fs::path work = folder.value().path() / "work";
+  fs::permissions(folder.value().path(), fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec, ec);  // its user passes through
+  if (!fs::create_directory(work, ec)) return graderFailure("cannot make " + work.string() + ": " + ec.message());
+  const auto copy = [&](const fs::path& name, const std::string& bytes) {
+    std::ofstream out(work / name, std::ios::binary);
+    return static_cast<bool>(out << bytes << std::flush);
+  };
+  if (!copy(shown.filename(), marked(text, shown))) return graderFailure("cannot copy '" + source.string() + "' to compile it (a full disk?)");
+  for (const Companion& c : companions) {
+    if (!copy(c.file.filename(), marked(c.text, c.file))) return graderFailure("cannot copy '" + c.file.string() + "' to compile it (a full disk?)");
+  }
+  const fs::path partial = work / "module.so";
   SandboxedDef program{.command = {onPath(setup.compiler)},
                        .limits = {.cpuSeconds = static_cast<std::uint64_t>(setup.seconds),
                                   .memoryBytes = setup.memoryBytes,
                                   .fileBytes = 512ULL << 20,
                                   .openFiles = 256},
                        .namespaces = {.tasks = 64},
-                       .files = {.read = compilerReads(setup, pch), .write = {build}, .execute = {"/usr", "/bin"}},
-                       .cwd = cwd.string(),
-                       .env = {"PATH=/usr/bin:/bin", "TMPDIR=" + build},
-                       .dropUser = false,
+                       .files = {.read = compilerReads(setup, pch), .write = {work.string()}, .execute = {"/usr", "/bin"}},
+                       .cwd = work.string(),
+                       .env = {"PATH=/usr/bin:/bin", "TMPDIR=" + work.string()},
+                       .own = {work.string()},
+                       .rootIfUnreadable = true,
                        .noNetwork = true};
-  program.files.read.push_back(absolute.parent_path().string());
   program.command.insert(program.command.end(), setup.flags.begin(), setup.flags.end());
   if (pch) program.command.insert(program.command.end(), {"-include-pch", setup.precompiledHeader});
   if (*FROB_CONTROLLER_LINKER != '\0') program.command.push_back(FROB_CONTROLLER_LINKER);  // gold where there is one
-  // Paths that cannot be read as options or response files ("./-x.cpp", "./@opts.cpp"); others as
-  // typed, so that the compiler's messages name them so.
-  const auto asInput = [](const fs::path& f) {
-    const std::string name = f.string();
-    return name.empty() || (name[0] != '-' && name[0] != '@') ? name : "./" + name;
-  };
-  program.command.insert(program.command.end(), {"-shared", "-o", partial.string(), asInput(file)});
+  // Its debug information names the files without the folder (what a checked run's stacks show).
+  program.command.push_back("-fdebug-prefix-map=" + work.string() + "=");
+  // Inputs as paths ("./-x.cpp"), never options or response files.
+  program.command.insert(program.command.end(), {"-shared", "-o", partial.filename().string(), "./" + shown.filename().string()});
   for (const Companion& c : companions) {
-    if (c.file.extension() == ".cpp") program.command.push_back(asInput(c.file));
+    if (c.file.extension() == ".cpp") program.command.push_back("./" + c.file.filename().string());
   }
   Result<SandboxedRun> run = runSandboxed(std::move(program), setup.seconds, 1 << 20);
   const auto cleanUp = [&] { folder = Scratch(); };
   if (!run) return cleanUp(), run.status();
+  warnIfRoot(run.value().layers);
   // Students read these messages: the grader's folders (a crash prints the whole command) go by name only.
-  for (const auto& [grader, alias] : {std::pair{fs::absolute(setup.cacheDir).string(), std::string("$FROB_CACHE_DIR")},
+  for (const auto& [grader, alias] : {std::pair{work.string() + "/", std::string()}, std::pair{work.string(), std::string(".")},
+                                      std::pair{fs::absolute(setup.cacheDir).string(), std::string("$FROB_CACHE_DIR")},
                                       std::pair{setup.precompiledHeader, std::string("frob.pch")}}) {
     for (std::size_t at = 0; !grader.empty() && (at = run.value().output.find(grader, at)) != std::string::npos; at += alias.size())
       run.value().output.replace(at, grader.size(), alias);
@@ -344,11 +387,16 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
                                : "the compiled controller is " + std::to_string(bytes >> 20) + " MB, more than the " +
                                      std::to_string(kModuleBytes >> 20) + " MB allowed (a huge array, or a file pulled in with .incbin?)"));
   }
+  // Stored through a folder in the cache, by renames: a concurrent run sees the whole module or none.
+  Result<Scratch> store = Scratch::make(fs::absolute(setup.cacheDir), "build");
+  if (!store) return cleanUp(), graderFailure("cannot store the compiled controller in '" + setup.cacheDir.string() + "'");
+  const fs::path stored = store.value().path() / "module.so", storedWarnings = store.value().path() / "module.warnings";
   if (!run.value().output.empty()) {  // first, so that a module in the cache always has its warnings
-    std::ofstream(fs::path(build) / "module.warnings", std::ios::binary) << run.value().output;
-    fs::rename(fs::path(build) / "module.warnings", warnings, ec);
+    std::ofstream(storedWarnings, std::ios::binary) << run.value().output;
+    fs::rename(storedWarnings, warnings, ec);
   }
-  fs::rename(partial, module, ec);  // atomic: a concurrent run sees the whole module or none
+  if (!ec) fs::copy_file(partial, stored, ec);
+  if (!ec) fs::rename(stored, module, ec);
   cleanUp();
   if (ec) return graderFailure("cannot store the compiled controller in '" + module.string() + "': " + ec.message());
   return compiled;
@@ -389,7 +437,9 @@ Result<CompiledController> compileControllerFile(const fs::path& source, const C
   if (sources.size() > kCompanions) return Status::failure(tooMany(source.parent_path(), sources.size()));
   if (Status s = namesNoOption(source, sources); !s) return s;
   // Messages name the files as they were given.
-  return compile(source, text.value(), companionsBeside(source, sources), source, fs::current_path(), setup, messages);
+  std::vector<Companion> companions = companionsBeside(source, sources);
+  for (Companion& c : companions) c.file = source.parent_path() / c.file.filename();
+  return compile(source, text.value(), companions, source, setup, messages);
 }
 
 Result<CompiledController> compileSubmission(const fs::path& submission, const CompilerSetup& setup, std::string* messages) {
@@ -414,25 +464,10 @@ Result<CompiledController> compileSubmission(const fs::path& submission, const C
   Result<std::string> text = readControllerFile(source, false);
   if (!text) return text.status();
   if (Status s = namesNoOption(source, sources); !s) return s;
-  fs::create_directories(setup.cacheDir, ec);
-  removeStale(fs::absolute(setup.cacheDir), "submission");
-  Result<Scratch> alone = Scratch::make(fs::absolute(setup.cacheDir), "submission");
-  if (!alone) return graderFailure("cannot make a folder for '" + submission.string() + "' in '" + setup.cacheDir.string() + "'");
-  // A copy of its own, with its headers, in a fresh folder (a class folder holds .cpp files, one a student).
+  // Compiled as a copy, with its headers, and messages name them by name alone.
   std::vector<Companion> companions = companionsBeside(source, sources);
-  const fs::path file = source.filename();
-  const auto copy = [&](const fs::path& name, const std::string& bytes) {
-    std::ofstream out(alone.value().path() / name, std::ios::binary);
-    return static_cast<bool>(out << bytes << std::flush);
-  };
-  if (!copy(file, text.value()))
-    return graderFailure("cannot copy '" + source.string() + "' into '" + alone.value().path().string() + "' (a full disk?)");
-  for (Companion& c : companions) {
-    c.file = c.file.filename();
-    if (!copy(c.file, c.text))
-      return graderFailure("cannot copy '" + c.file.string() + "' into '" + alone.value().path().string() + "' (a full disk?)");
-  }
-  return compile(submission, text.value(), companions, file, alone.value().path(), setup, messages);
+  for (Companion& c : companions) c.file = c.file.filename();
+  return compile(submission, text.value(), companions, source.filename(), setup, messages);
 }
 
 }  // namespace frob::course

@@ -18,7 +18,6 @@ namespace {
 constexpr std::size_t kSetupBytes = 1 << 20;
 constexpr std::size_t kFrameBytes = 64 << 10;   // a frame: its sonars, bumps and keys
 constexpr std::size_t kReplyBytes = 256 << 10;  // a reply: wheels, task records, a picture
-constexpr std::uint32_t kNobody = 65534;
 
 }  // namespace
 
@@ -50,10 +49,7 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
     command.push_back(copy.string());
   }
   for (const fs::path& f : {work, reports}) {
-    if (f == reports && !impl->def.checked) continue;
-    // EINVAL: root of a user namespace where nobody has no uid; the sandbox then says it stays root.
-    if (!fs::create_directory(f, ec) || (::geteuid() == 0 && ::chown(f.c_str(), kNobody, kNobody) != 0 && errno != EINVAL))
-      return failure("cannot make " + f.string() + " for nobody");
+    if ((f != reports || impl->def.checked) && !fs::create_directory(f, ec)) return failure("cannot make " + f.string());
   }
 
   if (Status s = impl->channel.create(kSetupBytes, std::max<std::uint32_t>(impl->def.robots, 1), kFrameBytes, kReplyBytes); !s)
@@ -80,11 +76,13 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
                        .namespaces = {.tasks = d.tasks, .scratch = work.string(), .scratchBytes = d.scratchBytes},
                        .files = {.read = {"/usr", "/lib", "/lib64", "/etc/ld.so.cache", folder.string()}, .write = {work.string()}},
                        .cwd = work.string(),
+                       .own = {work.string()},
                        .fds = {-1, out.value().write.get(), out.value().write.get(), impl->channel.fd(), wake.value().write.get()}};
   if (d.checked) {
     // The sanitizers' runtime (unless this program has its own), reporting into their own folder.
     program.env = sanitizerEnvironment(reports);
     program.files.write.push_back(reports.string());
+    program.own.push_back(reports.string());
     if (!kSanitizedBuild) {
       if (!fs::exists(sanitizerRuntime()))
         return failure("a checked controller needs clang's AddressSanitizer runtime " + sanitizerRuntime() + " (Debian package libclang-rt-16-dev)");

@@ -48,7 +48,18 @@ Result<Sandboxed> Sandboxed::start(const SandboxedDef& def) {
     for (const std::string& p : *paths) args.insert(args.end(), {flag, p});
   }
   for (const std::string& e : def.env) args.insert(args.end(), {"--env", e});
-  if (!def.dropUser) args.push_back("--keep-user");
+  Result<SandboxUser> user = SandboxUser::take();
+  if (!user) return graderFailure(user.error());
+  if (user.value().held()) {
+    const std::string id = std::to_string(user.value().uid());
+    args.insert(args.end(), {"--uid", id, "--gid", id});
+    // EINVAL: root of a user namespace where the id has no mapping; the sandbox then says it stays root.
+    for (const std::string& f : def.own) {
+      if (::chown(f.c_str(), user.value().uid(), user.value().uid()) != 0 && errno != EINVAL)
+        return graderFailure("cannot give " + f + " to user " + id + ": " + std::strerror(errno));
+    }
+  }
+  if (def.rootIfUnreadable) args.push_back("--root-if-unreadable");
   if (def.noNetwork) args.insert(args.end(), {"--seccomp", "no-network"});
   args.push_back("--");
   args.insert(args.end(), def.command.begin(), def.command.end());
@@ -71,6 +82,7 @@ Result<Sandboxed> Sandboxed::start(const SandboxedDef& def) {
   argv.push_back(nullptr);
   char* noEnv[] = {nullptr};
   Sandboxed j;
+  j.user_ = std::move(user.value());
   const int err = ::posix_spawn(&j.pid_, argv[0], &actions, nullptr, argv.data(), noEnv);
   posix_spawn_file_actions_destroy(&actions);
   report.value().write.reset();  // so that the report ends when frob-sandbox closes its copy
@@ -113,6 +125,7 @@ Sandboxed& Sandboxed::operator=(Sandboxed&& o) noexcept {
   std::swap(pidfd_, o.pidfd_);
   std::swap(status_, o.status_);
   std::swap(layers_, o.layers_);
+  std::swap(user_, o.user_);
   return *this;
 }
 
@@ -128,6 +141,7 @@ int Sandboxed::wait() {
     while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
     }
     status_ = status;
+    user_ = SandboxUser();  // its id is free once nothing runs as it
   }
   return status_;
 }

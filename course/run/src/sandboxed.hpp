@@ -5,6 +5,7 @@
 #include "frob/base/result.hpp"
 #include "frob/sandbox/fd.hpp"
 #include "frob/sandbox/layers.hpp"
+#include "sandbox_user.hpp"
 
 #include <sys/types.h>
 
@@ -33,11 +34,12 @@ struct SandboxedDef {
   sandbox::Limits limits;            ///< memoryBytes is dropped in a sanitizer build (kSanitizedBuild)
   sandbox::Namespaces namespaces;
   sandbox::FileAccess files;
-  std::string cwd;               ///< its working folder
-  std::vector<std::string> env;  ///< its whole environment, NAME=VALUE
-  bool dropUser = true;          ///< as root, run as nobody
-  bool noNetwork = false;        ///< seccomp: no sockets (the controller host filters itself)
-  std::vector<int> fds;          ///< fds[k] becomes descriptor k of the program; -1: /dev/null
+  std::string cwd;                ///< its working folder
+  std::vector<std::string> env;   ///< its whole environment, NAME=VALUE
+  std::vector<std::string> own;   ///< as root, folders given to the user of its own it runs as (sandbox_user.hpp)
+  bool rootIfUnreadable = false;  ///< as root, stay root where its own user could not read its files (reported as a layer not applied)
+  bool noNetwork = false;         ///< seccomp: no sockets (the controller host filters itself)
+  std::vector<int> fds;           ///< fds[k] becomes descriptor k of the program; -1: /dev/null
 };
 
 /// A sandboxed program, running. Kills its process group when destroyed, unless reaped.
@@ -66,6 +68,7 @@ class Sandboxed {
   sandbox::Fd pidfd_;
   int status_ = -1;
   std::vector<sandbox::Layer> layers_;
+  SandboxUser user_;  // held until it is reaped
 };
 
 /// How a sandboxed program that ran to its end (or its deadline) did.

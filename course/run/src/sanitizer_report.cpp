@@ -85,7 +85,6 @@ std::vector<std::vector<SourceFrame>> addr2line(const fs::path& module, const st
                        .limits = {.cpuSeconds = 10, .memoryBytes = 1ULL << 30, .fileBytes = 1 << 20, .openFiles = 32},
                        .files = {.read = {"/usr", "/lib", "/lib64", "/etc/ld.so.cache", module.string()}},
                        .cwd = "/",
-                       .dropUser = true,
                        .noNetwork = true};
   program.command.insert(program.command.end(), offsets.begin(), offsets.end());
   Result<SandboxedRun> run = runSandboxed(std::move(program), 10.0, 1 << 20);

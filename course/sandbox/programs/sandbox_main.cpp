@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
   std::uint32_t uid = 65534, gid = 65534;
   std::string cwd = ".", seccomp = "none";
   int keepFds = 3, reportFd = -1;
-  bool keepUser = false;
+  bool rootIfUnreadable = false;
   pid_t parent = 0;
   std::vector<std::string> env, command;
   cli.add_option("--cpu", limits.cpuSeconds, "CPU seconds");
@@ -66,7 +66,8 @@ int main(int argc, char** argv) {
   cli.add_option("--execute", files.execute, "a folder or file it may run");
   cli.add_option("--uid", uid, "user to become when run as root");
   cli.add_option("--gid", gid, "group to become when run as root");
-  cli.add_flag("--keep-user", keepUser, "stay the caller's user even as root (a compiler reading the caller's files)");
+  cli.add_flag("--root-if-unreadable", rootIfUnreadable,
+               "as root, stay root if the user to become could not use the files it is given (frob's headers in a folder only root may enter)");
   cli.add_option("--cwd", cwd, "working folder");
   cli.add_option("--keep-fds", keepFds, "file descriptors 0 .. N-1 stay open; all others close");
   cli.add_option("--report-fd", reportFd, "where to write which layers were applied");
@@ -102,7 +103,9 @@ int main(int argc, char** argv) {
   files.execute.push_back(command[0]);
   if (std::string loader = interpreterOf(program); !loader.empty()) files.execute.push_back(loader);
   const Layer resources = limitResources(limits);  // while /proc/self is still its own to write
-  const Layer user = keepUser ? Layer{"unprivileged user", false, false, "not asked for: it runs as the caller"} : dropPrivileges(uid, gid);
+  const std::string unreachable = rootIfUnreadable && ::geteuid() == 0 ? unreachableAs(uid, gid, files, cwd) : "";
+  const Layer user = unreachable.empty() ? dropPrivileges(uid, gid)
+                                         : Layer{"unprivileged user", false, false, "uid " + std::to_string(uid) + " cannot use " + unreachable};
   std::vector<Layer> layers{resources, user, enterNamespaces(namespaces)};
   if (::chdir(cwd.c_str()) != 0) return cannotRun(std::string("entering ") + cwd + ": " + std::strerror(errno));  // into the tmpfs, if one covers it
   layers.push_back(noNewPrivileges());

@@ -106,6 +106,25 @@ Layer dropPrivileges(std::uint32_t uid, std::uint32_t gid) {
   return layer;
 }
 
+std::string unreachableAs(std::uint32_t uid, std::uint32_t gid, const FileAccess& access, const std::string& cwd) {
+  // Asked as that user (no groups, the effective ids only), with root kept to return to.
+  // One it cannot become (no mapping in this user namespace) is for dropPrivileges to report.
+  if (::setgroups(0, nullptr) != 0 || ::setegid(gid) != 0 || ::seteuid(uid) != 0) {
+    [[maybe_unused]] const int back = ::setegid(0);
+    return "";
+  }
+  std::string why;
+  const auto ask = [&](const std::string& path, int mode) {
+    if (why.empty() && ::faccessat(AT_FDCWD, path.c_str(), mode, AT_EACCESS) != 0 && errno != ENOENT) why = errorText(path.c_str());
+  };
+  for (const std::string& p : access.read) ask(p, R_OK);
+  for (const std::string& p : access.write) ask(p, R_OK | W_OK | X_OK);
+  for (const std::string& p : access.execute) ask(p, X_OK);
+  ask(cwd, X_OK);
+  if (::seteuid(0) != 0 || ::setegid(0) != 0) return errorText("becoming root again");
+  return why;
+}
+
 Layer enterNamespaces(const Namespaces& ns) {
   Layer layer{.name = "namespaces"};
   const uid_t uid = ::geteuid();

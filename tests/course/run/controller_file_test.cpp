@@ -1,10 +1,13 @@
-// Compiling a controller file: in a sandbox that lets the compiler read the system's headers,
-// frob's and the submission's own folder, and nothing else, within limits of time and memory.
+// Compiling a controller file: in a sandbox that lets the compiler read the system's headers, frob's
+// and copies of the submission's files, and nothing else, within limits of time and memory, as a user
+// of its own when frob is root.
 #include "frob/run/controller_file.hpp"
 
 #include "frob/run/host.hpp"
+#include "sandbox_user.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -217,6 +220,75 @@ TEST(ControllerFile, AHugeModuleIsRefused) {
   ASSERT_FALSE(c.ok());
   EXPECT_EQ(c.error(), "could not compile '" + (dir / "huge.cpp").string() +
                            "': the compiled controller is 80 MB, more than the 64 MB allowed (a huge array, or a file pulled in with .incbin?)");
+}
+
+// The compiler reads copies of the files it compiles, not the folder they are in: a file beside a
+// controller that is not one of them (notes, a key, a classmate's work) is not there to pull in.
+TEST(ControllerFile, TheCompilerReadsCopiesOfTheControllersFilesNotItsFolder) {
+  const fs::path dir = freshFolder("copies");
+  writeFile(dir / "notes.txt", "NOTES-NOT-COMPILED\n");
+  writeFile(dir / "go.cpp", std::string("asm(\".incbin \\\"notes.txt\\\"\");\n") + kController);
+  writeFile(dir / "speed.hpp", "constexpr double kSpeed = 0.3;\n");
+  std::string messages;
+  ASSERT_FALSE(compileControllerFile(dir / "go.cpp", setupIn(dir), &messages).ok());
+  EXPECT_NE(messages.find("error: Could not find incbin file 'notes.txt'"), std::string::npos) << messages;
+  EXPECT_EQ(messages.find("NOTES-NOT-COMPILED"), std::string::npos) << messages;
+  // Its messages name the files as they were given, never the copies.
+  writeFile(dir / "go.cpp", std::string(kController) + "int f() { return undeclared; }\n");
+  writeFile(dir / "speed.hpp", "constexpr double kSpeed = 0.3;\nint g() { return alsoUndeclared; }\n");
+  ASSERT_FALSE(compileControllerFile(dir / "go.cpp", setupIn(dir), &messages).ok());
+  EXPECT_NE(messages.find((dir / "go.cpp").string() + ":5:18: error: use of undeclared identifier 'undeclared'"), std::string::npos) << messages;
+  EXPECT_NE(messages.find("In file included from " + (dir / "go.cpp").string() + ":2:\n" + (dir / "speed.hpp").string() + ":2:18: error"),
+            std::string::npos)
+      << messages;
+  EXPECT_EQ(messages.find("frob-compile-"), std::string::npos) << messages;
+}
+
+// What the compiler ran as: a shell in its place prints its user and group ids.
+std::string compilerIds(CompilerSetup setup) {
+  const fs::path dir = freshFolder("ids");
+  writeFile(dir / "go.cpp", kController);
+  setup.compiler = "/bin/sh";
+  setup.flags = {"-c", "echo ids $(id -u) $(id -g); exit 1"};
+  setup.precompiledHeader.clear();
+  std::string messages;
+  EXPECT_FALSE(compileControllerFile(dir / "go.cpp", setup, &messages).ok());
+  const std::size_t at = messages.find("ids ");
+  return at == std::string::npos ? messages : messages.substr(at + 4, messages.find('\n', at) - at - 4);
+}
+
+// Issue 48: where frob runs as root the compiler does not: it runs as a user of its own, held by no
+// other sandboxed program at the same time (here, one this test holds).
+TEST(ControllerFile, TheCompilerRunsAsAUserOfItsOwnWhenFrobIsRoot) {
+  const fs::path dir = freshFolder("user");
+  if (::geteuid() != 0) {
+    EXPECT_EQ(compilerIds(setupIn(dir)), std::to_string(::getuid()) + " " + std::to_string(::getgid()));
+    return;
+  }
+  Result<SandboxUser> held = SandboxUser::take();
+  ASSERT_TRUE(held.ok()) << held.error();
+  const std::string ids = compilerIds(setupIn(dir));
+  const std::uint32_t uid = static_cast<std::uint32_t>(std::atol(ids.c_str()));
+  EXPECT_GE(uid, kFirstSandboxUid) << ids;
+  EXPECT_LT(uid, kEndSandboxUid) << ids;
+  EXPECT_NE(uid, held.value().uid());
+  EXPECT_EQ(ids, std::to_string(uid) + " " + std::to_string(uid));
+}
+
+// Where frob's own files are in a folder only root may enter (a build in root's home), that user
+// could not read them: the compiler stays root rather than fail every student, and frob says so.
+TEST(ControllerFile, FrobsFilesWhereOnlyRootMayGoKeepTheCompilerRoot) {
+  if (::geteuid() != 0) GTEST_SKIP() << "only root changes the compiler's user";
+  const fs::path dir = freshFolder("private");
+  fs::create_directories(dir / "private" / "include");
+  fs::permissions(dir / "private", fs::perms::owner_all);
+  CompilerSetup setup = setupIn(dir);
+  setup.reads.push_back((dir / "private" / "include").string());
+  ::testing::internal::CaptureStderr();
+  EXPECT_EQ(compilerIds(setup), "0 0");
+  const std::string warned = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(warned.find("frob: warning: the compiler runs as root here: uid "), std::string::npos) << warned;
+  EXPECT_NE(warned.find((dir / "private" / "include").string() + ": Permission denied"), std::string::npos) << warned;
 }
 
 TEST(ControllerFile, AFileOfTheSystemOutsideTheHeadersCannotBeIncluded) {

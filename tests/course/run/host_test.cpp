@@ -8,6 +8,7 @@
 #include "frob/frob.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/world_file.hpp"
+#include "sandbox_user.hpp"
 
 #include <dlfcn.h>
 #include <gtest/gtest.h>
@@ -18,8 +19,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 namespace frob::course {
 namespace {
@@ -312,6 +315,32 @@ TEST(Sandbox, ThreadsAreBoundedInNumber) {
   if (const std::string why = withoutNamespaces(o); !why.empty()) GTEST_SKIP() << "the namespaces layer is not applied here: " << why;
   EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
   EXPECT_NEAR(o.lastWheels.forward / 0.001, 63.0, 1e-6);
+}
+
+// Where frob runs as root, each host runs as a user and group of its own (#48 item 6): the two robots
+// of one run and a run beside them, so that none can signal, renice, re-pin or read another.
+TEST(Sandbox, EveryHostRunsAsAUserOfItsOwn) {
+  const fs::path module = testing::hostileModule("tells_its_user");
+  Result<RobotHosts> hosts = RobotHosts::start({module}, {"tells_its_user"}, {0}, 2);
+  ASSERT_TRUE(hosts.ok()) << hosts.error();
+  std::shared_ptr<ControllerHost> beside = startHost({module});
+  ASSERT_NE(beside, nullptr);
+  worlds::Run run(room(2), {}, hosts.value().driver(false)), other(room(), {}, beside->driver({0}, false));
+  run.runUntil(0.2), other.runUntil(0.2);
+  std::set<long> users;
+  for (const Wheels& w : {run.recorder().steps().back().robots[0].wheels, run.recorder().steps().back().robots[1].wheels,
+                          other.recorder().steps().back().robots[0].wheels}) {
+    const long uid = std::lround(w.forward * 1e6), gid = std::lround(w.turn * 1e6);
+    if (::geteuid() != 0) {
+      EXPECT_EQ(uid, ::getuid()) << "not root: every host runs as the caller";
+      continue;
+    }
+    EXPECT_GE(uid, kFirstSandboxUid);
+    EXPECT_LT(uid, kEndSandboxUid);
+    EXPECT_EQ(gid, uid);
+    users.insert(uid);
+  }
+  if (::geteuid() == 0) EXPECT_EQ(users.size(), 3u) << "three hosts at once, three users";
 }
 
 // A run gives each robot a host of its own: a global variable of one robot's controller is not

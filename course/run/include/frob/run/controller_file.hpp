@@ -70,14 +70,14 @@ struct LoadedController {
 
 /// Compiles `source`, with companionsOf(source), unless the cache already holds it (the cache knows
 /// it by its text and the texts of its companions and of the headers beside it). The compiler runs
-/// in the sandbox: it reads only the system's headers, frob's, and the source's own folder, within
-/// time and memory limits. On a compile error the error names the file; the compiler's messages go
-/// to `messages`, or to stderr.
+/// in the sandbox, as a user of its own when frob runs as root: it reads only the system's headers,
+/// frob's, and copies of those texts in a folder of its own, within time and memory limits. On a compile error the error names the file; the
+/// compiler's messages go to `messages`, or to stderr.
 [[nodiscard]] Result<CompiledController> compileControllerFile(const std::filesystem::path& source, const CompilerSetup& setup = compilerSetup(),
                                                                std::string* messages = nullptr);
-/// Compiles a submission as compileControllerFile() does, but copied, with the headers (.h, .hpp)
-/// beside it, into a fresh folder of its own, so that its compile reads no other file that stood
-/// there (a classmate's, when a class is one folder of .cpp files). A submission is a .cpp file,
+/// Compiles a submission as compileControllerFile() does: from copies of it and the headers (.h, .hpp)
+/// beside it, so that its compile reads no other file that stood there (a classmate's, when a class
+/// is one folder of .cpp files). A submission is a .cpp file,
 /// compiled alone, or a folder of several: its one .cpp file with a FROB_CONTROLLER(...) line,
 /// compiled with the other .cpp files there. The compiler's messages name the files by name only.
 [[nodiscard]] Result<CompiledController> compileSubmission(const std::filesystem::path& submission, const CompilerSetup& setup = compilerSetup(),

@@ -53,6 +53,9 @@ enum class SyscallPolicy {
 [[nodiscard]] Layer limitResources(const Limits& limits);
 /// When running as root: drops every group and becomes `uid`/`gid`; otherwise changes nothing.
 [[nodiscard]] Layer dropPrivileges(std::uint32_t uid, std::uint32_t gid);
+/// As root, before dropPrivileges: the first of `access`'s paths and `cwd` (those that exist) that
+/// `uid`/`gid` could not use as `access` says, and why; "" when it could use them all.
+[[nodiscard]] std::string unreachableAs(std::uint32_t uid, std::uint32_t gid, const FileAccess& access, const std::string& cwd);
 /// Enters `ns` (after dropPrivileges: the namespaces belong to the user it became). Not applied
 /// where the kernel or a container forbids user namespaces; then nothing changes.
 [[nodiscard]] Layer enterNamespaces(const Namespaces& ns);

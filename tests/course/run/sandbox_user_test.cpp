@@ -1,0 +1,55 @@
+// The user ids sandboxed programs run as while frob is root: none held twice at once, in one process
+// or two, and free again when released.
+#include "sandbox_user.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <optional>
+
+namespace frob::course {
+namespace {
+
+std::uint32_t take() {
+  Result<SandboxUser> user = SandboxUser::take();
+  EXPECT_TRUE(user.ok()) << user.error();
+  return user.ok() ? user.value().uid() : 0;
+}
+
+TEST(SandboxUser, NoIdIsHeldTwiceAtOnceInOneProcessOrTwo) {
+  if (::geteuid() != 0) {
+    Result<SandboxUser> user = SandboxUser::take();
+    ASSERT_TRUE(user.ok()) << user.error();
+    EXPECT_FALSE(user.value().held()) << "only root changes the user";
+    return;
+  }
+  Result<SandboxUser> first = SandboxUser::take(), second = SandboxUser::take();
+  ASSERT_TRUE(first.ok() && second.ok());
+  EXPECT_GE(first.value().uid(), kFirstSandboxUid);
+  EXPECT_LT(second.value().uid(), kEndSandboxUid);
+  EXPECT_NE(first.value().uid(), second.value().uid());
+  // Another process (a second frob) takes neither.
+  int ends[2];
+  ASSERT_EQ(::pipe(ends), 0);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    Result<SandboxUser> mine = SandboxUser::take();
+    const std::uint32_t uid = mine.ok() ? mine.value().uid() : 0;
+    _exit(::write(ends[1], &uid, sizeof uid) == sizeof uid ? 0 : 1);
+  }
+  std::uint32_t theirs = 0;
+  ASSERT_EQ(::read(ends[0], &theirs, sizeof theirs), static_cast<ssize_t>(sizeof theirs));
+  ::waitpid(child, nullptr, 0);
+  ::close(ends[0]), ::close(ends[1]);
+  EXPECT_GE(theirs, kFirstSandboxUid);
+  EXPECT_NE(theirs, first.value().uid());
+  EXPECT_NE(theirs, second.value().uid());
+  // Released, an id is free again: the lowest free one is it or a lower one.
+  const std::uint32_t freed = first.value().uid();
+  first.value() = SandboxUser();
+  EXPECT_LE(take(), freed);
+}
+
+}  // namespace
+}  // namespace frob::course
