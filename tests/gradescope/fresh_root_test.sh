@@ -168,7 +168,8 @@ echo "setup.sh: installed the packages, built frob with $(grep -o 'building frob
 # the reference's whole run in the lounge the same, to the last bit of its trajectory's hash
 # (frob grade would grade without one, saying so only on stderr). In a chroot, the kernel refuses frob the
 # user namespace it makes (unshare: EPERM).
-sandbox_layers() { sed -n '/"sandbox": \[/,/^ \]/p' "$1"; }
+# Each run takes whichever sandbox uid is free (61000 and up), so the number itself may differ.
+sandbox_layers() { sed -n '/"sandbox": \[/,/^ \]/p' "$1" | sed 's/"uid [0-9]*"/"uid N"/'; }
 interruptible 300 env -C "$work" "$frob" run "$assignment/solution.cpp" --world "$assignment/worlds/lounge.toml" --json \
   > "$work/host-run.json" 2> "$work/host-run.log" || { cat "$work/host-run.log" >&2; fail "frob run on the host"; }
 mkdir -p "$work/grades/sandbox/upper/autograder/submission"
