@@ -198,6 +198,10 @@ int runCommand(RunArgs a) {
     std::snprintf(detail, sizeof detail, "%.1f / %.1f s", done * def.seconds, def.seconds);
     bar.show(done, detail);
   };
+  def.drawing = [&](std::size_t drawn, std::size_t frames) {
+    std::snprintf(detail, sizeof detail, "frame %zu / %zu", drawn, frames);
+    bar.show(static_cast<double>(drawn) / static_cast<double>(frames), detail);
+  };
   bar.show(0.0, "starting the controller");  // until the first step is done
   const auto start = std::chrono::steady_clock::now();
   Result<course::Summary> summary = course::runSession(def);

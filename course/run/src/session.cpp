@@ -1,5 +1,6 @@
 #include "frob/run/session.hpp"
 
+#include "frob/render/frame_log.hpp"
 #include "frob/render/output_file.hpp"
 #include "frob/render/run_view.hpp"
 #include "frob/render/video.hpp"
@@ -239,7 +240,7 @@ Result<Summary> runSession(const RunDef& def) {
   std::optional<RunRecorder> recorder;
   if (def.keepRecord) recorder.emplace(sim, sim.world());
   const render::FramePicker picker(sim.dt(), def.fps / def.speed);  // frames per simulated second
-  render::Image image;
+  render::FrameLog film;                                            // drawn once the run is over, so that the controllers step as in an unfilmed run
   while (sim.time() + 0.5 * sim.dt() < def.seconds && run.failures().empty()) {
     const std::int64_t step = sim.stepCount();
     run.step();
@@ -275,15 +276,7 @@ Result<Summary> runSession(const RunDef& def) {
     }
     if (view) view->update(run);
     if (page) page->step(rec);
-    for (int k = drawFrames ? picker.framesAt(step) : 0; k > 0; --k) {
-      renderer->renderInto(view->scene(), view->plots(), image);
-      if (video) {
-        if (Status s = video->write(image); !s) return discard(), s;
-      }
-      if (frames) {
-        if (Status s = frames->write(image); !s) return discard(), s;
-      }
-    }
+    for (int k = drawFrames ? picker.framesAt(step) : 0; k > 0; --k) film.note(*view);
     if (def.progress) def.progress(std::min(1.0, sim.time() / def.seconds));
     if (allFinished && !def.wholeTime) {
       if (!allFinishedAt) {
@@ -337,6 +330,19 @@ Result<Summary> runSession(const RunDef& def) {
   if (summary.failed()) {
     discard();  // the video and trace are dropped with their writers
     return summary;
+  }
+
+  if (drawFrames) {
+    render::Image image;
+    std::size_t drawn = 0;
+    Status s = film.replay(*view, [&](const render::FrameScene& scene, const render::PlotSet& plots) {
+      renderer->renderInto(scene, plots, image);
+      Status written = video ? video->write(image) : Status();
+      if (written && frames) written = frames->write(image);
+      if (def.drawing) def.drawing(++drawn, film.size());
+      return written;
+    });
+    if (!s) return discard(), s;
   }
 
   // Complete: move every file into place.

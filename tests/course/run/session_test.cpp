@@ -115,6 +115,43 @@ TEST(Session, TheFramesSayWhenTheRobotsAreCommandedStill) {
   EXPECT_LE(settling - before, 30);
 }
 
+// Frames are drawn after the last step, never between steps: a filmed run paces its controllers as
+// an unfilmed (graded) one does, so that a controller cannot tell the two apart by the time between
+// its steps. Every frame is still drawn, and said as drawn.
+TEST(Session, FramesAreDrawnOnlyOnceTheRunIsOver) {
+  const fs::path frames = fs::path(::testing::TempDir()) / "frames_after_the_run";
+  fs::remove_all(frames);
+  std::size_t filesDuringRun = 0, steps = 0, drawn = 0, total = 0;
+  bool drawingBeforeStep = false;
+  Result<Summary> s = runSession({.world = room(),
+                                  .worldName = "room",
+                                  .controllers = {inlineController(makeController([] { return forwardFor(1.0); }))},
+                                  .seconds = 2,
+                                  .wholeTime = true,
+                                  .outputs = {.frames = frames.string()},
+                                  .fps = 10,
+                                  .progress =
+                                      [&](double) {
+                                        ++steps;
+                                        drawingBeforeStep = drawingBeforeStep || drawn > 0;
+                                        std::error_code ec;
+                                        for (auto it = fs::directory_iterator(frames, ec); !ec && it != fs::directory_iterator(); ++it)
+                                          ++filesDuringRun;
+                                      },
+                                  .drawing =
+                                      [&](std::size_t k, std::size_t n) {
+                                        EXPECT_EQ(k, drawn + 1);
+                                        drawn = k, total = n;
+                                      }});
+  ASSERT_TRUE(s.ok()) << s.error();
+  EXPECT_EQ(steps, 200u);
+  EXPECT_EQ(filesDuringRun, 0u) << "frames were written while the controller was still stepping";
+  EXPECT_FALSE(drawingBeforeStep);
+  EXPECT_EQ(drawn, 20u);  // 2 s at 10 frames a second
+  EXPECT_EQ(total, 20u);
+  EXPECT_EQ(static_cast<std::size_t>(std::distance(fs::directory_iterator(frames), fs::directory_iterator())), 20u);
+}
+
 // A video with a budget fits in it whatever the run's length: the bitrate is capped for the run's
 // seconds (a grade report's film). Without one the same run takes several times as much.
 TEST(Session, AVideoWithABudgetFitsInIt) {

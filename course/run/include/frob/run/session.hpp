@@ -54,6 +54,8 @@ struct RunDef {
   double speed = 1.0;                         ///< the video plays this many times faster than simulated time
   render::RenderDef view{.width = 854, .height = 480, .layout = render::PanelLayout::PlotRight};  ///< how frames look
   std::function<void(double done)> progress;  ///< told the share of the run done (0 to 1) after each step
+  /// Told each frame drawn of the video or frames, which are drawn after the run (frames drawn, of how many).
+  std::function<void(std::size_t drawn, std::size_t frames)> drawing;
 };
 
 /// How close to the world's point named "goal" counts as reaching it, metres (true position).
