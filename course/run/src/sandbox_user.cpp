@@ -4,9 +4,12 @@
 #include <pwd.h>
 #include <sys/file.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -41,7 +44,40 @@ Result<sandbox::Fd> lockFolder() {
   return Status::failure("cannot keep the sandbox's users apart: " + why);
 }
 
+// Kills every process running as `uid` (as root): a child that becomes `uid` may signal exactly those,
+// and kill(-1) does. A fork under way when the signal comes is undone by the kernel, so none is left
+// to run; the second round checks. The child shares frob's memory (vfork), so it makes system calls only.
+void killEveryProcessOf(std::uint32_t uid) {
+  for (int round = 0; round < 2; ++round) {
+    const pid_t pid = ::vfork();
+    if (pid == 0) {
+      const bool became =
+          ::syscall(SYS_setgroups, 0, nullptr) == 0 && ::syscall(SYS_setresgid, uid, uid, uid) == 0 && ::syscall(SYS_setresuid, uid, uid, uid) == 0;
+      ::_exit(became && ::syscall(SYS_kill, -1, SIGKILL) == 0 ? 0 : 1);
+    }
+    int status = 0;
+    while (pid > 0 && ::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (pid < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) return;  // none was left (or frob cannot fork: its run fails anyway)
+  }
+}
+
 }  // namespace
+
+SandboxUser::~SandboxUser() {
+  if (lock_.valid()) killEveryProcessOf(uid_);
+}
+
+SandboxUser::SandboxUser(SandboxUser&& o) noexcept : uid_(o.uid_), lock_(std::move(o.lock_)) {}
+
+SandboxUser& SandboxUser::operator=(SandboxUser&& o) noexcept {
+  if (this != &o) {
+    if (lock_.valid()) killEveryProcessOf(uid_);
+    uid_ = o.uid_;
+    lock_ = std::move(o.lock_);
+  }
+  return *this;
+}
 
 Result<SandboxUser> SandboxUser::take() {
   SandboxUser user;

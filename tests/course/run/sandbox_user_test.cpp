@@ -1,11 +1,13 @@
 // The user ids sandboxed programs run as while frob is root: none held twice at once, in one process
-// or two, and free again when released.
+// or two, and free again when released, with no process left running as them.
 #include "sandbox_user.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <optional>
 
 namespace frob::course {
@@ -49,6 +51,41 @@ TEST(SandboxUser, NoIdIsHeldTwiceAtOnceInOneProcessOrTwo) {
   const std::uint32_t freed = first.value().uid();
   first.value() = SandboxUser();
   EXPECT_LE(take(), freed);
+}
+
+// A process of the id that left its process group and session (as a daemon does) is beyond the
+// group kill of its sandbox: releasing the id kills it, and every other process running as it.
+TEST(SandboxUser, ReleasingAnIdKillsEveryProcessStillRunningAsIt) {
+  if (::geteuid() != 0) GTEST_SKIP() << "only root changes the user";
+  ASSERT_EQ(::prctl(PR_SET_CHILD_SUBREAPER, 1), 0);  // an orphan comes back to this test, to be reaped
+  Result<SandboxUser> user = SandboxUser::take();
+  ASSERT_TRUE(user.ok() && user.value().held()) << user.error();
+  const std::uint32_t uid = user.value().uid();
+  int ends[2];
+  ASSERT_EQ(::pipe(ends), 0);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    if (::setgid(uid) != 0 || ::setuid(uid) != 0) _exit(2);
+    const pid_t grandchild = ::fork();
+    if (grandchild == 0) {
+      ::setsid();
+      for (;;) ::pause();
+    }
+    _exit(::write(ends[1], &grandchild, sizeof grandchild) == sizeof grandchild ? (::pause(), 0) : 1);
+  }
+  pid_t grandchild = 0;
+  ASSERT_EQ(::read(ends[0], &grandchild, sizeof grandchild), static_cast<ssize_t>(sizeof grandchild));
+  ::close(ends[0]), ::close(ends[1]);
+  user.value() = SandboxUser();
+  // A SIGKILL the release sent is already pending, and wins over this SIGTERM, which ends them if it did not.
+  const auto endedBy = [](pid_t pid) {
+    ::kill(pid, SIGTERM);
+    int status = 0;
+    return ::waitpid(pid, &status, 0) == pid && WIFSIGNALED(status) ? WTERMSIG(status) : -1;
+  };
+  EXPECT_EQ(endedBy(child), SIGKILL);
+  EXPECT_EQ(endedBy(grandchild), SIGKILL) << "the process that left its session outlived the release of its user";
+  ::prctl(PR_SET_CHILD_SUBREAPER, 0);
 }
 
 }  // namespace
