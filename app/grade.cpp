@@ -2,6 +2,7 @@
 // Gradescope, PrairieLearn, CI systems and people read; and replays of a run's wheel log.
 #include "grade.hpp"
 
+#include "frob/grade/class_folder.hpp"
 #include "frob/grade/grade.hpp"
 #include "frob/grade/grade_report.hpp"
 #include "frob/grade/gradescope.hpp"
@@ -17,6 +18,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 namespace frob::app {
 
@@ -65,8 +67,13 @@ const course::RunGrade* firstFailure(const course::Grade& g, std::string& check)
 // The report's film fits in this, whatever the run's length, so that a report stays small enough to mail or upload (~3 MB).
 constexpr std::uint64_t kReportVideoBytes = 2'000'000;
 
-// Writes each file asked for; the first that cannot be written is the error.
-Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const course::Grade& g) {
+// Writes each file asked for (making their folders); the first that cannot be written is the error.
+// The report films its failing run unless `film` is false (a class's reports: the viewer and the plot).
+Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const course::Grade& g, bool film = true) {
+  for (const std::string& file : {a.results, a.prairielearn, a.junit, a.report}) {
+    std::error_code ec;
+    if (!file.empty() && fs::path(file).has_parent_path()) fs::create_directories(fs::path(file).parent_path(), ec);
+  }
   if (!a.results.empty()) {
     if (Status s = course::writeGradescope(g, a.results); !s) return s;
   }
@@ -84,14 +91,14 @@ Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const cours
     std::error_code ec;
     fs::create_directories(dir, ec);
     const std::string stem = (dir / fs::path(run->log.empty() ? "first_failure" : run->log.stem().string())).string();
-    course::RunOutputs out{.video = stem + ".mp4", .videoBytes = kReportVideoBytes, .plot = stem + ".png", .html = stem + ".html"};
+    course::RunOutputs out{.video = film ? stem + ".mp4" : "", .videoBytes = kReportVideoBytes, .plot = stem + ".png", .html = stem + ".html"};
     media.caption = "The first failing run: " + check + ", in " + run->world + " with seed " + std::to_string(run->seed) + ": " + run->reason;
-    if (Result<std::uint64_t> film = course::filmRun(def, g.submission, check, *run, out)) {
+    if (Result<std::uint64_t> shown = course::filmRun(def, g.submission, check, *run, out)) {
       media.video = out.video, media.plot = out.plot, media.viewer = out.html;
-      media.caption += course::format(" The film is the graded run: its trajectory hash, %016" PRIx64 ", is the graded run's, %016" PRIx64 ".",
-                                      film.value(), run->trajectoryHash);
+      media.caption += course::format(" The run shown is the graded run: its trajectory hash, %016" PRIx64 ", is the graded run's, %016" PRIx64 ".",
+                                      shown.value(), run->trajectoryHash);
     } else {
-      media.caption += " (" + film.error() + ")";
+      media.caption += " (" + shown.error() + ")";
     }
     if (!a.report.empty()) {
       Status s = course::writeHtmlReport(g, media, a.report);
@@ -108,6 +115,78 @@ Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const cours
 int notGraded(const course::Grade& g) {
   return fail("could not grade " + course::terminalSafe(g.submission) + ": " + g.graderFailure +
               "\nThis is no fault of the submission: no results were written and no score stands; grade it again once fixed.");
+}
+
+// Grades `submissions` of `students` into the class folder `a.out`: each student's folder (their
+// results.json, junit.xml, grade.json, wheel logs, and report.html when they lost points), their rows
+// of its gradebook, then its summary. The other students' rows and folders stay.
+int gradeIntoFolder(const GradeArgs& a, const course::GradeDef& def, const std::vector<fs::path>& submissions,
+                    const std::vector<std::string>& students) {
+  const fs::path dir = a.out;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (!fs::is_directory(dir)) return fail("--out " + a.out + ": cannot make that folder: " + ec.message(), 2);
+  std::vector<std::string> checks;
+  for (const course::Check& c : def.rubric.checks) {
+    if (!def.visibleOnly || c.visibility == course::Visibility::Visible) checks.push_back(c.name);
+  }
+  std::vector<std::optional<course::StudentFolder>> folders(submissions.size());
+  std::vector<std::string> problems(submissions.size());
+  const course::ClassHooks hooks{.logs =
+                                     [&](std::size_t k) {
+                                       Result<course::StudentFolder> f = course::StudentFolder::open(dir, students[k]);
+                                       if (!f) return problems[k] = f.error(), fs::path();
+                                       folders[k].emplace(std::move(f.value()));
+                                       return folders[k]->path() / "logs";
+                                     },
+                                 .graded =
+                                     [&](std::size_t k, const course::Grade& g) {
+                                       if (!folders[k]) return;
+                                       if (!g.graderFailure.empty()) {  // an autograder error leaves the student's last folder as it was
+                                         std::error_code ec;
+                                         fs::remove_all(folders[k]->path(), ec);
+                                         return;
+                                       }
+                                       const fs::path in = folders[k]->path();
+                                       GradeArgs each{.results = (in / "results.json").string(), .junit = (in / "junit.xml").string()};
+                                       if (g.score() < g.maxScore()) each.report = (in / "report.html").string();
+                                       Status s = writeOutputs(each, def, g, false);
+                                       if (s)
+                                         s = course::writeGradeJson(
+                                             g, students[k], course::submissionFingerprints(submissions[k], def.rubric.starter), in / "grade.json");
+                                       if (s) s = folders[k]->commit();
+                                       if (s) s = course::updateClassGradebook(dir, checks, {{students[k], &g}});
+                                       if (!s) problems[k] = s.error();
+                                     }};
+  ProgressBar bar(stderr, ::isatty(STDERR_FILENO) == 1, "frob: grading " + def.assignment);
+  char detail[48];
+  const std::vector<course::Grade> grades = course::gradeAll(
+      def, submissions, a.jobs,
+      [&](std::size_t done, std::size_t total) {
+        std::snprintf(detail, sizeof detail, "%zu / %zu submissions", done, total);
+        bar.show(static_cast<double>(done) / static_cast<double>(total), detail);
+      },
+      hooks);
+  bar.finish();
+  warnOfMissingLayers(grades);
+  std::size_t failed = 0;
+  for (std::size_t k = 0; k < grades.size(); ++k) {
+    const course::Grade& g = grades[k];
+    const std::string who = course::terminalSafe(students[k]);
+    if (!g.graderFailure.empty() || !problems[k].empty()) {
+      ++failed;
+      std::printf("%-24s NOT GRADED: %s\n", who.c_str(), course::terminalSafe(g.graderFailure.empty() ? problems[k] : g.graderFailure).c_str());
+      continue;
+    }
+    std::printf("%-24s %6.2f / %.2f  %s\n", who.c_str(), g.score(), g.maxScore(), course::resultKind(g).c_str());
+  }
+  if (Status s = course::writeClassSummary(dir, def.assignment); !s) return fail(s.error());
+  std::printf("wrote %s and %s\n", (dir / "gradebook.csv").c_str(), (dir / "summary.html").c_str());
+  if (failed > 0) {
+    return fail(std::to_string(failed) +
+                " submissions were NOT GRADED: frob or this machine failed (above); their rows and folders were left as they were; grade them again");
+  }
+  return 0;
 }
 
 int replayCommand(const std::string& log, const std::string& secretFile, const std::string& submission) {
@@ -183,6 +262,40 @@ int gradeCommand(const GradeArgs& a) {
     Result<course::KeptWorlds> fair = course::fairHiddenWorlds(def);
     if (!fair) return fail(fair.error(), 2);
     def.kept = fair.value();
+    // Told to staff (stderr: the job's log on Gradescope and PrairieLearn), never to students.
+    const course::Rubric& r = def.rubric;
+    if (r.needsSecret() && !def.secret.empty() && def.kept->empty() && !r.reference.empty() && !fs::is_regular_file(r.reference)) {
+      std::cerr << "frob: warning: the hidden checks run in the first worlds drawn from the secret, unchecked: the reference solution "
+                << r.reference.string() << " is not here, and the controller cache holds no hidden worlds found fair for this rubric and secret "
+                << "(copy them in: course/grading.md, \"On PrairieLearn\")\n";
+    }
+  }
+
+  if (!a.out.empty()) {
+    if (!fs::exists(fs::symlink_status(a.submission))) return fail("no submission '" + a.submission + "'", 2);
+    // One student, found in the folder's gradebook by their submission or a file of it, or named
+    // afresh; else a class (or this machine's shard of it).
+    if (const std::optional<course::KnownStudent> known = course::knownStudent(a.out, a.submission)) {
+      return gradeIntoFolder(a, def, {known->submission}, {known->student});
+    }
+    if (!fs::is_directory(a.submission)) {
+      const fs::path one = course::submissionOf(a.submission);
+      return gradeIntoFolder(a, def, {one}, course::studentNames({one}));
+    }
+    const std::vector<fs::path> all = course::submissionsIn(a.submission);
+    if (all.empty())
+      return fail("no submissions in '" + a.submission + "' (a .cpp file each, or a folder each holding one controller and its helpers)", 2);
+    const std::vector<std::string> names = course::studentNames(all);
+    int shard = 1, shards = 1;
+    if (!a.shard.empty() && (std::sscanf(a.shard.c_str(), "%d/%d", &shard, &shards) != 2 || shards < 1 || shard < 1 || shard > shards)) {
+      return fail("--shard must look like 2/8 (the second of eight), not '" + a.shard + "'", 2);
+    }
+    std::vector<fs::path> mine;
+    std::vector<std::string> theirs;
+    for (std::size_t k = static_cast<std::size_t>(shard - 1); k < all.size(); k += static_cast<std::size_t>(shards)) {
+      mine.push_back(all[k]), theirs.push_back(names[k]);
+    }
+    return gradeIntoFolder(a, def, mine, theirs);
   }
 
   if (!fs::is_directory(a.submission)) {
@@ -197,7 +310,8 @@ int gradeCommand(const GradeArgs& a) {
 
   // A class: every submission of the folder, or this machine's shard of them.
   if (!a.results.empty() || !a.prairielearn.empty() || !a.junit.empty() || !a.report.empty()) {
-    return fail("--results, --prairielearn, --junit and --report are for one submission; a class gets --gradebook", 2);
+    return fail(
+        "--results, --prairielearn, --junit and --report are for one submission; a class gets --out DIR (a folder per student) or --gradebook", 2);
   }
   std::vector<fs::path> all = course::submissionsIn(a.submission);
   if (all.empty())

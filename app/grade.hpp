@@ -9,6 +9,7 @@ namespace frob::app {
 struct GradeArgs {
   std::string assignment, submission;
   std::string results, prairielearn, junit, report, videos, logs, gradebook, secret, shard, replay, gradescopeZip, student;
+  std::string out;  // the class folder: a gradebook row and a folder per student, and the class's summary
   std::vector<std::string> merge;
   bool visibleOnly = false;
   int jobs = 1;

@@ -390,6 +390,9 @@ The rubric format and the instructors' guide: course/grading.md)");
   gradeCmd->add_option("--secret", grade.secret, "The instructor's secret for hidden seeds (default: $FROB_GRADE_SECRET)");
   gradeCmd->add_option("--jobs", grade.jobs, "Submissions graded at once (a class)")->capture_default_str()->check(CLI::Range(1, 256));
   gradeCmd->add_option("--shard", grade.shard, "Grade only shard I of N of the class, e.g. 2/8 (the same split on every machine)");
+  gradeCmd->add_option("--out", grade.out,
+                       "The class folder: DIR/gradebook.csv, a row per student, and DIR/<student>/ with their results and report; "
+                       "grading one student again replaces theirs only");
   gradeCmd->add_option("--gradebook", grade.gradebook, "Write the class's gradebook (CSV)");
   gradeCmd->add_option("--merge", grade.merge, "Merge these shard gradebooks into --gradebook");
   gradeCmd->add_option("--replay", grade.replay,

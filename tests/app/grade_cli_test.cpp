@@ -74,7 +74,7 @@ TEST(GradeCli, TheReportShowsTheFailingRunInTheViewer) {
   EXPECT_NE(page.find("<video controls src=\"data:video/mp4;base64,"), std::string::npos);
   EXPECT_NE(page.find("<iframe class=\"viewer\" sandbox=\"allow-scripts\""), std::string::npos);
   EXPECT_NE(page.find("id=&quot;run-data&quot;"), std::string::npos) << "the frame holds no viewer page with its run";
-  EXPECT_NE(page.find("The film is the graded run"), std::string::npos);
+  EXPECT_NE(page.find("The run shown is the graded run"), std::string::npos);
 }
 
 TEST(GradeCli, ASandboxLayerThisMachineLacksIsSaidToTheInstructorOnly) {
@@ -175,6 +175,71 @@ TEST(GradeCli, AClassInShardsMergesToTheWholeClassesGradebook) {
   EXPECT_NE(csv.find("class/cat.cpp,0,3,did not compile: "), std::string::npos) << csv;
   EXPECT_NE(csv.find("class/dana,3,3,graded,"), std::string::npos) << csv;
   EXPECT_EQ(runFrob(dir, {"grade", "forward", "class", "--shard", "3/2"}).status, 2);
+}
+
+// The gradebook's row of `student` in `csv`, up to its reasons (which may hold line ends).
+std::string rowOf(const std::string& csv, const std::string& student) {
+  const std::size_t at = csv.find("\r\n" + student + ",");
+  return at == std::string::npos ? "" : csv.substr(at + 2, csv.find("\r\n", at + 2) - at - 2);
+}
+
+// --out DIR: a row per student named by file or folder, with what became of them and every reason
+// whole; a folder per student with what they read and the logs; the summary; and grading one student
+// again replaces their row and folder only, whether named by their file or a file of their folder.
+TEST(GradeCli, AClassIntoAFolderGivesEachStudentTheirOwnEvidence) {
+  const fs::path dir = assignment("grade_cli_out");
+  fs::create_directories(dir / "class" / "dana");
+  std::ofstream(dir / "class" / "ann.cpp") << driver("0.5");
+  std::ofstream(dir / "class" / "ben.cpp") << driver("0.1");
+  std::ofstream(dir / "class" / "cat.cpp") << "not C++";
+  std::ofstream(dir / "class" / "dana" / "controller.cpp") << driver("0.1");
+  std::ofstream(dir / "class" / "eve.cpp") << "#include <frob/frob.hpp>\n#include <stdexcept>\nusing namespace frob;\n"
+                                              "Behavior<Wheels> go(const Robot&) {\n  return lift([](double t) {\n"
+                                              "    if (t > 1) throw std::runtime_error(\"eve's own failure\");\n"
+                                              "    return Wheels{0.5, 0.0};\n  }, time());\n}\nFROB_CONTROLLER(go)\n";
+  std::ofstream(dir / "secret.txt") << "course secret\n";
+  const FrobResult r = runFrob(dir, {"grade", "forward", "class", "--jobs", "2", "--out", "out", "--secret", "secret.txt"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("ann                        3.00 / 3.00  graded\n"), std::string::npos) << r.out;
+  const std::string csv = readFile(dir / "out" / "gradebook.csv");
+  EXPECT_EQ(csv.substr(0, csv.find("\r\n")), "student,score,max_score,result,goes forward,no bumps,reasons,submission");
+  EXPECT_EQ(rowOf(csv, "ann"), "ann,3,3,graded,2,1,,class/ann.cpp");
+  EXPECT_EQ(rowOf(csv, "ben").rfind("ben,1,3,graded,0,1,\"goes forward, room.toml, seed 1: never came within 0.40 m of goal", 0), 0u) << csv;
+  EXPECT_NE(rowOf(csv, "cat").find("cat,0,3,did not compile,0,0,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("dana,1,3,graded,"), std::string::npos) << csv;
+  EXPECT_NE(rowOf(csv, "eve").find("eve,"), std::string::npos) << csv;
+  EXPECT_NE(rowOf(csv, "eve").find(",failed at run time,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("eve's own failure"), std::string::npos) << csv;
+  // Each student's folder: what Gradescope and CI read, the grade whole, the signed logs; a report for those who lost points.
+  for (const char* file : {"results.json", "junit.xml", "grade.json", "logs/goes_forward__room__1.log"}) {
+    EXPECT_TRUE(fs::is_regular_file(dir / "out" / "ann" / file)) << file << ": " << ::testing::PrintToString(filesIn(dir / "out" / "ann"));
+  }
+  EXPECT_FALSE(fs::exists(dir / "out" / "ann" / "report.html"));
+  EXPECT_TRUE(fs::is_regular_file(dir / "out" / "ben" / "report.html"));
+  EXPECT_EQ(nlohmann::json::parse(readFile(dir / "out" / "ben" / "results.json"))["score"], 1.0);
+  const std::string summary = readFile(dir / "out" / "summary.html");
+  EXPECT_NE(summary.find("<a href=\"ben/report.html\">ben</a>"), std::string::npos);
+  EXPECT_NE(summary.find("<a href=\"ann/grade.json\">ann</a>"), std::string::npos);
+  // The logs name the rubric by its assignment's folder: they replay wherever the assignment is.
+  const FrobResult replayed = runFrob(dir, {"grade", "--replay", "out/ann/logs/goes_forward__room__1.log", "--secret", "secret.txt"});
+  EXPECT_EQ(replayed.status, 0) << replayed.err;
+
+  // Ben and Dana fix theirs: each is graded again alone, and only their rows and folders change.
+  const std::string annGrade = readFile(dir / "out" / "ann" / "grade.json");
+  std::ofstream(dir / "class" / "ben.cpp") << driver("0.5");
+  std::ofstream(dir / "class" / "dana" / "controller.cpp") << driver("0.5");
+  ASSERT_EQ(runFrob(dir, {"grade", "forward", "class/ben.cpp", "--out", "out", "--secret", "secret.txt"}).status, 0);
+  const FrobResult dana = runFrob(dir, {"grade", "forward", "class/dana/controller.cpp", "--out", "out", "--secret", "secret.txt"});
+  ASSERT_EQ(dana.status, 0) << dana.err;
+  const std::string after = readFile(dir / "out" / "gradebook.csv");
+  EXPECT_EQ(rowOf(after, "ben"), "ben,3,3,graded,2,1,,class/ben.cpp");
+  EXPECT_EQ(rowOf(after, "dana"), "dana,3,3,graded,2,1,,class/dana");
+  EXPECT_EQ(rowOf(after, "ann"), rowOf(csv, "ann"));
+  EXPECT_EQ(rowOf(after, "cat"), rowOf(csv, "cat"));
+  EXPECT_EQ(rowOf(after, "controller"), "") << "Dana was graded as someone new";
+  EXPECT_EQ(readFile(dir / "out" / "ann" / "grade.json"), annGrade);
+  EXPECT_FALSE(fs::exists(dir / "out" / "ben" / "report.html")) << "the report of ben's old grade stayed";
+  for (const std::string& name : filesIn(dir / "out")) EXPECT_FALSE(name.ends_with(".partial") || name.ends_with(".old")) << name;
 }
 
 TEST(GradeCli, AReplayFromTheCommandLineGivesTheVerdictAndHashAgain) {

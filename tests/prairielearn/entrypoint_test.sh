@@ -127,5 +127,18 @@ helper_beside_controller() {
   grade --gradable true --score 1 "${visible[@]}" --test "Hidden checks=3/3"
 }
 
+# The question ships its rubric folder without the reference solution and with no copy of the hidden
+# worlds: grading goes on in the worlds first drawn, and the job's log says so to staff.
+no_hidden_worlds() {
+  question
+  mkdir -p "$grade/tests/go_to_goal"
+  cp -r "$assignment/rubric.toml" "$assignment/worlds" "$assignment/starter.cpp" "$grade/tests/go_to_goal/"
+  echo go_to_goal > "$grade/tests/assignment.txt"
+  cp "$assignment/solution.cpp" "$grade/student/controller.cpp"
+  FROB_CACHE_DIR="$work/$case/cache" grade --gradable true
+  grep -q "frob: warning: the hidden checks run in the first worlds drawn from the secret, unchecked" "$work/$case/entrypoint.log" ||
+    { cat "$work/$case/entrypoint.log" >&2; fail "no warning that the hidden worlds are unchecked"; }
+}
+
 (($# > 0)) || { echo "usage: $0 FROB SOURCE_DIR PYTHON CASE..." >&2; exit 2; }
 for case in "$@"; do "$case"; done

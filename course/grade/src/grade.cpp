@@ -121,7 +121,8 @@ std::string logName(const std::string& check, const std::string& world, std::uin
 // when it could not be.
 bool writeLog(const fs::path& path, const GradeDef& def, const Check& check, const WorldRef& world, std::uint64_t seed, const Ran& ran,
               const Grade& g) {
-  WheelLog log{.rubric = fs::absolute(def.rubric.file).string(),
+  // The rubric by its assignment's folder, so that the log replays wherever the assignment is.
+  WheelLog log{.rubric = (fs::absolute(def.rubric.file).parent_path().filename() / def.rubric.file.filename()).string(),
                .check = check.name,
                .world = world.name,
                .generated = world.generated ? std::string(toString(*world.generated)) : std::string(),
@@ -403,7 +404,21 @@ Result<Replay> replay(const fs::path& file, const std::string& secret, const fs:
   const std::size_t steps = log.wheels.size(), robots = log.robots;
   const std::vector<std::vector<Wheels>>& wheels = log.wheels;
   const auto bad = [&](const std::string& what) { return Status::failure(file.string() + ": not a wheel log of frob grade (" + what + ")"); };
-  Result<Rubric> rubric = loadRubric(rubricFile);
+  // Named by its assignment's folder (logs of before: the rubric's absolute path): found beside the
+  // log or in a folder above it, else as frob grade finds an assignment (the working folder, assignments/).
+  Result<fs::path> found = fs::path(rubricFile);
+  if (!fs::path(rubricFile).is_absolute()) {
+    std::error_code ec;
+    found = findRubric(fs::path(rubricFile).parent_path().string());
+    for (fs::path d = fs::absolute(file, ec).parent_path(); d.has_relative_path(); d = d.parent_path()) {
+      if (fs::is_regular_file(d / rubricFile, ec)) {
+        found = d / rubricFile;
+        break;
+      }
+    }
+  }
+  if (!found) return Status::failure(file.string() + ": its rubric " + rubricFile + " is neither beside it nor here: " + found.error());
+  Result<Rubric> rubric = loadRubric(found.value());
   if (!rubric) return rubric.status();
   const auto check = std::find_if(rubric.value().checks.begin(), rubric.value().checks.end(), [&](const Check& c) { return c.name == checkName; });
   if (check == rubric.value().checks.end()) return Status::failure(rubricFile + ": has no check '" + checkName + "' any more");

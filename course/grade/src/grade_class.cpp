@@ -20,7 +20,7 @@ namespace frob::course {
 namespace fs = std::filesystem;
 
 std::vector<Grade> gradeAll(GradeDef def, const std::vector<fs::path>& submissions, int jobs,
-                            const std::function<void(std::size_t, std::size_t)>& progress) {
+                            const std::function<void(std::size_t, std::size_t)>& progress, const ClassHooks& hooks) {
   jobs = std::clamp(jobs, 1, std::max<int>(1, static_cast<int>(submissions.size())));
   // Each run is the grader and a host per robot, taking turns and spinning while they wait: runs
   // that share the cores slow each other more than they gain, so only one per two cores runs at once
@@ -36,7 +36,14 @@ std::vector<Grade> gradeAll(GradeDef def, const std::vector<fs::path>& submissio
   std::mutex told;
   const auto work = [&] {
     for (std::size_t k; (k = next++) < submissions.size();) {
-      grades[k] = grade(def, submissions[k]);
+      if (hooks.logs) {
+        GradeDef own = def;
+        own.logs = hooks.logs(k);
+        grades[k] = grade(own, submissions[k]);
+      } else {
+        grades[k] = grade(def, submissions[k]);
+      }
+      if (hooks.graded) hooks.graded(k, grades[k]);
       const std::lock_guard<std::mutex> lock(told);
       if (progress) progress(++done, submissions.size());
     }

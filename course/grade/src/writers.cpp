@@ -118,4 +118,71 @@ Result<std::string> readWhole(const fs::path& path, const std::string& what) {
   return bytes;
 }
 
+namespace {
+
+void appendCsvField(std::string& line, std::string_view text) {
+  if (text.find_first_of(",\"\r\n") == std::string_view::npos) {
+    line += text;
+    return;
+  }
+  line += '"';
+  for (char c : text) {
+    if (c == '"') line += '"';
+    line += c;
+  }
+  line += '"';
+}
+
+}  // namespace
+
+std::string csvRecord(const std::vector<std::string>& fields) {
+  std::string line;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (i > 0) line += ',';
+    appendCsvField(line, fields[i]);
+  }
+  return line + "\r\n";
+}
+
+Result<std::vector<CsvRow>> parseCsv(std::string_view text, const std::string& file) {
+  const auto endsRecord = [&](std::size_t k) { return text[k] == '\n' || (text[k] == '\r' && k + 1 < text.size() && text[k + 1] == '\n'); };
+  const auto error = [&](int at, const std::string& what) { return Status::failure("gradebook: " + file + ":" + std::to_string(at) + ": " + what); };
+  std::vector<CsvRow> rows;
+  std::size_t i = 0;
+  int line = 1;
+  while (i < text.size()) {
+    CsvRow& row = rows.emplace_back(CsvRow{.fields = {}, .line = line});
+    for (;;) {  // one field
+      std::string& field = row.fields.emplace_back();
+      if (i < text.size() && text[i] == '"') {
+        const int opened = line;
+        for (++i;; ++i) {
+          if (i >= text.size()) return error(opened, "a quoted field is not closed");
+          if (text[i] == '"' && (i + 1 >= text.size() || text[i + 1] != '"')) break;  // the closing quote
+          if (text[i] == '"') ++i;                                                    // "" is one quote
+          if (text[i] == '\n') ++line;
+          field += text[i];
+        }
+        ++i;
+        if (i < text.size() && text[i] != ',' && !endsRecord(i)) return error(line, "text after a closing quote");
+      } else {
+        for (; i < text.size() && text[i] != ',' && !endsRecord(i); ++i) {
+          if (text[i] == '"') return error(line, "a quote inside an unquoted field");
+          field += text[i];
+        }
+      }
+      if (i < text.size() && text[i] == ',') {
+        ++i;
+        continue;
+      }
+      if (i < text.size()) {  // the end of the record
+        i += text[i] == '\r' ? 2 : 1;
+        ++line;
+      }
+      break;
+    }
+  }
+  return rows;
+}
+
 }  // namespace frob::course::detail

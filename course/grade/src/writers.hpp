@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace frob::course::detail {
@@ -35,6 +36,16 @@ enum class Outcome { Pass, Fail, Partial };
 [[nodiscard]] std::string summaryOf(const Grade& g);
 /// `doc` as indented JSON; malformed UTF-8 (a compiler quoting a Latin-1 source) becomes U+FFFD.
 [[nodiscard]] std::string jsonText(const Json& doc);
+
+/// One CSV record (RFC 4180): fields with a comma, quote, CR or LF quoted, quotes doubled, ended by CRLF.
+[[nodiscard]] std::string csvRecord(const std::vector<std::string>& fields);
+/// A record read back, with the line where it starts.
+struct CsvRow {
+  std::vector<std::string> fields;
+  int line = 0;
+};
+/// Reads RFC 4180 text (records ended by CRLF or LF; quoted fields may hold both); `file` names it in errors.
+[[nodiscard]] Result<std::vector<CsvRow>> parseCsv(std::string_view text, const std::string& file);
 
 /// Writes `bytes` to `<path>.partial` and renames it to `path`; `what` names the file in messages.
 [[nodiscard]] Status writeWhole(const std::filesystem::path& path, const std::string& what, const std::string& bytes);

@@ -105,10 +105,17 @@ struct Grade {
 /// start, a full disk) stops it with Grade::graderFailure set: no score stands.
 [[nodiscard]] Grade grade(const GradeDef& def, const std::filesystem::path& submission);
 
+/// What gradeAll does for each submission besides grading it, in the job that grades it.
+struct ClassHooks {
+  std::function<std::filesystem::path(std::size_t k)> logs;   ///< submission k's folder of wheel logs; unset: GradeDef::logs
+  std::function<void(std::size_t k, const Grade& g)> graded;  ///< told each grade once made (its files written side by side)
+};
+
 /// Grades each of `submissions` (a class), `jobs` at a time, in their order; `progress(done, total)`
 /// is told after each. With more runs than cores, the controller hosts sleep rather than spin.
 [[nodiscard]] std::vector<Grade> gradeAll(GradeDef def, const std::vector<std::filesystem::path>& submissions, int jobs,
-                                          const std::function<void(std::size_t done, std::size_t total)>& progress = {});
+                                          const std::function<void(std::size_t done, std::size_t total)>& progress = {},
+                                          const ClassHooks& hooks = {});
 
 /// The submissions in `dir`, sorted: each .cpp file in it, compiled alone, and each subfolder that holds
 /// .cpp files, a submission of several files; links and special files too, which compiling refuses

@@ -22,7 +22,7 @@ namespace frob::course {
 
 /// Everything a log holds but its signature.
 struct WheelLog {
-  std::string rubric;            ///< the rubric file, absolute
+  std::string rubric;            ///< the rubric file by its assignment's folder ("go_to_goal/rubric.toml"; older logs: its absolute path)
   std::string check;             ///< the check's name
   std::string world;             ///< the world as the rubric names it
   std::string generated;         ///< the generator's kind, for a generated world; "" otherwise
