@@ -147,7 +147,7 @@ TEST(BugAssignment, ThePapersBugCirclesForeverAndDrivesPastTheBound) {
 TEST(BugAssignment, SlidingAlongObstaclesIsNoPathRoundThem) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "slides_along.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}, {kHiddenBound, 0.5}}));
-  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 872466220: touched a wall at"));
+  EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 872466220: touched a round obstacle at"));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("4 allowed)"));
 }
 

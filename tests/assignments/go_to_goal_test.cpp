@@ -118,8 +118,8 @@ TEST(GoToGoalAssignment, HardCodedRouteFailsOnlyTheHiddenRooms) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "hard_coded_route.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kInOrder, 3}, {kInTime, 2}, {kSofa, 2}, {kOtherRooms, 0}}));
   EXPECT_EQ(failedIn(g, kOtherRooms), "generated lounge, hidden world 1\ngenerated lounge, hidden world 2\n");
-  EXPECT_THAT(judged(g, kOtherRooms), HasSubstr("in hidden world 1: touched a wall at 26.5 s at (6.2, 6.4) (3 collisions; 0 allowed)\n"));
-  EXPECT_THAT(judged(g, kOtherRooms), HasSubstr("in hidden world 2: touched a wall at 25.6 s at (5.7, 6.3) (3 collisions; 0 allowed)\n"));
+  EXPECT_THAT(judged(g, kOtherRooms), HasSubstr("in hidden world 1: touched a round obstacle at 26.5 s at (6.2, 6.4) (3 collisions; 0 allowed)\n"));
+  EXPECT_THAT(judged(g, kOtherRooms), HasSubstr("in hidden world 2: touched a round obstacle at 25.6 s at (5.7, 6.3) (3 collisions; 0 allowed)\n"));
 }
 
 }  // namespace

@@ -71,10 +71,10 @@ TEST(WanderAssignment, SolutionGetsFullMarksOnEveryCheck) {
 TEST(WanderAssignment, StarterCreepsOutAndTouches) {
   course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "starter.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kHall, 2}, {kTouch, 0}, {kExplore, 0}, {kUnseen, 0}}));
-  EXPECT_THAT(reasons(g, kTouch), HasSubstr("in worlds/living_room.toml, seed 1: touched a wall at 53.5 s"));
-  EXPECT_THAT(reasons(g, kTouch), HasSubstr("in worlds/bedroom.toml, seed 1: touched a wall at 77.0 s"));
+  EXPECT_THAT(reasons(g, kTouch), HasSubstr("in worlds/living_room.toml, seed 1: touched a round obstacle at 53.5 s"));
+  EXPECT_THAT(reasons(g, kTouch), HasSubstr("in worlds/bedroom.toml, seed 1: touched a block at 77.0 s"));
   EXPECT_THAT(reasons(g, kExplore), HasSubstr("covered 31% of the floor it could reach (10 of 32 cells of 1.00 m); 50% required"));
-  EXPECT_THAT(judged(g, kUnseen), HasSubstr("touched a wall"));
+  EXPECT_THAT(judged(g, kUnseen), HasSubstr("touched a round obstacle"));
 }
 
 // It stops for anything within 50 cm of its five front sonars and always turns a quarter turn to
@@ -95,9 +95,10 @@ TEST(WanderAssignment, QuarterTurnsToTheRightNeverLeaveTheHall) {
 TEST(WanderAssignment, StoppingOnTheBumperExploresButTouches) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "stops_on_bumper.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kHall, 2}, {kTouch, 0}, {kExplore, 3}, {kUnseen, 0}}));
-  EXPECT_THAT(reasons(g, kTouch), HasSubstr("in worlds/living_room.toml, seed 1: touched a wall at 10.7 s at (4.0, 5.8) (14 collisions; 0 allowed)"));
+  EXPECT_THAT(reasons(g, kTouch),
+              HasSubstr("in worlds/living_room.toml, seed 1: touched a round obstacle at 10.7 s at (4.0, 5.8) (14 collisions; 0 allowed)"));
   EXPECT_EQ(failedIn(g, kUnseen), "generated furnished_room, hidden world 1\ngenerated furnished_room, hidden world 2\n");
-  EXPECT_THAT(judged(g, kUnseen), HasSubstr("in hidden world 1: touched a wall at 2.7 s at (3.8, 1.9) (13 collisions; 0 allowed)"));
+  EXPECT_THAT(judged(g, kUnseen), HasSubstr("in hidden world 1: touched a round obstacle at 2.7 s at (3.8, 1.9) (13 collisions; 0 allowed)"));
 }
 
 // Example 1 copied as it is: its goAhead also stops when anything is within 25 cm to a side, and

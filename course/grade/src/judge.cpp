@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iterator>
+#include <optional>
 #include <queue>
 
 namespace frob::course {
@@ -301,9 +302,8 @@ class Judge {
     const std::vector<std::pair<double, Point2>> hits = collisionsOf(t, run_.dt);
     if (static_cast<int>(hits.size()) <= c_.count) return c_.seconds > 0 ? touchingTime(t) : "";
     const auto& [when, where] = hits[static_cast<std::size_t>(c_.count)];
-    const worlds::WallIndex walls(run_.walls, run_.size, 1.0);
-    const char* what = walls.distance(where) <= t.radius + 0.05 ? "a wall" : "another robot";
-    std::string why = format("touched %s at %s at %s", what, secondsText(when).c_str(), at(where).c_str());
+    const std::string what = obstacleAt(where, t.radius + 0.05).value_or("another robot");
+    std::string why = format("touched %s at %s at %s", what.c_str(), secondsText(when).c_str(), at(where).c_str());
     if (c_.count > 0 || hits.size() > 1) why += format(" (%zu collisions; %d allowed)", hits.size(), c_.count);
     return why;
   }
@@ -321,13 +321,35 @@ class Judge {
                   secondsText(longest->first).c_str(), secondsText(longest->second).c_str(), secondsText(c_.seconds).c_str());
   }
 
+  // What the robot at `p` touches within `reach`, the nearest, named by what it is: the world's
+  // enclosing wall or a wall in it, a block (a box, a cupboard) or a round obstacle (a pillar, a table, a leg); none within reach: nothing.
+  std::optional<std::string> obstacleAt(const Point2& p, double reach) const {
+    std::optional<std::size_t> nearest;
+    double best = reach;
+    for (std::size_t w = 0; w < run_.walls.size(); ++w) {
+      const double d = worlds::distanceToWall(p, run_.walls[w]);
+      if (d <= best) best = d, nearest = w;
+    }
+    if (!nearest) return std::nullopt;
+    if (*nearest >= run_.walls.size() - run_.enclosureWalls) return "the outer wall";
+    switch (run_.walls[*nearest].shape) {
+      case worlds::WallShape::Rectangle:
+        return "a block";
+      case worlds::WallShape::Circle:
+        return "a round obstacle";
+      default:
+        return "a wall";
+    }
+  }
+
   std::string clearance(const Track& t) {
     const worlds::WallIndex walls(run_.walls, run_.size, t.radius + c_.distance + 1.0);
     for (std::size_t k = 0; k < t.path.size(); ++k) {
       const double gap = walls.distance(t.path[k]) - t.radius;
       if (gap < c_.distance - 1e-9) {
-        return format("came within %.2f m of a wall at %s at %s; at least %.2f m required", std::max(gap, 0.0), secondsText(timeOf(k)).c_str(),
-                      at(t.path[k]).c_str(), c_.distance);
+        return format("came within %.2f m of %s at %s at %s; at least %.2f m required", std::max(gap, 0.0),
+                      obstacleAt(t.path[k], t.radius + c_.distance).value_or("a wall").c_str(), secondsText(timeOf(k)).c_str(), at(t.path[k]).c_str(),
+                      c_.distance);
       }
     }
     return "";

@@ -147,11 +147,18 @@ std::vector<std::string> Diagnosis::hints(std::size_t i, const std::string& name
                "from the one that starts it",
                name.c_str(), w.quickTotal, names.c_str()));
   }
+  // Tasks that ran from near the start to the end, nested in each other: one hint, for the innermost
+  // (its enclosing tasks wait for it), naming the others.
+  const TaskRecord* innermost = nullptr;
+  std::string enclosing;
   for (const TaskRecord& t : running) {
-    if (t.depth > 0 && t.start <= 0.1 * end && end > 5.0) {
-      out.push_back(format("%s's task '%s' ran from %.1f s to the end of the run: the event that should end it never occurred", name.c_str(),
-                           t.name.c_str(), t.start));
-    }
+    if (t.depth == 0 || t.start > 0.1 * end || end <= 5.0) continue;
+    if (innermost != nullptr) enclosing += (enclosing.empty() ? " (inside '" : "', '") + innermost->name;
+    if (innermost == nullptr || t.depth > innermost->depth) innermost = &t;
+  }
+  if (innermost != nullptr) {
+    out.push_back(format("%s's task '%s'%s ran from %.1f s to the end of the run: the event that should end it never occurred", name.c_str(),
+                         innermost->name.c_str(), enclosing.empty() ? "" : (enclosing + "')").c_str(), innermost->start));
   }
   return out;
 }

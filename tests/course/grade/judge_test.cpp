@@ -153,11 +153,26 @@ TEST(Judge, AReportedEventMustComeSoonAfterIt) {
 TEST(Judge, CollisionsNameTheFirstOneOverTheLimit) {
   Track t = straight(1, 1.5, 0.5, 2);
   t.contacts = {{41.2, {3.1, 2.75}}, {50.0, {4.0, 2.75}}};
-  EXPECT_EQ(run({.kind = Kind::Collisions, .count = 0}, t).reason, "touched a wall at 41.2 s at (3.1, 2.8) (2 collisions; 0 allowed)");
-  EXPECT_EQ(run({.kind = Kind::Collisions, .count = 1}, t).reason, "touched a wall at 50.0 s at (4.0, 2.8) (2 collisions; 1 allowed)");
+  EXPECT_EQ(run({.kind = Kind::Collisions, .count = 0}, t).reason, "touched the outer wall at 41.2 s at (3.1, 2.8) (2 collisions; 0 allowed)");
+  EXPECT_EQ(run({.kind = Kind::Collisions, .count = 1}, t).reason, "touched the outer wall at 50.0 s at (4.0, 2.8) (2 collisions; 1 allowed)");
   EXPECT_TRUE(run({.kind = Kind::Collisions, .count = 2}, t).passed);
   t.contacts = {{3.0, {3.0, 1.5}}};  // in the middle of the room: it must have been another robot
   EXPECT_EQ(run({.kind = Kind::Collisions, .count = 0}, t).reason, "touched another robot at 3.0 s at (3.0, 1.5)");
+}
+
+// What was touched is named as what it is: a cupboard is a block and a table a round obstacle, not walls.
+TEST(Judge, AnObstacleIsNamedAsWhatItIs) {
+  RunRecord r = room();
+  r.walls.insert(r.walls.begin(),
+                 {worlds::rectangleWall({2.0, 0.5}, {2.6, 1.0}), worlds::circleWall({4.0, 2.0}, 0.2), worlds::segmentWall({5.0, 0.0}, {5.0, 1.0})});
+  Track t = straight(1, 1.5, 0.5, 2);
+  const Criterion none{.kind = Kind::Collisions, .count = 0};
+  t.contacts = {{1.0, {2.3, 1.2}}};
+  EXPECT_EQ(run(none, t, r).reason, "touched a block at 1.0 s at (2.3, 1.2)");
+  t.contacts = {{1.0, {4.0, 1.65}}};
+  EXPECT_EQ(run(none, t, r).reason, "touched a round obstacle at 1.0 s at (4.0, 1.6)");
+  t.contacts = {{1.0, {4.8, 0.5}}};
+  EXPECT_EQ(run(none, t, r).reason, "touched a wall at 1.0 s at (4.8, 0.5)");
 }
 
 // A robot commanded still after a bump keeps moving a little: it bounces off, or glances round the
@@ -171,9 +186,9 @@ TEST(Judge, ABounceOrAGlanceRoundACornerIsTheSameCollision) {
   EXPECT_TRUE(run(once, t).passed);
   t.contacts.push_back({20.0, {3.0, 2.75}});  // sensed a step (0.1 s here) after it began, 0.6 s after the last touch: a new one
   t.touching.push_back({19.9, 20.1});
-  EXPECT_EQ(run(once, t).reason, "touched a wall at 20.0 s at (3.0, 2.8) (2 collisions; 1 allowed)");
+  EXPECT_EQ(run(once, t).reason, "touched the outer wall at 20.0 s at (3.0, 2.8) (2 collisions; 1 allowed)");
   t.touching = {};  // contacts alone: each 0.5 s or more after the one before is new
-  EXPECT_EQ(run(once, t).reason, "touched a wall at 20.0 s at (3.0, 2.8) (2 collisions; 1 allowed)");
+  EXPECT_EQ(run(once, t).reason, "touched the outer wall at 20.0 s at (3.0, 2.8) (2 collisions; 1 allowed)");
   t.contacts.back().first = 19.6;
   EXPECT_TRUE(run(once, t).passed);
 }
@@ -188,7 +203,7 @@ TEST(Judge, CollisionsMayCapTheTimeSpentTouching) {
   EXPECT_EQ(run({.kind = Kind::Collisions, .seconds = 2.0, .count = 2}, t).reason,
             "pressed its bumpers for 2.5 s in all, the longest touch from 20.0 s to 22.0 s; at most 2.0 s allowed");
   EXPECT_EQ(run({.kind = Kind::Collisions, .seconds = 2.5, .count = 1}, t).reason,
-            "touched a wall at 20.0 s at (4.0, 2.8) (2 collisions; 1 allowed)");
+            "touched the outer wall at 20.0 s at (4.0, 2.8) (2 collisions; 1 allowed)");
   t.touching.back().second = 30.0;
   EXPECT_FALSE(run(brief, t).passed);
   EXPECT_TRUE(run({.kind = Kind::Collisions, .count = 2}, t).passed) << "no time cap unless one is given";
@@ -201,7 +216,7 @@ TEST(Judge, PushingAlongCountsOneCollisionPerSecondOfIt) {
   t.contacts = {{1.0, {1.5, 2.75}}};
   t.touching = {{1.0, 3.55}};  // 26 steps of 0.1 s driving while touching: 2.6 s
   EXPECT_TRUE(run({.kind = Kind::Collisions, .count = 3}, t).passed);
-  EXPECT_EQ(run({.kind = Kind::Collisions, .count = 2}, t).reason, "touched a wall at 3.0 s at (2.5, 2.8) (3 collisions; 2 allowed)");
+  EXPECT_EQ(run({.kind = Kind::Collisions, .count = 2}, t).reason, "touched the outer wall at 3.0 s at (2.5, 2.8) (3 collisions; 2 allowed)");
   Track pressed = stopsAt(1.0, 20);
   pressed.contacts = {{1.0, {1.3, 1.5}}};
   pressed.touching = {{1.0, 20.0}};
@@ -211,7 +226,7 @@ TEST(Judge, PushingAlongCountsOneCollisionPerSecondOfIt) {
 TEST(Judge, ClearanceIsMeasuredFromTheBody) {
   // Centre 0.30 m from the bottom wall, body radius 0.23: 0.07 m of clearance.
   const Criterion c{.kind = Kind::Clearance, .distance = 0.1};
-  EXPECT_EQ(run(c, straight(1, 0.30, 0.5, 1)).reason, "came within 0.07 m of a wall at 0.0 s at (1.0, 0.3); at least 0.10 m required");
+  EXPECT_EQ(run(c, straight(1, 0.30, 0.5, 1)).reason, "came within 0.07 m of the outer wall at 0.0 s at (1.0, 0.3); at least 0.10 m required");
   EXPECT_TRUE(run(c, straight(1, 0.34, 0.5, 1)).passed);
 }
 

@@ -81,6 +81,18 @@ TEST(Diagnosis, SpinningInPlace) {
   EXPECT_EQ(h[1], "ada's task 'lookAround' ran from 0.0 s to the end of the run: the event that should end it never occurred");
 }
 
+// Tasks nested in each other that all ran to the end: one hint, for the innermost, not one per level.
+TEST(Diagnosis, NestedTasksThatNeverEndGiveOneHint) {
+  Diagnosis d(room(), {6, 4}, kDt);
+  for (int k = 0; k <= 400; ++k) d.observe(0, k * kDt, {.position = {1 + 0.004 * k, 2}}, {0.4, 0}, 6.5, 6.5);
+  const std::vector<TaskRecord> running{{.id = 1, .parent = 0, .depth = 1, .name = "follow", .start = 0.0},
+                                        {.id = 2, .parent = 1, .depth = 2, .name = "alongWall", .start = 0.5},
+                                        {.id = 3, .parent = 2, .depth = 3, .name = "keepDistance", .start = 1.0}};
+  EXPECT_EQ(d.hints(0, "ada", running, 40.0),
+            std::vector<std::string>{"ada's task 'keepDistance' (inside 'follow', 'alongWall') ran from 1.0 s to the end of the run: the event "
+                                     "that should end it never occurred"});
+}
+
 TEST(Diagnosis, TasksThatEndAsTheyBegin) {
   Diagnosis d(room(), {6, 4}, kDt);
   d.observe(0, 0, {.position = {1, 2}}, {0.3, 0}, 6.5, 6.5);
