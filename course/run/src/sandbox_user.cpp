@@ -3,8 +3,8 @@
 #include <fcntl.h>
 #include <pwd.h>
 #include <sys/file.h>
+#include <sys/prctl.h>
 #include <sys/stat.h>
-#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -12,7 +12,9 @@
 #include <csignal>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <string>
+#include <vector>
 
 namespace frob::course {
 
@@ -44,21 +46,38 @@ Result<sandbox::Fd> lockFolder() {
   return Status::failure("cannot keep the sandbox's users apart: " + why);
 }
 
-// Kills every process running as `uid` (as root): a child that becomes `uid` may signal exactly those,
-// and kill(-1) does. A fork under way when the signal comes is undone by the kernel, so none is left
-// to run; the second round checks. The child shares frob's memory (vfork), so it makes system calls only.
+// This process's children that run as `uid`, from /proc: their parent and real user id.
+std::vector<pid_t> childrenRunningAs(std::uint32_t uid) {
+  std::vector<pid_t> found;
+  std::error_code ec;
+  const std::string self = std::to_string(::getpid()), user = std::to_string(uid);
+  for (const std::filesystem::directory_entry& e : std::filesystem::directory_iterator("/proc", ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream status(e.path() / "status");
+    std::string line, parent, real;
+    while (std::getline(status, line)) {
+      if (line.starts_with("PPid:")) parent = line.substr(line.find_first_not_of(" \t", 5));
+      if (line.starts_with("Uid:")) real = line.substr(5, line.find_first_of(" \t", line.find_first_not_of(" \t", 5)) - 5);
+    }
+    real.erase(0, real.find_first_not_of(" \t"));
+    if (parent == self && real == user) found.push_back(static_cast<pid_t>(std::stol(name)));
+  }
+  return found;
+}
+
+// Kills and reaps every process still running as `uid` that this frob started: frob is their
+// subreaper, so one that left its process group and session (orphaned) became its child. Killed
+// and reaped a generation at a time: an orphan's own children become frob's as it dies. Only
+// frob's own children are touched, never a process of another frob (in a container, say) that uses
+// the same number.
 void killEveryProcessOf(std::uint32_t uid) {
-  for (int round = 0; round < 2; ++round) {
-    const pid_t pid = ::vfork();
-    if (pid == 0) {
-      const bool became =
-          ::syscall(SYS_setgroups, 0, nullptr) == 0 && ::syscall(SYS_setresgid, uid, uid, uid) == 0 && ::syscall(SYS_setresuid, uid, uid, uid) == 0;
-      ::_exit(became && ::syscall(SYS_kill, -1, SIGKILL) == 0 ? 0 : 1);
+  for (std::vector<pid_t> left = childrenRunningAs(uid); !left.empty(); left = childrenRunningAs(uid)) {
+    for (pid_t pid : left) ::kill(pid, SIGKILL);
+    for (pid_t pid : left) {
+      while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+      }
     }
-    int status = 0;
-    while (pid > 0 && ::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    if (pid < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) return;  // none was left (or frob cannot fork: its run fails anyway)
   }
 }
 
@@ -82,6 +101,8 @@ SandboxUser& SandboxUser::operator=(SandboxUser&& o) noexcept {
 Result<SandboxUser> SandboxUser::take() {
   SandboxUser user;
   if (::geteuid() != 0) return user;
+  // The sandboxed programs' orphans become frob's children, to be ended with their user (killEveryProcessOf).
+  ::prctl(PR_SET_CHILD_SUBREAPER, 1);
   Result<sandbox::Fd> folder = lockFolder();
   if (!folder) return folder.status();
   for (std::uint32_t uid = kFirstSandboxUid; uid < kEndSandboxUid; ++uid) {

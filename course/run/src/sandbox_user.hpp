@@ -17,8 +17,9 @@ inline constexpr std::uint32_t kEndSandboxUid = 61184;
 
 /// A user id held until destroyed: no account's, and held by no other SandboxUser on this machine,
 /// in this process or another (a lock per id in a folder only root may change, released by the
-/// kernel if frob dies). Every process still running as it is killed before it is released (one that
-/// left its process group and session, say), so that the next holder's programs meet none.
+/// kernel if frob dies). Every process frob started that still runs as it is killed before it is
+/// released (one that left its process group and session, say: frob is its subreaper), so that the
+/// next holder's programs meet none.
 class SandboxUser {
  public:
   /// The first free id, as root; otherwise none (`held()` false: the program runs as the caller).
