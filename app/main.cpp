@@ -18,6 +18,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <sys/utsname.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -416,6 +417,10 @@ The rubric format and the instructors' guide: course/grading.md)");
   initCmd->add_option("folder", initFolder, "Where (made if needed; files already there are kept)")->capture_default_str();
 
   CLI11_PARSE(cli, argc, argv);
+  if (runCmd->parsed() || gradeCmd->parsed()) {  // off amd64, runs are close to the grader's, not the same
+    utsname machine{};
+    if (::uname(&machine) == 0) std::fputs(frob::course::determinismNote(machine.machine).c_str(), stderr);
+  }
   if (runCmd->parsed()) return frob::app::runCommand(run);
   if (renderCmd->parsed()) return frob::app::renderCommand(renderWorld, renderOut, renderSize);
   if (gradeCmd->parsed()) return frob::app::gradeCommand(grade);

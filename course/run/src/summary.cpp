@@ -98,4 +98,13 @@ std::string summaryJson(const Summary& s, double wallSeconds) {
   return doc.dump(1) + "\n";
 }
 
+std::string determinismNote(std::string_view machine) {
+  if (machine == "x86_64") return "";
+  return "frob: note: on " + std::string(machine) +
+         " the simulator's floating point is not amd64's (the C library's float sine, cosine and arctangent round "
+         "otherwise, and Debian builds Box2D there with fused multiply-adds), so runs and grades here are close to the "
+         "grader's but not the same to the last bit; for grades identical to the grader's, run the amd64 image "
+         "(README, \"Every laptop\")\n";
+}
+
 }  // namespace frob::course

@@ -394,6 +394,16 @@ TEST(Session, FailingControllerWritesNothing) {
   EXPECT_FALSE(fs::exists(json));
 }
 
+// On amd64, whose bits the graders' are, nothing is said; on another machine, that its runs are not
+// the grader's to the last bit, why, and what gives the grader's.
+TEST(Session, OffAmd64ARunSaysItIsNotTheGradersToTheLastBit) {
+  EXPECT_EQ(determinismNote("x86_64"), "");
+  const std::string arm = determinismNote("aarch64");
+  EXPECT_EQ(arm.rfind("frob: note: on aarch64 the simulator's floating point is not amd64's", 0), 0u) << arm;
+  EXPECT_NE(arm.find("fused multiply-adds"), std::string::npos);
+  EXPECT_NE(arm.find("run the amd64 image"), std::string::npos);
+}
+
 TEST(Session, ValidateNamesTheProblem) {
   RunDef def{.world = room(), .worldName = "room", .controllers = {}, .seconds = 1};
   EXPECT_EQ(validate(def).error(), "no controller given");

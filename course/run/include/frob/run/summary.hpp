@@ -4,6 +4,7 @@
 #include "frob/run/session.hpp"
 
 #include <string>
+#include <string_view>
 
 namespace frob::course {
 
@@ -11,5 +12,10 @@ namespace frob::course {
 [[nodiscard]] std::string formatSummary(const Summary& summary, double wallSeconds);
 /// The same as a JSON object (one line per field), ending with a newline.
 [[nodiscard]] std::string summaryJson(const Summary& summary, double wallSeconds);
+
+/// What frob says before a run or grade on a machine of architecture `machine` (uname's: "x86_64",
+/// "aarch64"): nothing on amd64, whose bits the graders' are; elsewhere that its trajectories and
+/// grades are not bit-identical to the grader's, and why.
+[[nodiscard]] std::string determinismNote(std::string_view machine);
 
 }  // namespace frob::course
