@@ -258,6 +258,11 @@ int gradeCommand(const GradeArgs& a) {
                        .logs = a.logs,
                        .student = a.student};
   if (def.assignment == "rubric.toml") def.assignment = fs::path(a.assignment).parent_path().filename().string();
+  if (!a.submissionMetadata.empty()) {
+    Result<double> late = course::submissionLateness(a.submissionMetadata);
+    if (!late) return fail(late.error(), 2);
+    def.daysLate = late.value();
+  }
   if (!def.visibleOnly) {  // no student meets a hidden world the reference solution fails
     Result<course::KeptWorlds> fair = course::fairHiddenWorlds(def);
     if (!fair) return fail(fair.error(), 2);

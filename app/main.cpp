@@ -399,6 +399,8 @@ The rubric format and the instructors' guide: course/grading.md)");
   gradeCmd->add_option("--replay", grade.replay,
                        "Replay a run's wheel log in the simulator and judge it again (with SUBMISSION: refused unless the log is of it)");
   gradeCmd->add_option("--student", grade.student, "Who submitted it, named in its wheel logs");
+  gradeCmd->add_option("--submission-metadata", grade.submissionMetadata,
+                       "Gradescope's submission_metadata.json: when it came against the due date, for a rubric's late penalty");
   gradeCmd->add_option("--gradescope-zip", grade.gradescopeZip, "Write the assignment's autograder zip for Gradescope");
 
   std::string kind, worldOut;

@@ -242,6 +242,37 @@ TEST(GradeCli, AClassIntoAFolderGivesEachStudentTheirOwnEvidence) {
   for (const std::string& name : filesIn(dir / "out")) EXPECT_FALSE(name.ends_with(".partial") || name.ends_with(".old")) << name;
 }
 
+// A rubric's late penalty, from Gradescope's submission metadata: a share of the score per day begun,
+// at most `most`; on time, nothing; a time that is not one is the autograder's error, not a grade.
+TEST(GradeCli, ALateSubmissionLosesItsShareAndSaysSo) {
+  const fs::path dir = assignment("grade_cli_late");
+  std::ofstream(dir / "forward" / "rubric.toml") << "late = { per_day = 0.1, most = 0.25 }\n" << kRubric;  // a top-level key: before the checks
+  std::ofstream(dir / "fast.cpp") << driver("0.5");
+  const auto metadata = [&](const std::string& name, const std::string& created) {
+    std::ofstream(dir / name) << R"({"id": 1, "created_at": ")" << created
+                              << R"(", "assignment": {"due_date": "2026-12-05T23:59:00.000000-08:00", "title": "Forward"}, "users": []})";
+    return name;
+  };
+  const auto score = [&](const std::string& meta) {
+    const FrobResult r = runFrob(dir, {"grade", "forward", "fast.cpp", "--results", "r.json", "--submission-metadata", meta});
+    EXPECT_EQ(r.status, 0) << r.err;
+    return nlohmann::json::parse(readFile(dir / "r.json"));
+  };
+  EXPECT_EQ(score(metadata("early.json", "2026-12-05T23:58:59.5-08:00"))["score"], 3.0);
+  // 2026-12-06T09:00:00Z is 1:01 after the due date: one day begun, 10% of 3 points.
+  const nlohmann::json late = score(metadata("late.json", "2026-12-06T09:00:00Z"));
+  EXPECT_EQ(late["score"], 2.7);
+  EXPECT_NE(late["output"].get<std::string>().find("Note: submitted 1 day late: 10% of the score taken (10% a day begun, at most 25%)"),
+            std::string::npos)
+      << late["output"];
+  EXPECT_EQ(score(metadata("later.json", "2026-12-09T10:00:00+02:00"))["score"], 2.25);  // 3 days begun: 30%, at most 25%
+  const FrobResult broken =
+      runFrob(dir, {"grade", "forward", "fast.cpp", "--results", "x.json", "--submission-metadata", metadata("bad.json", "yesterday")});
+  EXPECT_EQ(broken.status, 2);
+  EXPECT_NE(broken.err.find("bad.json: created_at: not an ISO 8601 time with its offset: 'yesterday'"), std::string::npos) << broken.err;
+  EXPECT_FALSE(fs::exists(dir / "x.json"));
+}
+
 TEST(GradeCli, AReplayFromTheCommandLineGivesTheVerdictAndHashAgain) {
   const fs::path dir = assignment("grade_cli_replay");
   std::ofstream(dir / "slow.cpp") << driver("0.1");

@@ -178,7 +178,7 @@ std::vector<std::string> CheckGrade::hintsShown(std::size_t k) const {
 double Grade::score() const {
   double s = 0;
   for (const CheckGrade& c : checks) s += c.score;
-  return s;
+  return s - latePenalty;
 }
 
 double Grade::maxScore() const {
@@ -376,6 +376,14 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
     const auto passed = std::count_if(cg.runs.begin(), cg.runs.end(), [](const RunGrade& r) { return r.passed; });
     cg.score = cg.runs.empty() ? 0.0 : check.points * static_cast<double>(passed) / static_cast<double>(cg.runs.size());
     g.checks.push_back(std::move(cg));
+  }
+  // Lateness takes its share of what the checks earned, for each day or part of one.
+  if (def.daysLate && *def.daysLate > 0 && def.rubric.latePerDay > 0) {
+    const double days = std::ceil(*def.daysLate - 1e-9), share = std::min(def.rubric.lateMost, def.rubric.latePerDay * days);
+    g.latePenalty = share * g.score();
+    g.notes.push_back(format("submitted %.0f day%s late: %s of the score taken (%g%% a day begun, at most %g%%)", days, days == 1 ? "" : "s",
+                             (std::to_string(static_cast<int>(std::lround(100 * share))) + "%").c_str(), 100 * def.rubric.latePerDay,
+                             100 * def.rubric.lateMost));
   }
   g.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return g;

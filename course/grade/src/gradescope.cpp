@@ -2,13 +2,16 @@
 
 #include "frob/base/layout.hpp"
 #include "frob/render/output_file.hpp"
+#include "writers.hpp"
 
 #include <zip.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <optional>
 
 namespace frob::course {
 
@@ -65,8 +68,10 @@ export FROB="${FROB:-$root/source/build/app/frob}"
 export FROB_CACHE_DIR="$root/cache"
 if [ -d "$root/source/cache" ]; then mkdir -p "$root/cache" && cp -r "$root/source/cache/." "$root/cache/"; fi  # the fair hidden worlds
 if [ -f "$root/source/secret.txt" ]; then export FROB_GRADE_SECRET="$(head -n 1 "$root/source/secret.txt")"; fi
+late=()  # when the rubric takes points for lateness, Gradescope's times say how late
+if [ -f "$root/submission_metadata.json" ]; then late=(--submission-metadata "$root/submission_metadata.json"); fi
 exec bash "$root/source/course/autograder/grade_submission.sh" gradescope "$root/source/assignments/ASSIGNMENT" "$root/submission" \
-  "$root/results/results.json" --logs "$root/results/logs"
+  "$root/results/results.json" --logs "$root/results/logs" "${late[@]}"
 )sh";
 
 // What of frob's sources the autograder builds from: everything but tests, builds and the other assignments.
@@ -153,6 +158,44 @@ Status writeGradescopeZip(const GradescopeZipDef& def, const fs::path& out) {
     return Status::failure(out.string() + ": cannot write the zip" + (error.empty() ? "" : ": " + error));
   }
   return render::commitPartial(out.string(), "zip");
+}
+
+namespace {
+
+// Seconds since 1970 of an ISO 8601 time with its offset ("2026-12-05T23:59:00.123456-08:00", or "Z"),
+// by the days-from-civil count (Howard Hinnant's), so that no time zone of this machine plays a part.
+std::optional<double> isoSeconds(const std::string& text) {
+  int y = 0, mo = 0, d = 0, h = 0, mi = 0, used = 0;
+  double sec = 0;
+  if (std::sscanf(text.c_str(), "%4d-%2d-%2dT%2d:%2d:%lf%n", &y, &mo, &d, &h, &mi, &sec, &used) != 6) return std::nullopt;
+  if (mo < 1 || mo > 12 || d < 1 || d > 31 || h > 23 || mi > 59 || sec < 0 || sec >= 61) return std::nullopt;
+  const std::string zone = text.substr(static_cast<std::size_t>(used));
+  int zh = 0, zm = 0;
+  char sign = '+';
+  if (zone != "Z" && (std::sscanf(zone.c_str(), "%c%2d:%2d", &sign, &zh, &zm) != 3 || (sign != '+' && sign != '-'))) return std::nullopt;
+  const int yy = y - (mo <= 2 ? 1 : 0);
+  const int era = (yy >= 0 ? yy : yy - 399) / 400;
+  const int yoe = yy - era * 400, doy = (153 * (mo + (mo > 2 ? -3 : 9)) + 2) / 5 + d - 1, doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+  const double days = static_cast<double>(era) * 146097 + doe - 719468;
+  const double offset = (sign == '-' ? -1 : 1) * (zh * 3600.0 + zm * 60.0);
+  return days * 86400 + h * 3600.0 + mi * 60.0 + sec - offset;
+}
+
+}  // namespace
+
+Result<double> submissionLateness(const fs::path& metadata) {
+  Result<std::string> text = detail::readWhole(metadata, "submission metadata");
+  if (!text) return text.status();
+  const detail::Json doc = detail::Json::parse(text.value(), nullptr, false);
+  const auto field = [&](const detail::Json& j, const char* key) -> std::string {
+    return j.is_object() && j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : std::string();
+  };
+  if (doc.is_discarded() || !doc.is_object()) return Status::failure(metadata.string() + ": not JSON (Gradescope's submission_metadata.json)");
+  const std::string created = field(doc, "created_at"), due = field(doc.value("assignment", detail::Json()), "due_date");
+  const std::optional<double> at = isoSeconds(created), by = isoSeconds(due);
+  if (!at) return Status::failure(metadata.string() + ": created_at: not an ISO 8601 time with its offset: '" + created + "'");
+  if (!by) return Status::failure(metadata.string() + ": assignment.due_date: not an ISO 8601 time with its offset: '" + due + "'");
+  return (*at - *by) / 86400.0;
 }
 
 }  // namespace frob::course

@@ -50,7 +50,16 @@ class RubricReader : worlds::TomlReader {
 
  private:
   bool readRubric(const toml::table& root) {
-    if (!onlyKeys(root, "", {"title", "reference", "starter", "dt", "seconds", "check"})) return false;
+    if (!onlyKeys(root, "", {"title", "reference", "starter", "dt", "seconds", "late", "check"})) return false;
+    if (const toml::node* late = root.get("late")) {
+      const toml::table* t = table(*late, "late");
+      if (t == nullptr || !onlyKeys(*t, "late.", {"per_day", "most"}) || !need(*t, "per_day", "late.", rubric_.latePerDay) ||
+          !optNumber(*t, "most", "late.most", rubric_.lateMost)) {
+        return false;
+      }
+      if (!(rubric_.latePerDay <= 1)) return fail(*t->get("per_day"), "late.per_day", "must lie in (0, 1]: a share of the score");
+      if (!(rubric_.lateMost > 0 && rubric_.lateMost <= 1)) return fail(*t->get("most"), "late.most", "must lie in (0, 1]: a share of the score");
+    }
     double seconds = 60.0;
     std::string reference, starter;
     if (!optString(root, "title", "title", rubric_.title) || !optNumber(root, "dt", "dt", rubric_.dt) ||

@@ -26,12 +26,13 @@ namespace frob::course {
 /// How to grade.
 struct GradeDef {
   Rubric rubric;
-  std::string assignment;      ///< its name, for reports
-  std::string secret;          ///< the instructor's secret for hidden seeds; "" when none is given
-  bool visibleOnly = false;    ///< grade only the visible checks (a student checking locally)
-  HostDef host;                ///< the controller host's limits
-  std::filesystem::path logs;  ///< a folder for each run's wheel log (for --replay); empty: none
-  std::string student;         ///< who submitted, where known, named in the logs; "" when not
+  std::string assignment;          ///< its name, for reports
+  std::string secret;              ///< the instructor's secret for hidden seeds; "" when none is given
+  bool visibleOnly = false;        ///< grade only the visible checks (a student checking locally)
+  HostDef host;                    ///< the controller host's limits
+  std::filesystem::path logs;      ///< a folder for each run's wheel log (for --replay); empty: none
+  std::string student;             ///< who submitted, where known, named in the logs; "" when not
+  std::optional<double> daysLate;  ///< how long after its due date it was submitted, days (submissionLateness()); unset: not known
   CompilerSetup compiler = compilerSetup();
   std::optional<KeptWorlds> kept;  ///< the secret's hidden worlds to grade in; unset: those of fairHiddenWorlds()
   /// Runs allowed at once, shared by the grades of a class (gradeAll sets it): a run's processes
@@ -92,6 +93,7 @@ struct Grade {
   std::string compileError;    ///< the compiler's complaint when it did not compile (then every check scores 0)
   std::string graderFailure;   ///< why frob or the machine could not grade it (kGraderFailure): then it has no grade at all, not 0
   std::vector<CheckGrade> checks;
+  double latePenalty = 0.0;        ///< points taken for lateness (Rubric::latePerDay), already out of score()
   std::vector<std::string> notes;  ///< e.g. output that was cut
   std::string sandboxMissing;      ///< the sandbox's layers this machine could not apply, one per line; for the instructor only
   double wallSeconds = 0.0;        ///< how long grading took (with the runs' and startedAt, the only fields that differ between two gradings)
@@ -99,6 +101,10 @@ struct Grade {
   [[nodiscard]] double score() const;
   [[nodiscard]] double maxScore() const;
 };
+
+/// How many days after its due date a submission came, from Gradescope's submission_metadata.json
+/// (`created_at` against `assignment.due_date`, ISO 8601 with offsets); negative when early.
+[[nodiscard]] Result<double> submissionLateness(const std::filesystem::path& metadata);
 
 /// Compiles and grades `submission`, a .cpp file or a folder of several (see compileSubmission()). Never fails on the submission's account: a compile
 /// error, a crash or a hang scores 0 in the checks it touched, with the reason. A failure of frob or the machine (a host that cannot

@@ -99,6 +99,10 @@ struct Rubric {
   std::filesystem::path starter;    ///< the starter handed out, which no hidden world may let pass; empty: none
   double dt = 0.01;                 ///< the simulation step of every run
   std::vector<Check> checks;
+  /// Lateness (`late = { per_day = 0.1, most = 0.5 }`): the share of the score taken for each day
+  /// or part of one a submission comes after its due date, at most `most`; per_day 0: none.
+  double latePerDay = 0.0;
+  double lateMost = 1.0;
   /// Total points.
   [[nodiscard]] double points() const;
   /// True when some check draws seeds or worlds from the instructor's secret.
