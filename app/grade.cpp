@@ -258,7 +258,7 @@ int gradeCommand(const GradeArgs& a) {
                        .logs = a.logs,
                        .student = a.student};
   if (def.assignment == "rubric.toml") def.assignment = fs::path(a.assignment).parent_path().filename().string();
-  if (!a.submissionMetadata.empty()) {
+  if (!a.submissionMetadata.empty() && def.rubric.latePerDay > 0) {  // read only where lateness costs points
     Result<double> late = course::submissionLateness(a.submissionMetadata);
     if (!late) return fail(late.error(), 2);
     def.daysLate = late.value();

@@ -271,6 +271,9 @@ TEST(GradeCli, ALateSubmissionLosesItsShareAndSaysSo) {
   EXPECT_EQ(broken.status, 2);
   EXPECT_NE(broken.err.find("bad.json: created_at: not an ISO 8601 time with its offset: 'yesterday'"), std::string::npos) << broken.err;
   EXPECT_FALSE(fs::exists(dir / "x.json"));
+  // Without a late penalty in the rubric, the metadata is not read at all.
+  std::ofstream(dir / "forward" / "rubric.toml") << kRubric;
+  EXPECT_EQ(runFrob(dir, {"grade", "forward", "fast.cpp", "--results", "x.json", "--submission-metadata", "bad.json"}).status, 0);
 }
 
 TEST(GradeCli, AReplayFromTheCommandLineGivesTheVerdictAndHashAgain) {
