@@ -9,7 +9,7 @@ namespace frob::app {
 struct GradeArgs {
   std::string assignment, submission;
   std::string results, prairielearn, junit, report, videos, logs, gradebook, secret, shard, replay, gradescopeZip, student;
-  std::string out;  // the class folder: a gradebook row and a folder per student, and the class's summary
+  std::string out;                 // the class folder: a gradebook row and a folder per student, and the class's summary
   std::string submissionMetadata;  // Gradescope's submission_metadata.json: how late it came
   std::vector<std::string> merge;
   bool visibleOnly = false;
