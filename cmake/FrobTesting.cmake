@@ -5,7 +5,8 @@ include(GoogleTest)
 
 # frob_add_test(name SOURCES a.cpp ... LIBS lib ... [TIMEOUT seconds] [LABELS label ...]): a GoogleTest
 # executable whose tests ctest discovers one by one, each with a timeout so that a hang fails instead
-# of stalling CI.
+# of stalling CI. Each label L gathers its executables in a target tests_L, so that a preset can build
+# only what the labels it runs need.
 function(frob_add_test name)
   cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
   if(NOT ARG_TIMEOUT)
@@ -14,6 +15,12 @@ function(frob_add_test name)
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_LIBS} frob::build_options GTest::gtest GTest::gmock GTest::gtest_main)
   gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT ${ARG_TIMEOUT} LABELS "${ARG_LABELS}")
+  foreach(label IN LISTS ARG_LABELS)
+    if(NOT TARGET tests_${label})
+      add_custom_target(tests_${label})
+    endif()
+    add_dependencies(tests_${label} ${name})
+  endforeach()
 endfunction()
 
 # frob_add_benchmark(name SOURCES ... LIBS ...): a Google Benchmark executable. ctest runs it once
