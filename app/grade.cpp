@@ -309,6 +309,7 @@ int gradeCommand(const GradeArgs& a) {
     if (!g.graderFailure.empty()) return notGraded(g);
     warnOfMissingLayers({g});
     std::cout << course::scoreTable(g);
+    if (a.practice > 0) std::cout << "\n" << course::practiceTable(g);
     if (Status s = writeOutputs(a, def, g); !s) return fail(s.error());
     return 0;
   }

@@ -138,16 +138,26 @@ std::string formatVerdicts(const std::string& assignment, const std::vector<cour
     char judged[48] = "";
     if (v.seconds + 1e-9 < ran) std::snprintf(judged, sizeof judged, " (on its first %.1f s)", v.seconds);
     out += std::string(judged) + "\n";
+    if (v.margin) out += "        " + v.margin->said(v.passed) + "\n";
   }
   return out;
 }
 
-// The summary's JSON with "assignment": {"name", "checks": [{check, criterion, seconds, passed, reason}]}.
+// The summary's JSON with "assignment": {"name", "checks": [{check, criterion, seconds, passed, reason, margin}]}.
 std::string withVerdicts(const std::string& json, const std::string& assignment, const std::vector<course::CriterionVerdict>& verdicts) {
   nlohmann::ordered_json doc = nlohmann::ordered_json::parse(json);
   nlohmann::ordered_json checks = nlohmann::ordered_json::array();
   for (const course::CriterionVerdict& v : verdicts) {
-    checks.push_back({{"check", v.check}, {"criterion", v.criterion}, {"seconds", v.seconds}, {"passed", v.passed}, {"reason", v.reason}});
+    checks.push_back({{"check", v.check},
+                      {"criterion", v.criterion},
+                      {"seconds", v.seconds},
+                      {"passed", v.passed},
+                      {"reason", v.reason},
+                      {"margin", v.margin ? nlohmann::ordered_json{{"value", v.margin->value},
+                                                                   {"unit", v.margin->unit},
+                                                                   {"text", v.margin->text},
+                                                                   {"at", v.margin->at ? nlohmann::ordered_json(*v.margin->at) : nullptr}}
+                                          : nullptr}});
   }
   doc["assignment"] = {{"name", assignment}, {"checks", checks}};
   return doc.dump(1) + "\n";

@@ -124,14 +124,24 @@ clearance = { min = 0.1 }
   ASSERT_EQ(output.find(prefix), 0u) << output;
   const std::string reason = output.substr(prefix.size(), output.find('\n') - prefix.size());
   EXPECT_NE(reason.find("never came within 0.40 m of goal"), std::string::npos) << reason;
+  // How near the edge, as the grade says it: the run says the same.
+  const std::string marginsPrefix = "\n  margins: goal ";
+  const std::size_t m = output.find(marginsPrefix);
+  ASSERT_NE(m, std::string::npos) << output;
+  const std::string margin = output.substr(m + marginsPrefix.size(), output.find('\n', m + 1) - m - marginsPrefix.size());
+  EXPECT_EQ(margin, "failed by 0.24 m (closest 0.64 m to goal; 0.40 m needed)");
 
   const FrobResult run = runFrob(dir, {"run", "fast.cpp", "--world", "forward/room.toml", "--seed", "1", "--assignment", "forward", "--quiet"});
   ASSERT_EQ(run.status, 0) << run.err;
   EXPECT_NE(run.out.find("Against forward's checks (judged as frob grade judges a run; a grade runs other worlds and seeds too):\n"
                          "  PASS  goes forward: goal\n"
-                         "  PASS  no bumps: collisions\n"
+                         "        passed by "),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("  PASS  no bumps: collisions\n"
+                         "        passed by 0 collisions (no collision; at most 0)\n"
                          "  FAIL  quickly: goal: " +
-                         reason + " (on its first 1.0 s)\n"),
+                         reason + " (on its first 1.0 s)\n        " + margin + "\n"),
             std::string::npos)
       << run.out;
   EXPECT_NE(run.out.find("3.00 s simulated"), std::string::npos) << run.out;
@@ -140,7 +150,13 @@ clearance = { min = 0.1 }
   ASSERT_EQ(json.status, 0) << json.err;
   const nlohmann::json checks = nlohmann::json::parse(json.out)["assignment"]["checks"];
   ASSERT_EQ(checks.size(), 3u) << json.out;  // "elsewhere" runs in another world
-  EXPECT_EQ(checks[2], (nlohmann::json{{"check", "quickly"}, {"criterion", "goal"}, {"seconds", 1.0}, {"passed", false}, {"reason", reason}}));
+  nlohmann::json quickly = checks[2];
+  EXPECT_EQ(quickly["margin"]["text"], "closest 0.64 m to goal; 0.40 m needed");
+  EXPECT_EQ(quickly["margin"]["unit"], "m");
+  EXPECT_NEAR(quickly["margin"]["value"].get<double>(), -0.24, 0.005) << "as its text says, to the centimetre";
+  EXPECT_EQ(quickly["margin"]["at"], 1.0);
+  quickly.erase("margin");
+  EXPECT_EQ(quickly, (nlohmann::json{{"check", "quickly"}, {"criterion", "goal"}, {"seconds", 1.0}, {"passed", false}, {"reason", reason}}));
   EXPECT_EQ(checks[0]["passed"], true);
   // In a world of the student's own, every check is judged.
   fs::copy_file(dir / "forward" / "room.toml", dir / "mine.toml");

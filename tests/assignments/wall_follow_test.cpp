@@ -78,7 +78,7 @@ TEST(WallFollowAssignment, SolutionGetsFullMarksOnEveryCheck) {
   course::Grade g = gradeFile(kAssignment, assignmentFile(kAssignment, "solution.cpp"));
   EXPECT_EQ(scores(g), (Scores{{kRound, 4}, {kKeeps, 4}, {kUnseenRound, 2}, {kUnseenKeeps, 2}}));
   EXPECT_EQ(g.score(), g.maxScore());
-  for (const course::CheckGrade& c : g.checks) EXPECT_EQ(c.output(), "") << c.name;
+  for (const course::CheckGrade& c : g.checks) EXPECT_EQ(reasons(g, c.name), "") << c.name;
 }
 
 // The paper's rerror used the simplest way, turning in proportion to it: once it turns towards the

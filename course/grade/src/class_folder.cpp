@@ -190,12 +190,23 @@ Status writeGradeJson(const Grade& g, const std::string& student, const std::vec
     Json runs = Json::array();
     for (std::size_t k = 0; k < c.runs.size(); ++k) {
       const RunGrade& r = c.runs[k];
+      Json margins = Json::array();
+      for (const CriterionVerdict& v : r.criteria) {
+        if (!v.margin) continue;
+        margins.push_back({{"criterion", v.criterion},
+                           {"passed", v.passed},
+                           {"value", v.margin->value},
+                           {"unit", v.margin->unit},
+                           {"text", v.margin->text},
+                           {"at", v.margin->at ? Json(*v.margin->at) : Json(nullptr)}});
+      }
       runs.push_back({{"place", c.place(k)},
                       {"world", r.world},
                       {"seed", r.seed},
                       {"passed", r.passed},
                       {"reason", r.reason},
                       {"hints", r.hints},
+                      {"margins", margins},
                       {"seconds", r.wallSeconds},
                       {"trajectory", format("%016" PRIx64, r.trajectoryHash)}});
     }

@@ -73,7 +73,8 @@ Ran drive(worlds::Run& run, const worlds::WorldDef& world, std::int64_t steps) {
 
 std::int64_t stepsFor(double seconds, double dt) { return static_cast<std::int64_t>(std::floor(seconds / dt + 0.5)); }
 
-// A run passes when no controller failed and every criterion holds; else the first reason.
+// A run passes when no controller failed and every criterion holds; else the first reason. Every
+// criterion is judged, for its margin.
 void judgeRun(const Check& check, const RunRecord& record, RunGrade& out) {
   for (const Track& t : record.robots) {
     if (!t.failure.empty()) {
@@ -84,13 +85,18 @@ void judgeRun(const Check& check, const RunRecord& record, RunGrade& out) {
   }
   for (const Criterion& c : check.criteria) {
     Verdict v = judge(c, record);
-    if (!v.passed) {
-      out.reason = std::move(v.reason);
+    if (!v.passed && out.reason.empty()) {
+      out.reason = v.reason;
       out.kind = "it failed the rubric's \"" + std::string(toString(c.kind)) + "\" criterion";
-      return;
     }
+    out.criteria.push_back({.check = check.name,
+                            .criterion = std::string(toString(c.kind)),
+                            .seconds = check.seconds,
+                            .passed = v.passed,
+                            .reason = std::move(v.reason),
+                            .margin = std::move(v.margin)});
   }
-  out.passed = true;
+  out.passed = out.reason.empty();
 }
 
 // Wheels logged by a grading, played back in order; after the last, a stop.
@@ -162,11 +168,22 @@ std::string CheckGrade::reasonShown(std::size_t k) const {
 std::string CheckGrade::output() const {
   std::string out;
   for (std::size_t k = 0; k < runs.size(); ++k) {
-    if (runs[k].passed) continue;
-    out += "in " + place(k) + ": " + reasonShown(k) + "\n";
-    for (const std::string& h : hintsShown(k)) out += "  hint: " + h + "\n";
+    if (!runs[k].passed) {
+      out += "in " + place(k) + ": " + reasonShown(k) + "\n";
+      for (const std::string& h : hintsShown(k)) out += "  hint: " + h + "\n";
+    }
+    if (const std::string m = marginsShown(k); !m.empty()) out += (runs[k].passed ? "in " + place(k) + ": margins: " : "  margins: ") + m + "\n";
   }
   return out;
+}
+
+std::string CheckGrade::marginsShown(std::size_t k) const {
+  std::string shown;
+  if (visibility != Visibility::Visible) return shown;
+  for (const CriterionVerdict& v : runs.at(k).criteria) {
+    if (v.margin) shown += (shown.empty() ? "" : "; ") + v.criterion + " " + v.margin->said(v.passed);
+  }
+  return shown;
 }
 
 std::vector<std::string> CheckGrade::hintsShown(std::size_t k) const {
@@ -360,7 +377,8 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
       const Result<worlds::WorldDef>& world = known->second;
       for (std::uint64_t seed : seeds) {
         if (!g.graderFailure.empty()) break;
-        RunGrade& r = cg.runs.emplace_back(RunGrade{.world = w.name, .seed = seed});
+        RunGrade& r = cg.runs.emplace_back(RunGrade{
+            .world = w.name, .seed = seed, .generator = w.generated ? format("%s --seed %" PRIu64, toString(*w.generated), w.worldSeed) : ""});
         if (!compiled) {
           r.reason = r.kind = "the submission did not compile";
         } else if (!world) {

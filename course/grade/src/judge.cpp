@@ -135,20 +135,40 @@ class Judge {
  public:
   Judge(const Criterion& c, const RunRecord& run) : c_(c), run_(run) {}
 
+  // The first robot that fails gives the reason and the margin; when all pass, the robot nearest the edge.
   Verdict operator()() {
     if (c_.kind == Kind::RobotsApart) return robotsApart();
+    std::optional<Margin> least;
     for (const Track& t : run_.robots) {
       if (t.path.empty()) continue;
+      margin_.reset();
       std::string why = robot(t);
-      if (!why.empty()) return {false, (run_.robots.size() > 1 ? t.name + " " : "") + why};
+      const std::string who = run_.robots.size() > 1 ? t.name + " " : "";
+      if (margin_) margin_->text = who + margin_->text;
+      if (!why.empty()) return {false, who + why, margin_};
+      if (margin_ && (!least || margin_->value < least->value)) least = margin_;
     }
-    return {true, ""};
+    return {true, "", least};
   }
 
  private:
   double timeOf(std::size_t step) const { return static_cast<double>(step) * run_.dt; }
   bool late(std::size_t step) const { return c_.seconds > 0 && timeOf(step) > c_.seconds + 1e-9; }
   std::string allowed() const { return "allowed " + format("%g s", c_.seconds); }
+  // Notes the robot's margin: `value` in `unit`, measured as `text`, decided at `when`.
+  void measured(double value, const char* unit, std::string text, std::optional<double> when = std::nullopt) {
+    margin_ = Margin{.value = value, .unit = unit, .text = std::move(text), .at = when};
+  }
+  // The margin of reaching `name`, first within reach at step `k`, or never (closest at step `near`).
+  void reachMargin(const Track& t, const Point2& p, const std::string& name, std::optional<std::size_t> k, std::size_t from = 0) {
+    if (k && c_.seconds > 0) {
+      measured(c_.seconds - timeOf(*k), "s", format("reached %s at %.1f s of %g s", name.c_str(), timeOf(*k), c_.seconds), timeOf(*k));
+      return;
+    }
+    const std::size_t near = closestTo(t.path, p, from);
+    const double d = (t.path[near] - p).norm();
+    measured(c_.distance - d, "m", format("closest %.2f m to %s; %.2f m needed", d, name.c_str(), c_.distance), timeOf(near));
+  }
 
   // Why robot `t` fails the criterion; "" when it meets it.
   std::string robot(const Track& t) {
@@ -228,12 +248,26 @@ class Judge {
         if (timeOf(k) > *e.at - c_.within + 1e-9 && bodySpeed(t, k) < c_.speed) stood += run_.dt;
       }
       if (stood > kStandingBefore + 1e-9) {
+        measured(kStandingBefore - stood, "s", format("stood still %.2f s before %s; at most %.2f s", stood, e.what.c_str(), kStandingBefore), *e.at);
         return format("stood still for %.1f s of the %g s before %s (at %s); it must be moving until then", stood, c_.within, e.what.c_str(),
                       secondsText(*e.at).c_str());
       }
     }
     const std::size_t after = static_cast<std::size_t>(std::ceil((*e.at + c_.within) / run_.dt - 1e-9));
     const std::size_t from = follows ? std::min(after, n - 1) : n - 1;
+    if (follows) {
+      // The margin: how long before the deadline it last moved.
+      std::size_t last = 0;
+      for (std::size_t k = 1; k < n; ++k) {
+        if (timeOf(k) > *e.at + 1e-9 && bodySpeed(t, k) >= c_.speed) last = k;
+      }
+      const double moving = last == 0 ? 0.0 : timeOf(last) - *e.at;
+      measured(c_.within - moving, "s", format("moved until %.1f s after %s; %g s allowed", moving, e.what.c_str(), c_.within),
+               last == 0 ? *e.at : timeOf(last));
+    } else {
+      const double speed = n > 1 ? bodySpeed(t, n - 1) : 0.0;
+      measured(c_.speed - speed, "m/s", format("moving at %.2f m/s at the end; below %.2f m/s needed", speed, c_.speed), timeOf(n - 1));
+    }
     for (std::size_t k = std::max<std::size_t>(from, 1); k < n; ++k) {
       const double speed = bodySpeed(t, k);
       if (speed < c_.speed) continue;
@@ -253,10 +287,13 @@ class Judge {
     const Event e = event(t);
     if (!e.at) return "its task returned " + c_.value + ", but " + e.never;
     if (t.returnedAt + run_.dt < *e.at - 1e-9) {  // a step's grace: an event is seen in the frame after it
+      measured(t.returnedAt - *e.at, "s", format("returned %.1f s before %s", *e.at - t.returnedAt, e.what.c_str()), t.returnedAt);
       return "its task returned " + c_.value + " at " + secondsText(t.returnedAt) + ", before " + e.what + " (at " + secondsText(*e.at) + ")";
     }
     if (c_.afterKey != 0 || c_.afterContact || c_.afterDistance > 0) {
       const double latency = c_.within > 0 ? c_.within : kReportLatency;
+      measured(latency - (t.returnedAt - *e.at), "s", format("returned %.1f s after %s; at most %g s", t.returnedAt - *e.at, e.what.c_str(), latency),
+               t.returnedAt);
       if (t.returnedAt > *e.at + latency + 1e-9) {
         return "its task returned " + c_.value + " at " + secondsText(t.returnedAt) + ", " + secondsText(t.returnedAt - *e.at) + " after " + e.what +
                format("; at most %g s later allowed", latency);
@@ -270,6 +307,7 @@ class Judge {
     const std::optional<Point2> g = pointNamed(run_, name);
     if (!g) return "the world has no point '" + name + "' to reach";
     const std::optional<std::size_t> k = firstWithin(t.path, *g, c_.distance);
+    reachMargin(t, *g, name, k);
     if (!k) {
       const std::size_t near = closestTo(t.path, *g);
       return format("never came within %.2f m of %s (closest %.2f m, at %s)", c_.distance, name.c_str(), (t.path[near] - *g).norm(),
@@ -281,25 +319,32 @@ class Judge {
   std::string waypoints(const Track& t) {
     std::size_t from = 0;
     std::string reached;
+    std::optional<Margin> least;  // with a time bound the last waypoint's, else the one passed nearest the edge
     for (const std::string& given : c_.points) {
       const std::string name = resolved(given, t);
       const std::optional<Point2> p = pointNamed(run_, name);
-      if (!p) return "the world has no point '" + name + "' to visit";
+      if (!p) return margin_.reset(), "the world has no point '" + name + "' to visit";
       const std::optional<std::size_t> k = firstWithin(t.path, *p, c_.distance, from);
+      reachMargin(t, *p, name, k, from);
       if (!k) {
         const std::size_t near = closestTo(t.path, *p, from);
         return reached + format("never came within %.2f m of %s%s (closest %.2f m, at %s)", c_.distance, name.c_str(),
                                 reached.empty() ? "" : " after that", (t.path[near] - *p).norm(), secondsText(timeOf(near)).c_str());
       }
       if (late(*k)) return reached + "reached " + name + " at " + secondsText(timeOf(*k)) + "; " + allowed();
+      if (c_.seconds > 0 || !least || margin_->value < least->value) least = margin_;
       reached += "reached " + name + " at " + secondsText(timeOf(*k)) + ", ";
       from = *k;
     }
+    margin_ = least;
     return "";
   }
 
   std::string collisions(const Track& t) {
     const std::vector<std::pair<double, Point2>> hits = collisionsOf(t, run_.dt);
+    const auto many = [](std::size_t n) { return n == 0 ? std::string("no collision") : format("%zu collision%s", n, n == 1 ? "" : "s"); };
+    measured(c_.count - static_cast<double>(hits.size()), "collisions", many(hits.size()) + format("; at most %d", c_.count),
+             hits.size() > static_cast<std::size_t>(c_.count) ? std::optional(hits[static_cast<std::size_t>(c_.count)].first) : std::nullopt);
     if (static_cast<int>(hits.size()) <= c_.count) return c_.seconds > 0 ? touchingTime(t) : "";
     const auto& [when, where] = hits[static_cast<std::size_t>(c_.count)];
     const std::string what = obstacleAt(where, t.radius + 0.05).value_or("another robot");
@@ -317,6 +362,7 @@ class Judge {
       if (longest == nullptr || span.second - span.first > longest->second - longest->first) longest = &span;
     }
     if (total <= c_.seconds + 1e-9) return "";
+    measured(c_.seconds - total, "s", format("pressed its bumpers %.1f s in all; at most %g s", total, c_.seconds), longest->first);
     return format("pressed its bumpers for %s in all, the longest touch from %s to %s; at most %s allowed", secondsText(total).c_str(),
                   secondsText(longest->first).c_str(), secondsText(longest->second).c_str(), secondsText(c_.seconds).c_str());
   }
@@ -344,6 +390,14 @@ class Judge {
 
   std::string clearance(const Track& t) {
     const worlds::WallIndex walls(run_.walls, run_.size, t.radius + c_.distance + 1.0);
+    std::size_t nearest = 0;
+    double least = INFINITY;
+    for (std::size_t k = 0; k < t.path.size(); ++k) {
+      const double gap = walls.distance(t.path[k]) - t.radius;
+      if (gap < least) least = gap, nearest = k;
+    }
+    measured(least - c_.distance, "m", format("came within %.2f m of a wall; at least %.2f m required", std::max(least, 0.0), c_.distance),
+             timeOf(nearest));
     for (std::size_t k = 0; k < t.path.size(); ++k) {
       const double gap = walls.distance(t.path[k]) - t.radius;
       if (gap < c_.distance - 1e-9) {
@@ -380,8 +434,12 @@ class Judge {
       if (off > worstOff) worstOff = off, worst = k;
     }
     const double share = counted == 0 ? 0.0 : static_cast<double>(within) / static_cast<double>(counted);
-    if (share >= c_.fraction) return "";
     const std::string wall = c_.side.empty() ? "the wall" : "the wall on its " + c_.side;
+    measured(100 * (share - c_.fraction), "points",
+             format("kept %.2f ± %.2f m from %s %.0f%% of the time; %.0f%% required", c_.distance, c_.tolerance, wall.c_str(), 100 * share,
+                    100 * c_.fraction),
+             timeOf(worst));
+    if (share >= c_.fraction) return "";
     return format("kept %.2f ± %.2f m from %s for %.0f%% of the time after %s; %.0f%% required (furthest off: %.2f m at %s at %s)", c_.distance,
                   c_.tolerance, wall.c_str(), 100 * share, secondsText(c_.after).c_str(), 100 * c_.fraction, worstOff,
                   secondsText(timeOf(worst)).c_str(), at(t.path[worst]).c_str());
@@ -398,6 +456,8 @@ class Judge {
       seen += reachable[c] && visited[c];
     }
     const double share = free == 0 ? 0.0 : static_cast<double>(seen) / static_cast<double>(free);
+    measured(100 * (share - c_.fraction), "points",
+             format("covered %.0f%% of the floor it could reach; %.0f%% required", 100 * share, 100 * c_.fraction));
     if (share >= c_.fraction) return "";
     return format("covered %.0f%% of the floor it could reach (%zu of %zu cells of %.2f m); %.0f%% required", 100 * share, seen, free, c_.cell,
                   100 * c_.fraction);
@@ -414,6 +474,8 @@ class Judge {
     const double direct = (*g - t.path.front()).norm();
     if (c_.kind == Kind::PathRatio) {
       const double shortest = worlds::FreeGrid(run_.walls, run_.size, t.radius, 0.05).shortestPath(t.path.front(), *g);
+      measured(c_.ratio * shortest - travelled, "m", format("drove %.2f m to %s; at most %.2f m", travelled, name.c_str(), c_.ratio * shortest),
+               timeOf(*k));
       if (travelled <= c_.ratio * shortest + 1e-9) return "";
       return format("drove %.2f m to %s; the shortest path is %.2f m and at most %.2f× that (%.2f m) is allowed", travelled, name.c_str(), shortest,
                     c_.ratio, c_.ratio * shortest);
@@ -428,33 +490,66 @@ class Judge {
       if (near) perimeters += perimeter(run_.walls[w]), ++met;
     }
     const double bound = direct + 1.5 * perimeters;
+    measured(bound - travelled, "m", format("drove %.2f m to %s; the BUG1 bound is %.2f m", travelled, name.c_str(), bound), timeOf(*k));
     if (travelled <= bound + 1e-9) return "";
     return format("drove %.2f m to %s; the BUG1 bound is %.2f m (%.2f m direct + 1.5 × %.2f m of perimeter of the %zu obstacles met)", travelled,
                   name.c_str(), bound, direct, perimeters, met);
   }
 
+  // Box2D lets touching bodies overlap by up to a centimetre: closer than this over the distance required is too close.
+  static constexpr double kOverlap = 0.01;
+
   Verdict robotsApart() {
+    std::optional<Margin> least;
     for (std::size_t i = 0; i < run_.robots.size(); ++i) {
       for (std::size_t j = i + 1; j < run_.robots.size(); ++j) {
         const Track &a = run_.robots[i], &b = run_.robots[j];
         for (std::size_t k = 0; k < std::min(a.path.size(), b.path.size()); ++k) {
           const double gap = (a.path[k] - b.path[k]).norm() - a.radius - b.radius;
-          if (gap < c_.distance + 0.01) {  // Box2D lets touching bodies overlap by up to a centimetre
-            return {false, format("%s and %s %s at %s at %s", a.name.c_str(), b.name.c_str(),
-                                  c_.distance > 0 ? format("came within %.2f m of each other", std::max(gap, 0.0)).c_str() : "touched",
-                                  secondsText(timeOf(k)).c_str(), at((a.path[k] + b.path[k]) / 2).c_str())};
+          if (!least || gap - c_.distance - kOverlap < least->value) {
+            least = Margin{.value = gap - c_.distance - kOverlap,
+                           .unit = "m",
+                           .text = format("%s and %s came within %.2f m of each other; %.2f m required", a.name.c_str(), b.name.c_str(),
+                                          std::max(gap, 0.0), c_.distance + kOverlap),
+                           .at = timeOf(k)};
           }
         }
       }
     }
-    return {true, ""};
+    for (std::size_t i = 0; i < run_.robots.size(); ++i) {
+      for (std::size_t j = i + 1; j < run_.robots.size(); ++j) {
+        const Track &a = run_.robots[i], &b = run_.robots[j];
+        for (std::size_t k = 0; k < std::min(a.path.size(), b.path.size()); ++k) {
+          const double gap = (a.path[k] - b.path[k]).norm() - a.radius - b.radius;
+          if (gap < c_.distance + kOverlap) {
+            return {false,
+                    format("%s and %s %s at %s at %s", a.name.c_str(), b.name.c_str(),
+                           c_.distance > 0 ? format("came within %.2f m of each other", std::max(gap, 0.0)).c_str() : "touched",
+                           secondsText(timeOf(k)).c_str(), at((a.path[k] + b.path[k]) / 2).c_str()),
+                    least};
+          }
+        }
+      }
+    }
+    return {true, "", least};
   }
 
   const Criterion& c_;
   const RunRecord& run_;
+  std::optional<Margin> margin_;  // the robot being judged's
 };
 
 }  // namespace
+
+std::string Margin::amount() const {
+  const double by = std::abs(value);
+  if (unit == "s") return format("%.1f s", by);
+  if (unit == "points") return format("%.0f percentage point%s", by, std::lround(by) == 1 ? "" : "s");
+  if (unit == "collisions") return format("%.0f collision%s", by, std::lround(by) == 1 ? "" : "s");
+  return format("%.2f %s", by, unit.c_str());
+}
+
+std::string Margin::said(bool passed) const { return std::string(passed ? "passed by " : "failed by ") + amount() + " (" + text + ")"; }
 
 Verdict judge(const Criterion& criterion, const RunRecord& run) { return Judge(criterion, run)(); }
 
@@ -482,8 +577,12 @@ std::vector<CriterionVerdict> judgeChecks(const std::vector<Check>& checks, cons
     const RunRecord judged = record.upTo(seconds);
     for (const Criterion& c : check.criteria) {
       Verdict v = failure.empty() ? judge(c, judged) : Verdict{.reason = failure};
-      verdicts.push_back(
-          {.check = check.name, .criterion = std::string(toString(c.kind)), .seconds = seconds, .passed = v.passed, .reason = std::move(v.reason)});
+      verdicts.push_back({.check = check.name,
+                          .criterion = std::string(toString(c.kind)),
+                          .seconds = seconds,
+                          .passed = v.passed,
+                          .reason = std::move(v.reason),
+                          .margin = std::move(v.margin)});
     }
   }
   return verdicts;

@@ -56,6 +56,52 @@ TEST(CheckGrade, AHiddenRunSaysOnlyWhatFailed) {
             "  hint: nomad's task 'sonar 1.86' ran from 0.0 s to the end of the run\n");
 }
 
+// A visible check says every run's margins; a hidden one none (a number the controller could choose).
+TEST(CheckGrade, AVisibleRunSaysItsMarginsAHiddenOneNone) {
+  RunGrade near = pass("maze", 2);
+  near.criteria = {{.criterion = "goal", .passed = true, .margin = Margin{.value = 2.4, .unit = "s", .text = "reached goal at 7.6 s of 10 s"}},
+                   {.criterion = "collisions", .passed = true, .margin = Margin{.value = 0, .unit = "collisions", .text = "1 collision; at most 1"}}};
+  RunGrade far = fail("maze", 3, "never came within 0.30 m of goal (closest 0.42 m, at 9.0 s)");
+  far.criteria = {
+      {.criterion = "goal", .passed = false, .margin = Margin{.value = -0.12, .unit = "m", .text = "closest 0.42 m to goal; 0.30 m needed"}},
+      {.criterion = "collisions", .passed = true}};
+  CheckGrade c{.name = "reaches the goal", .points = 2, .score = 1, .runs = {near, far}};
+  EXPECT_EQ(
+      c.output(),
+      "in maze, seed 2: margins: goal passed by 2.4 s (reached goal at 7.6 s of 10 s); collisions passed by 0 collisions (1 collision; at most 1)\n"
+      "in maze, seed 3: never came within 0.30 m of goal (closest 0.42 m, at 9.0 s)\n"
+      "  margins: goal failed by 0.12 m (closest 0.42 m to goal; 0.30 m needed)\n");
+  c.visibility = Visibility::Hidden;
+  EXPECT_EQ(c.marginsShown(0), "");
+  EXPECT_EQ(c.output(), "in hidden world 2: never came within 0.30 m of goal (closest 0.42 m, at 9.0 s)" + kNoDetails + "\n");
+}
+
+// frob grade --practice: a row per world, each criterion's margin, and how to watch a failed world.
+TEST(PracticeTable, ARowPerWorldWithMarginsAndHowToWatchAFailure) {
+  Grade g;
+  g.assignment = "go_to_goal";
+  g.submission = "mine.cpp";
+  RunGrade good{.world = "generated lounge, seed 42", .seed = 7, .generator = "lounge --seed 42", .passed = true};
+  good.criteria = {{.criterion = "goal", .passed = true, .margin = Margin{.value = 2.4, .unit = "s"}},
+                   {.criterion = "collisions", .passed = true, .margin = Margin{.value = 1, .unit = "collisions"}}};
+  RunGrade bad{.world = "generated lounge, seed 9", .seed = 7, .generator = "lounge --seed 9", .passed = false, .reason = "x"};
+  bad.criteria = {{.criterion = "goal", .passed = false, .margin = Margin{.value = -0.12, .unit = "m"}},
+                  {.criterion = "collisions", .passed = true, .margin = Margin{.value = 0, .unit = "collisions"}}};
+  RunGrade crashed{
+      .world = "generated lounge, seed 5", .seed = 7, .generator = "lounge --seed 5", .passed = false, .reason = "the controller failed: \x1b[2J"};
+  g.checks = {{.name = "practice", .points = 1, .score = 1.0 / 3, .runs = {good, bad, crashed}}};
+  EXPECT_EQ(practiceTable(g),
+            "Practice: 1 of 3 runs passed; margins are by how much each criterion was met (+) or missed (-)\n"
+            "World                              Result  goal     collisions\n"
+            "generated lounge, seed 42, seed 7  PASS    +2.4 s   +1 collision\n"
+            "generated lounge, seed 9, seed 7   FAIL    -0.12 m  +0 collisions\n"
+            "    to watch it: frob world generate lounge --seed 9 --out lounge-9.toml && frob run mine.cpp --world lounge-9.toml --seed 7 "
+            "--assignment go_to_goal --html lounge-9.html\n"
+            "generated lounge, seed 5, seed 7   FAIL  the controller failed: \\x1b[2J\n"
+            "    to watch it: frob world generate lounge --seed 5 --out lounge-5.toml && frob run mine.cpp --world lounge-5.toml --seed 7 "
+            "--assignment go_to_goal --html lounge-5.html\n");
+}
+
 TEST(ScoreTable, CompileErrorAndControlCharacters) {
   Grade g = uncompiled("bob.cpp:3:1: error: expected ';'\r\n  int x = 1\n          ^\n");
   g.checks[0].name = "esc\x1b[2J";  // an escape sequence would clear the terminal

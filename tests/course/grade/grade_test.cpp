@@ -112,7 +112,14 @@ TEST_F(Grading, AGoodSubmissionGetsFullMarks) {
   const Grade g = grade(def_, dir_ / "good.cpp");
   EXPECT_EQ(g.compileError, "");
   ASSERT_EQ(g.checks.size(), 4u);
-  for (const CheckGrade& c : g.checks) EXPECT_EQ(c.output(), "") << c.name;
+  // The visible check says how near the edge each run was; the others say nothing (a margin is a
+  // number the controller could choose).
+  EXPECT_EQ(g.checks[0].output(),
+            "in worlds/field.toml, seed 1: margins: goal passed by 10.5 s (reached goal at 9.5 s of 20 s); collisions passed by 0 collisions (no "
+            "collision; at most 0)\n"
+            "in worlds/field.toml, seed 2: margins: goal passed by 10.4 s (reached goal at 9.6 s of 20 s); collisions passed by 0 collisions (no "
+            "collision; at most 0)\n");
+  for (std::size_t k = 1; k < g.checks.size(); ++k) EXPECT_EQ(g.checks[k].output(), "") << g.checks[k].name;
   EXPECT_EQ(g.checks[0].runs.size(), 2u);  // two seeds
   EXPECT_EQ(g.checks[1].runs.size(), 1u);  // one secret seed
   ASSERT_EQ(g.checks[3].runs.size(), 2u);  // two generated worlds, one of them the secret's
@@ -185,7 +192,11 @@ TEST_F(Grading, PartialCreditIsTheShareOfRunsPassed) {
   def_.rubric.checks[0].worlds.push_back({.name = "empty"});  // no goal there: that run fails
   const Grade g = grade(def_, dir_ / "good.cpp");
   EXPECT_DOUBLE_EQ(g.checks[0].score, 2.0);
-  EXPECT_EQ(g.checks[0].output(), "in empty, seed 1: the world has no point 'goal' to reach\n");
+  EXPECT_EQ(g.checks[0].output(),
+            "in worlds/field.toml, seed 1: margins: goal passed by 0.5 s (reached goal at 9.5 s of 10 s); collisions passed by 0 collisions (no "
+            "collision; at most 0)\n"
+            "in empty, seed 1: the world has no point 'goal' to reach\n"
+            "  margins: collisions passed by 0 collisions (no collision; at most 0)\n");
 }
 
 TEST_F(Grading, VisibleOnlyGradesTheVisibleChecks) {

@@ -313,10 +313,78 @@ TEST(Judge, Bug1BoundCountsThePerimetersOfTheObstaclesMet) {
   t.path.emplace_back(5.0, 1.5);                                         // and a jump to the goal
   // Drove 2 + 2 = 4 m (the jump included); the bound is 4 m direct + 1.5 × 6 m = 13 m.
   EXPECT_TRUE(run({.kind = Kind::Bug1Bound}, t, r).passed);
+  EXPECT_EQ(run({.kind = Kind::Bug1Bound}, t, r).margin->said(true), "passed by 9.00 m (drove 4.00 m to goal; the BUG1 bound is 13.00 m)");
   // Dithering below the block: 1.20 m there, 399 jumps of 0.9 m, 3.23 m to the goal: 365.54 m.
   for (int k = 0; k < 400; ++k) t.path.insert(t.path.end() - 1, k % 2 == 0 ? Point2(2.9, 0.3) : Point2(2.0, 0.3));
   EXPECT_EQ(run({.kind = Kind::Bug1Bound}, t, r).reason,
             "drove 365.54 m to goal; the BUG1 bound is 13.00 m (4.00 m direct + 1.5 × 6.00 m of perimeter of the 1 obstacles met)");
+}
+
+// How near the edge: a margin for every criterion, in its unit, passed or failed, with the instant
+// that decided it; none where nothing was measured.
+std::string margin(const Verdict& v) { return v.margin ? v.margin->said(v.passed) : "none"; }
+
+TEST(Judge, MarginsSayHowNearTheEdgeARunWas) {
+  const Verdict reached = run({.kind = Kind::Goal, .distance = 0.2, .seconds = 10}, straight(1, 1.5, 0.5, 9));
+  EXPECT_EQ(margin(reached), "passed by 2.4 s (reached goal at 7.6 s of 10 s)");
+  EXPECT_NEAR(reached.margin->value, 2.4, 1e-9);
+  EXPECT_EQ(reached.margin->unit, "s");
+  EXPECT_NEAR(*reached.margin->at, 7.6, 1e-9);
+  EXPECT_EQ(margin(run({.kind = Kind::Goal, .distance = 0.2, .seconds = 7}, straight(1, 1.5, 0.5, 9))),
+            "failed by 0.6 s (reached goal at 7.6 s of 7 s)");
+  const Verdict never = run({.kind = Kind::Goal, .distance = 0.2}, straight(1, 1.5, 0.5, 4));
+  EXPECT_EQ(margin(never), "failed by 1.80 m (closest 2.00 m to goal; 0.20 m needed)");
+  EXPECT_NEAR(*never.margin->at, 4.0, 1e-9);
+  EXPECT_EQ(margin(run({.kind = Kind::Goal, .distance = 0.2}, straight(1, 1.6, 0.5, 9))), "passed by 0.10 m (closest 0.10 m to goal; 0.20 m needed)");
+  EXPECT_EQ(margin(run({.kind = Kind::Goal, .point = "exit", .distance = 0.2}, straight(1, 1.5, 0.5, 1))), "none");
+  // Waypoints with a time bound: the last one's time; without, the one passed nearest the edge.
+  EXPECT_EQ(margin(run({.kind = Kind::Waypoints, .points = {"a", "b"}, .distance = 0.2, .seconds = 10}, straight(1, 1.5, 0.5, 8))),
+            "passed by 4.4 s (reached b at 5.6 s of 10 s)");
+  Track bends = straight(1, 1.6, 0.5, 8);  // 0.10 m from a, then 0.15 m from b
+  for (Point2& p : bends.path) p.y() += p.x() > 3 ? 0.05 : 0.0;
+  EXPECT_EQ(margin(run({.kind = Kind::Waypoints, .points = {"a", "b"}, .distance = 0.2}, bends)),
+            "passed by 0.05 m (closest 0.15 m to b; 0.20 m needed)");
+  EXPECT_EQ(margin(run({.kind = Kind::Waypoints, .points = {"b", "a"}, .distance = 0.2}, bends)),
+            "failed by 1.71 m (closest 1.91 m to a; 0.20 m needed)");
+
+  Track bumps = straight(1, 1.5, 0.5, 2);
+  bumps.contacts = {{41.2, {3.1, 2.75}}, {50.0, {4.0, 2.75}}};
+  const Verdict over = run({.kind = Kind::Collisions, .count = 1}, bumps);
+  EXPECT_EQ(margin(over), "failed by 1 collision (2 collisions; at most 1)");
+  EXPECT_NEAR(*over.margin->at, 50.0, 1e-9);
+  EXPECT_EQ(margin(run({.kind = Kind::Collisions, .count = 2}, bumps)), "passed by 0 collisions (2 collisions; at most 2)");
+  EXPECT_EQ(margin(run({.kind = Kind::Collisions, .count = 0}, straight(1, 1.5, 0.5, 2))), "passed by 0 collisions (no collision; at most 0)");
+
+  EXPECT_EQ(margin(run({.kind = Kind::Clearance, .distance = 0.1}, straight(1, 0.34, 0.5, 1))),
+            "passed by 0.01 m (came within 0.11 m of a wall; at least 0.10 m required)");
+  Track drift{.name = "ada"};
+  for (int k = 0; k <= 100; ++k) drift.path.emplace_back(1 + 0.03 * k, 0.73 + 0.002 * k);
+  EXPECT_EQ(margin(run({.kind = Kind::WallDistance, .distance = 0.5, .tolerance = 0.05, .fraction = 0.8, .after = 1.0}, drift)),
+            "failed by 62 percentage points (kept 0.50 ± 0.05 m from the wall 18% of the time; 80% required)");
+  EXPECT_EQ(margin(run({.kind = Kind::Coverage, .fraction = 0.16, .cell = 0.5}, straight(0.25, 1.25, 0.5, 11))),
+            "passed by 1 percentage point (covered 17% of the floor it could reach; 16% required)");
+
+  RunRecord keyed = room();
+  keyed.keys = {{.time = 2.0, .key = 's'}};
+  const Criterion stop{.kind = Kind::Stopped, .speed = 0.05, .afterKey = 's', .within = 1.0};
+  EXPECT_EQ(margin(run(stop, stopsAt(2.8, 6), keyed)), "passed by 0.2 s (moved until 0.8 s after the key s was pressed; 1 s allowed)");
+  EXPECT_EQ(margin(run(stop, stopsAt(3.5, 6), keyed)), "failed by 0.5 s (moved until 1.5 s after the key s was pressed; 1 s allowed)");
+  EXPECT_EQ(margin(run({.kind = Kind::Stopped, .speed = 0.05}, straight(1, 1.5, 0.3, 2))),
+            "failed by 0.25 m/s (moving at 0.30 m/s at the end; below 0.05 m/s needed)");
+  Track reports = stopsAt(3.0, 5);
+  reports.returned = "key";
+  reports.returnedAt = 2.6;
+  EXPECT_EQ(margin(run({.kind = Kind::Returns, .value = "key", .afterKey = 's'}, reports, keyed)),
+            "passed by 0.4 s (returned 0.6 s after the key s was pressed; at most 1 s)");
+  EXPECT_EQ(margin(run({.kind = Kind::Returns, .value = "key"}, reports, keyed)), "none") << "a value alone has no edge to be near";
+
+  RunRecord pair = room();
+  pair.robots = {straight(1, 1.5, 0.5, 4, "ada"), straight(5, 2.5, -0.5, 4, "bob")};
+  EXPECT_EQ(margin(judge({.kind = Kind::RobotsApart}, pair)), "passed by 0.53 m (ada and bob came within 0.54 m of each other; 0.01 m required)");
+  // Several robots: the one nearest the edge, named.
+  pair.robots[1] = straight(1, 1.6, 0.5, 9, "bob");
+  pair.robots[0] = straight(1, 1.5, 0.5, 9, "ada");
+  EXPECT_EQ(margin(judge({.kind = Kind::Goal, .distance = 0.2}, pair)), "passed by 0.10 m (bob closest 0.10 m to goal; 0.20 m needed)");
 }
 
 TEST(Judge, TheReturnedValueIsTheControllers) {

@@ -7,6 +7,7 @@
 ///   Grade g = grade({.rubric = *rubric, .assignment = "go_to_goal"}, "student.cpp");
 ///   g.score() / g.maxScore()
 
+#include "frob/grade/judge.hpp"
 #include "frob/grade/rubric.hpp"
 #include "frob/grade/wheel_log.hpp"
 #include "frob/run/host.hpp"
@@ -56,13 +57,15 @@ struct GradeDef {
 struct RunGrade {
   std::string world;  ///< as the rubric names it
   std::uint64_t seed = 0;
+  std::string generator;  ///< a generated world's kind and seed, as `frob world generate` takes them ("lounge --seed 42"); "" otherwise
   bool passed = false;
-  std::string reason;                ///< why it failed, in words a student can act on; "" when it passed
-  std::string kind;                  ///< what failed, as a check that is not visible says it: nothing the controller chose
-  std::vector<std::string> hints;    ///< what common mistake the run shows, naming the fix (course/diagnose.hpp)
-  std::uint64_t trajectoryHash = 0;  ///< of every true pose (replays must match it)
-  std::filesystem::path log;         ///< its wheel log, when logs are kept
-  double wallSeconds = 0.0;          ///< how long the run took (a timing field, like Grade::wallSeconds)
+  std::string reason;                      ///< why it failed, in words a student can act on; "" when it passed
+  std::string kind;                        ///< what failed, as a check that is not visible says it: nothing the controller chose
+  std::vector<std::string> hints;          ///< what common mistake the run shows, naming the fix (course/diagnose.hpp)
+  std::vector<CriterionVerdict> criteria;  ///< each criterion's verdict and margin; none when the controller failed
+  std::uint64_t trajectoryHash = 0;        ///< of every true pose (replays must match it)
+  std::filesystem::path log;               ///< its wheel log, when logs are kept
+  double wallSeconds = 0.0;                ///< how long the run took (a timing field, like Grade::wallSeconds)
 };
 
 /// One check's outcome: the fraction of its runs that passed, times its points.
@@ -80,8 +83,13 @@ struct CheckGrade {
   [[nodiscard]] std::string reasonShown(std::size_t k) const;
   /// The hints of run k, as a student may read them: none for a check that is not visible.
   [[nodiscard]] std::vector<std::string> hintsShown(std::size_t k) const;
+  /// How near the edge run k met or missed each criterion, one line ("goal passed by 2.4 s (reached
+  /// goal at 7.6 s of 75 s); collisions passed by 1 collision (...)"), as a student may read it: ""
+  /// for a check that is not visible (a margin is a number the controller could choose).
+  [[nodiscard]] std::string marginsShown(std::size_t k) const;
   /// The reasons of the failed runs, one line each ("in maze, seed 3: touched a wall at 41.2 s at (3.1, 4.5)";
-  /// "in hidden world 2: touched a wall at 41.2 s"), each followed by its hints ("  hint: ...").
+  /// "in hidden world 2: touched a wall at 41.2 s"), each followed by its hints ("  hint: ..."); for a
+  /// visible check, every run's margins too ("in maze, seed 3: margins: ...").
   [[nodiscard]] std::string output() const;
 };
 

@@ -19,6 +19,11 @@ namespace frob::course {
 /// failed runs' reasons indented under it, the compile error, the total and the notes. Plain ASCII
 /// columns; control characters in names and reasons are shown as visible escapes (terminalSafe()).
 [[nodiscard]] std::string scoreTable(const Grade& grade);
+/// The runs of `grade` (frob grade --practice: every check visible) as a table for the terminal: a
+/// row per world and seed, PASS or FAIL, and each criterion's margin ("+2.4 s", "-0.12 m"); under a
+/// failed run in a generated world, the commands that rebuild that world and rerun it into a run
+/// viewer page, judged as the grade judged it.
+[[nodiscard]] std::string practiceTable(const Grade& grade);
 
 /// Writes Gradescope's autograder results.json: the score, the execution time (whole seconds), a
 /// summary of the visible checks (the compile error when there is one), one test per check.
