@@ -93,6 +93,10 @@ Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const cours
     const std::string stem = (dir / fs::path(run->log.empty() ? "first_failure" : run->log.stem().string())).string();
     course::RunOutputs out{.video = film ? stem + ".mp4" : "", .videoBytes = kReportVideoBytes, .plot = stem + ".png", .html = stem + ".html"};
     media.caption = "The first failing run: " + check + ", in " + run->world + " with seed " + std::to_string(run->seed) + ": " + run->reason;
+    for (const course::CriterionVerdict& v : run->criteria) {
+      if (!v.passed && v.margin && v.margin->at && !media.openAt) media.openAt = v.margin->at;
+    }
+    if (media.openAt) media.caption += course::format(" The viewer opens at %.1f s, where the check was decided.", *media.openAt);
     if (Result<std::uint64_t> shown = course::filmRun(def, g.submission, check, *run, out)) {
       media.video = out.video, media.plot = out.plot, media.viewer = out.html;
       media.caption += course::format(" The run shown is the graded run: its trajectory hash, %016" PRIx64 ", is the graded run's, %016" PRIx64 ".",

@@ -1,6 +1,7 @@
 // One self-contained HTML page of the grade, with its media embedded.
 
 #include "frob/grade/grade_report.hpp"
+#include "frob/run/format.hpp"
 #include "markup.hpp"
 #include "writers.hpp"
 
@@ -39,6 +40,10 @@ Status writeHtmlReport(const Grade& g, const HtmlMedia& media, const std::filesy
       return Status::failure("html report: '" + media.viewer.string() + "' is not a run viewer page (frob run --html)");
     }
     viewerScript = page.value().substr(at + 11, end + 1 - (at + 11));
+    // The instant to open at, on the page's body (outside its script, so its hash holds).
+    if (const std::size_t body = page.value().find("<body>"); media.openAt && body != std::string::npos) {
+      page.value().replace(body, 6, format("<body data-open-at=\"%.3f\">", *media.openAt));
+    }
     viewer = markupEscape(page.value(), true);
   }
 

@@ -157,6 +157,19 @@ int pixelsNear(const render::Image& img, const std::uint8_t (&rgb)[3]) {
   return n;
 }
 
+// The viewer opens where the check was decided: the instant on its page's body, outside the script
+// its hash allows (the page in a browser: run_page_test.cpp).
+TEST(HtmlReport, TheViewerOpensAtTheInstantGiven) {
+  const fs::path dir = scratch("html_open_at");
+  const fs::path viewer = writeViewer(dir), html = dir / "report.html";
+  ASSERT_TRUE(writeHtmlReport(sample(), {.viewer = viewer, .openAt = 1.5}, html).ok());
+  const Doc dom = parseHtml(readFile(html));
+  ASSERT_TRUE(dom);
+  std::string expected = readFile(viewer);
+  expected.replace(expected.find("<body>"), 6, "<body data-open-at=\"1.500\">");
+  EXPECT_TRUE(one(dom.get(), "//iframe/@srcdoc") == expected) << "the frame's page is not the viewer's with the instant on its body";
+}
+
 TEST(HtmlReportInChromium, ScreenshotShowsTheTableTheVideoAndThePlot) {
   requireChromium();
   const Report r = writeReport("chromium_screenshot");

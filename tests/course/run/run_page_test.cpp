@@ -14,6 +14,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <optional>
 #include <sstream>
 #include <tuple>
 
@@ -141,10 +143,11 @@ struct Page {
   support::Doc dom;
   std::string console;
 };
-Page openAt(const Written& w, double t) {
+// The page opened at `t` (its address's #t=), or, with none, where the page itself says.
+Page openAt(const Written& w, std::optional<double> t) {
   const fs::path out = w.dir / "dom.html";
   std::ostringstream hash;
-  hash << "#t=" << t;
+  if (t) hash << "#t=" << *t;
   // The page inflates its data asynchronously: a virtual time budget lets it finish before the dump.
   const Ran ran = chromium(w.dir, {"--dump-dom", "--virtual-time-budget=20000", "--enable-logging=stderr", "--v=0"}, w.html, out, hash.str());
   EXPECT_EQ(ran.status, 0) << ran.err;
@@ -185,6 +188,30 @@ TEST(RunPage, TheSlidersInstantShowsTheRecordedPoseWheelsAndTaskStack) {
     // After the top task returned, the settle time: the page says so.
     EXPECT_EQ(one(page.dom.get(), "//p[@id='status']"), t > 9.0 ? "Its task returned at 9.00 s: the robot is commanded still." : "");
   }
+}
+
+// A grade report opens its run where the check was decided: the body's data-open-at, when the
+// address names no instant.
+TEST(RunPage, ThePageOpensAtTheInstantItsBodyNames) {
+  requireChromium();
+  Written w = runTour("open_at");
+  std::string page = support::readText(w.html.string());
+  const std::size_t body = page.find("<body>");
+  ASSERT_NE(body, std::string::npos);
+  page.replace(body, 6, "<body data-open-at=\"6.310\">");
+  w.html = w.dir / "opens_at.html";
+  std::ofstream(w.html) << page;
+  const TraceRow row = traceAt(w.trace, 6.31);
+  char shown[32];
+  std::snprintf(shown, sizeof shown, "%.2f s", row.time);
+  const Page opened = openAt(w, std::nullopt);
+  ASSERT_TRUE(opened.dom);
+  EXPECT_EQ(opened.console, "");
+  EXPECT_EQ(one(opened.dom.get(), "//output[@id='time']"), shown);
+  const Page asked = openAt(w, 1.37);  // an address's #t still wins
+  ASSERT_TRUE(asked.dom);
+  std::snprintf(shown, sizeof shown, "%.2f s", traceAt(w.trace, 1.37).time);
+  EXPECT_EQ(one(asked.dom.get(), "//output[@id='time']"), shown);
 }
 
 TEST(RunPage, TextFromTheControllerIsShownAsTextNeverAsMarkup) {

@@ -9,6 +9,7 @@
 #include "frob/grade/grade.hpp"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,7 @@ struct HtmlMedia {
   std::filesystem::path video;   ///< an MP4 (H.264) of a run, embedded as a data: URI
   std::filesystem::path plot;    ///< a PNG plot, embedded as a data: URI
   std::filesystem::path viewer;  ///< a run viewer page of the same run (RunOutputs::html), embedded in a sandboxed frame
+  std::optional<double> openAt;  ///< the instant the viewer opens at (the failure's), seconds; unset: the start
   std::string caption;           ///< what they show ("the first failing run: maze, seed 3")
 };
 
