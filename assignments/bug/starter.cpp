@@ -24,8 +24,8 @@ using namespace frob::literals;
 // ---- Step 0. What the robot knows -----------------------------------------------------------
 //
 // The goal of every generated obstacle field, in world coordinates. Odometry reports world
-// coordinates too: it starts at the robot's true start pose (1.5, 1.5) and has no drift in these
-// worlds, so place(r) can be compared with the goal directly.
+// coordinates too: it starts at the robot's start pose (1.5, 1.5), give or take 2 cm, and drifts
+// only a little (some 2 cm after 10 m), so place(r) can be compared with the goal directly.
 const Point2 kGoal{13.5, 13.5};
 
 constexpr double kSpeed = 0.6;        // m/s, the robot's top speed

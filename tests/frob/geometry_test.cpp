@@ -35,6 +35,9 @@ TEST(Geometry, AngleDiffTakesTheShortWayRound) {
   EXPECT_NEAR(angleDiff(170_deg, -170_deg), 20_deg, 1e-14);
   EXPECT_NEAR(angleDiff(-170_deg, 170_deg), -20_deg, 1e-14);
   EXPECT_NEAR(angleDiff(0, 90_deg), 90_deg, 1e-15);
+  // geometry.hpp's examples: the sign is the way to turn, positive to the left.
+  EXPECT_NEAR(angleDiff(pi / 2, 0), -pi / 2, 1e-15);
+  EXPECT_NEAR(angleDiff(3, -3), 2 * pi - 6, 1e-14);
 }
 
 TEST(Geometry, VectorsAreEigen) {

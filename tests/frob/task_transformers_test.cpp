@@ -297,6 +297,12 @@ TEST(Transformers, WithPictureIsPublishedWhileTheTaskRunsAtTheRightPlace) {
   EXPECT_TRUE(r.debugChannel()->picture(clock.now()).empty());  // the goal was reached at t = 1.8
 }
 
+// The task stack names a plot as a plot, with what it plots.
+TEST(Transformers, WithPlotIsNamedForThePlot) {
+  EXPECT_EQ(withPlot("left", Behavior<double>(0.5), driveTo(Point2{1, 0}).named("approach")).name(), "withPlot(left, approach)");
+  EXPECT_EQ(driveToWithPicture(Point2{1, 0}).named("approach").name(), "approach");
+}
+
 TEST(Transformers, AbortedTasksFreeTheirFramesAndBehaviors) {
   long frames0 = liveTaskFrames();
   long nodes0 = 0;

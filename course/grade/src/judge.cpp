@@ -440,8 +440,8 @@ class Judge {
                     100 * c_.fraction),
              timeOf(worst));
     if (share >= c_.fraction) return "";
-    return format("kept %.2f ± %.2f m from %s for %.0f%% of the time after %s; %.0f%% required (furthest off: %.2f m at %s at %s)", c_.distance,
-                  c_.tolerance, wall.c_str(), 100 * share, secondsText(c_.after).c_str(), 100 * c_.fraction, worstOff,
+    return format("kept %.2f ± %.2f m from %s for %.0f%% of the time after %s; %.0f%% required (at worst %.2f m off the %.2f m wanted, at %s at %s)",
+                  c_.distance, c_.tolerance, wall.c_str(), 100 * share, secondsText(c_.after).c_str(), 100 * c_.fraction, worstOff, c_.distance,
                   secondsText(timeOf(worst)).c_str(), at(t.path[worst]).c_str());
   }
 

@@ -17,7 +17,10 @@ inline constexpr double pi = std::numbers::pi;
 
 /// Wraps an angle to (-pi, pi], radians.
 [[nodiscard]] double wrapAngle(double radians);
-/// The signed smallest rotation from angle `from` to angle `to`, in (-pi, pi] radians.
+/// The signed smallest rotation from angle `from` to angle `to`, in (-pi, pi] radians: positive
+/// is counter-clockwise, a turn to the left, as a positive turn rate is. angleDiff(0, pi / 2) is
+/// pi / 2, angleDiff(pi / 2, 0) is -pi / 2, angleDiff(3, -3) is 2 pi - 6 (about 0.28, across pi).
+/// So wheels(0, 0.8 * angleDiff(heading, target)) turns towards `target` the short way round.
 [[nodiscard]] double angleDiff(double from, double to);
 /// Euclidean distance between two points, metres.
 [[nodiscard]] inline double distance(const Point2& a, const Point2& b) { return (a - b).norm(); }

@@ -130,10 +130,13 @@ template <class A, class B>
 }
 
 /// Plots `b` under `name` while `t` runs: `frob run --plot` charts it beside the front sonar and
-/// the wheels (e.g. withPlot("left", sonar(r, 4), followWall())).
+/// the wheels (e.g. withPlot("left", sonar(r, 4), followWall())). The task stack names it
+/// withPlot(left, followWall).
 template <class A, class B>
 [[nodiscard]] Task<A, B> withPlot(std::string name, Behavior<double> b, Task<A, B> t, std::source_location loc = detail::callSite()) {
-  return withPicture(lift([name = std::move(name)](double v) { return plotValue(name, v); }, std::move(b)), std::move(t), loc);
+  std::string label = "withPlot(" + name + ", " + t.name() + ")";
+  return withPicture(lift([name = std::move(name)](double v) { return plotValue(name, v); }, std::move(b)), std::move(t), loc)
+      .named(std::move(label));
 }
 
 }  // namespace frob
