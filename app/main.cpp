@@ -18,6 +18,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <sys/resource.h>
 #include <sys/utsname.h>
 #include <unistd.h>
 
@@ -50,6 +51,14 @@ constexpr const char* kExamples = R"(Examples:
 int fail(const std::string& message) {
   std::cerr << "frob: " << message << "\n";
   return 1;
+}
+
+// CPU seconds, user and system, of frob's children that have ended (and of theirs): the compiler's.
+double childrenCpuSeconds() {
+  rusage use{};
+  getrusage(RUSAGE_CHILDREN, &use);
+  const auto seconds = [](const timeval& t) { return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6; };
+  return seconds(use.ru_utime) + seconds(use.ru_stime);
 }
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -87,11 +96,14 @@ Result<course::CompiledController> compileController(const std::string& name, bo
   }
   if (path.extension() == ".cpp" || fs::exists(path)) {
     const auto start = std::chrono::steady_clock::now();
+    const double cpuBefore = childrenCpuSeconds();
     ProgressBar status(stderr, !quiet && ::isatty(STDERR_FILENO) == 1, "");
     status.say("frob: compiling " + name + (setup.checked ? " with checks" : "") + " (unless it is unchanged since its last run)...");
     Result<course::CompiledController> c = course::compileControllerFile(path, setup);
     status.finish();
-    if (c && c.value().compiled && !quiet) std::fprintf(stderr, "frob: compiled %s in %.1f s\n", name.c_str(), secondsSince(start));
+    if (c && c.value().compiled && !quiet) {
+      std::fputs(course::compiledNote(name, setup.checked, secondsSince(start), childrenCpuSeconds() - cpuBefore).c_str(), stderr);
+    }
     return c;
   }
   if (std::optional<course::Example> e = course::findExample(name)) return course::compileExample(*e, setup);
@@ -124,6 +136,7 @@ struct RunArgs {
   double dt = 0.01;
   double settle = 2.0;  // seconds the run goes on, the robots still, once every task returned
   int fps = 30;
+  double videoMegabytes = 8.0;  // a long run's video fits in this (a grade report's film: 2 MB)
   std::optional<double> speed;
   course::RunOutputs outputs;
   std::string assignment;  // judge the run against this assignment's checks
@@ -171,6 +184,7 @@ int runCommand(RunArgs a) {
     if (!a.quiet) std::fprintf(stderr, "frob: no controller given, so here is the demo: the paper's BUG algorithm (course/examples/06_bug.cpp)\n");
   }
   // The demo's video plays 4 times faster than the robot drives: two minutes of BUG in half a minute.
+  a.outputs.videoBytes = static_cast<std::uint64_t>(a.videoMegabytes * 1e6);
   course::RunDef def{.options = {.dt = a.dt, .seed = a.seed}, .outputs = a.outputs, .fps = a.fps, .speed = a.speed.value_or(demo ? 4.0 : 1.0)};
   if (a.check && !a.sandbox) return fail("--check runs the controllers in their sandboxed process: leave out --no-sandbox");
   if (a.sandbox) def.host.emplace(course::HostDef{.checked = a.check});
@@ -337,6 +351,11 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(0.0, 600.0));
   runCmd->add_option("--video", run.outputs.video, "Write an MP4 video of the run");
+  runCmd
+      ->add_option("--video-size", run.videoMegabytes,
+                   "The video's size at most, MB: a long run's is encoded at a lower bitrate to fit (0: any size)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 10000.0));
   runCmd->add_option("--frames", run.outputs.frames, "Write one PNG per video frame into this folder");
   runCmd->add_option("--plot", run.outputs.plot, "Write plots of the run (sonar, goal distance, wheels, tasks) as PNG");
   runCmd

@@ -54,6 +54,18 @@ TEST(FrobRun, GoodControllerWritesEveryOutputWhole) {
   EXPECT_EQ(filesIn(dir / "frames").size(), 60u);                 // 2 s at 30 fps
 }
 
+// A video fits in --video-size (8 MB unless given; 0 for any size): a long run's bitrate is lowered.
+TEST(FrobRun, AVideoFitsInItsSize) {
+  const fs::path dir = freshFolder("video_size");
+  write(dir, "fast.cpp", controller("0.5"));
+  const FrobResult capped = runFrob(dir, {"run", "fast.cpp", "--seconds", "8", "--video", "capped.mp4", "--video-size", "0.06"});
+  ASSERT_EQ(capped.status, 0) << capped.err;
+  const FrobResult free = runFrob(dir, {"run", "fast.cpp", "--seconds", "8", "--video", "free.mp4", "--video-size", "0"});
+  ASSERT_EQ(free.status, 0) << free.err;
+  EXPECT_LE(fs::file_size(dir / "capped.mp4"), 60'000u);
+  EXPECT_GT(fs::file_size(dir / "free.mp4"), 2 * fs::file_size(dir / "capped.mp4"));
+}
+
 TEST(FrobRun, WithoutAControllerTheDemoWritesAVideo) {
   const fs::path dir = freshFolder("demo");
   const FrobResult r = runFrob(dir, {"run", "--seconds", "2"});

@@ -107,4 +107,11 @@ std::string determinismNote(std::string_view machine) {
          "(README, \"Every laptop\")\n";
 }
 
+std::string compiledNote(std::string_view name, bool checked, double wallSeconds, double cpuSeconds) {
+  std::string note = "frob: compiled " + std::string(name) + (checked ? " with checks" : "") + format(" in %.1f s", wallSeconds);
+  // A compile is one process at a time: more than twice its CPU time (and a second) is a queue.
+  if (wallSeconds > 2 * cpuSeconds + 1) note += format(" (the compiler worked %.1f s of it; the rest it waited for a busy machine)", cpuSeconds);
+  return note + "\n";
+}
+
 }  // namespace frob::course

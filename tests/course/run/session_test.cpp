@@ -404,6 +404,14 @@ TEST(Session, OffAmd64ARunSaysItIsNotTheGradersToTheLastBit) {
   EXPECT_NE(arm.find("run the amd64 image"), std::string::npos);
 }
 
+// A compile's time said truly: on a busy machine the wait is named as a wait, not the compile's cost.
+TEST(Session, ACompileOnABusyMachineSaysWhatWasWaiting) {
+  EXPECT_EQ(compiledNote("mine.cpp", false, 1.2, 1.1), "frob: compiled mine.cpp in 1.2 s\n");
+  EXPECT_EQ(compiledNote("mine.cpp", true, 3.0, 1.0), "frob: compiled mine.cpp with checks in 3.0 s\n");
+  EXPECT_EQ(compiledNote("mine.cpp", true, 43.2, 6.3),
+            "frob: compiled mine.cpp with checks in 43.2 s (the compiler worked 6.3 s of it; the rest it waited for a busy machine)\n");
+}
+
 TEST(Session, ValidateNamesTheProblem) {
   RunDef def{.world = room(), .worldName = "room", .controllers = {}, .seconds = 1};
   EXPECT_EQ(validate(def).error(), "no controller given");

@@ -18,4 +18,10 @@ namespace frob::course {
 /// grades are not bit-identical to the grader's, and why.
 [[nodiscard]] std::string determinismNote(std::string_view machine);
 
+/// What frob says once it compiled controller `name` (with --check's checks when `checked`) in
+/// `wallSeconds`, of which the compiler worked `cpuSeconds` (CPU time, its processes'): on a busy
+/// machine, where the two differ much, that the rest was waiting, so that no one reads the wait
+/// as the compile's cost.
+[[nodiscard]] std::string compiledNote(std::string_view name, bool checked, double wallSeconds, double cpuSeconds);
+
 }  // namespace frob::course
