@@ -213,6 +213,10 @@ int runCommand(RunArgs a) {
     def.seconds = 0.0;
     for (const course::Check& c : course::checksFor(*rubric, def.worldName)) def.seconds = std::max(def.seconds, c.seconds);
   }
+  if (rubric) {  // an assignment none of whose checks waits for the task to return: it is meant to run for ever
+    const std::vector<course::Check> checks = course::checksFor(*rubric, def.worldName);
+    def.meantToRunForever = std::none_of(checks.begin(), checks.end(), [](const course::Check& c) { return c.waitsForAReturn(); });
+  }
   if (Status s = parseSize(a.size, def.view); !s) return fail(s.error());
   def.view.view = a.view == "chase" ? render::ViewMode::Chase : render::ViewMode::TopDown;
   if (Status s = course::validate(def); !s) return fail(s.error());

@@ -98,6 +98,25 @@ TEST(GradeCli, ASandboxLayerThisMachineLacksIsSaidToTheInstructorOnly) {
   EXPECT_EQ(whole.err.find("sandbox missing"), std::string::npos) << whole.err;
 }
 
+// A task that never ends gets a hint, unless the assignment never waits for one to return: a wall
+// follower is meant to follow for ever (wall_follow has no `returns` criterion).
+TEST(GradeCli, AnAssignmentWhoseTasksRunForEverGetsNoHintThatTheyNeverEnded) {
+  const fs::path dir = freshFolder("grade_cli_forever");
+  std::ofstream(dir / "creep.cpp")
+      << "#include <frob/frob.hpp>\nusing namespace frob;\nTask<Wheels> creep() {\n"
+         "  co_await mkTask([](const TaskState&) { return std::pair{wheels(0.1, 0.0), never<Unit>()}; }).named(\"inch\");\n"
+         "}\nFROB_CONTROLLER(creep)\n";
+  const std::string world = FROB_SOURCE_DIR "/assignments/wall_follow/worlds/l_room.toml";
+  const std::string hint = "nomad's task 'inch' ran from 0.0 s to the end of the run: the event that should end it never occurred";
+  const FrobResult plain = runFrob(dir, {"run", "creep.cpp", "--world", world, "--seconds", "10"});
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  EXPECT_NE(plain.out.find(hint), std::string::npos) << plain.out;
+  const FrobResult judged = runFrob(dir, {"run", "creep.cpp", "--world", world, "--seconds", "10", "--assignment", "wall_follow"});
+  ASSERT_EQ(judged.status, 0) << judged.err;
+  EXPECT_NE(judged.out.find("Against wall_follow's checks"), std::string::npos) << judged.out;
+  EXPECT_EQ(judged.out.find("never occurred"), std::string::npos) << judged.out;
+}
+
 // A student checks a run against the assignment in any world, with the judge frob grade uses: each
 // criterion's verdict and reason, the same words a grade gives for a run with that world and seed.
 // "quickly" is judged on its own 1 s of the 3 s run (the longest check's time).

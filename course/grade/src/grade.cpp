@@ -43,8 +43,8 @@ struct Ran {
 };
 
 // Steps `run` for `steps` steps, or until a controller fails, keeping every robot's true path,
-// contacts and reported result.
-Ran drive(worlds::Run& run, const worlds::WorldDef& world, std::int64_t steps) {
+// contacts and reported result; `meantToRunForever`: no hint that a task never ended.
+Ran drive(worlds::Run& run, const worlds::WorldDef& world, std::int64_t steps, bool meantToRunForever = false) {
   const worlds::Simulation& sim = run.simulation();
   Ran ran;
   RunRecorder recorder(sim, world);
@@ -65,7 +65,8 @@ Ran drive(worlds::Run& run, const worlds::WorldDef& world, std::int64_t steps) {
   }
   ran.record = std::move(recorder).finish(run.failures());
   for (std::size_t i = 0; i < sim.robotCount(); ++i) {
-    for (std::string& h : diagnosis.hints(i, sim.robotName(i), run.timeline(i).running(), sim.time())) ran.hints.push_back(std::move(h));
+    for (std::string& h : diagnosis.hints(i, sim.robotName(i), run.timeline(i).running(), sim.time(), meantToRunForever))
+      ran.hints.push_back(std::move(h));
   }
   ran.trajectoryHash = run.recorder().trajectoryHash();
   return ran;
@@ -227,7 +228,7 @@ void runCheck(const GradeDef& def, const CompiledController& compiled, const Che
     return;
   }
   worlds::Run run(world, {.dt = def.rubric.dt, .seed = r.seed}, hosts.value().driver(false), {.keepSteps = false});
-  const Ran ran = drive(run, world, stepsFor(check.seconds, def.rubric.dt));
+  const Ran ran = drive(run, world, stepsFor(check.seconds, def.rubric.dt), !check.waitsForAReturn());
   judgeRun(check, ran.record, r);
   r.trajectoryHash = ran.trajectoryHash;
   r.hints = ran.hints;

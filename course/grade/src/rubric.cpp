@@ -346,6 +346,10 @@ std::vector<WorldRef> worldsOf(const Check& check, const std::string& secret, co
   return all;
 }
 
+bool Check::waitsForAReturn() const {
+  return std::any_of(criteria.begin(), criteria.end(), [](const Criterion& c) { return c.kind == Criterion::Kind::Returns; });
+}
+
 Rubric practiceRubric(const Rubric& rubric, int worlds, std::uint64_t seed) {
   Rubric practice = rubric;
   practice.checks.clear();

@@ -108,7 +108,8 @@ void Diagnosis::taskEnded(std::size_t i, const TaskRecord& task) {
   }
 }
 
-std::vector<std::string> Diagnosis::hints(std::size_t i, const std::string& name, const std::vector<TaskRecord>& running, double end) const {
+std::vector<std::string> Diagnosis::hints(std::size_t i, const std::string& name, const std::vector<TaskRecord>& running, double end,
+                                          bool meantToRunForever) const {
   std::vector<std::string> out;
   if (i >= impl_->robots.size()) return out;
   const Watch& w = impl_->robots[i];
@@ -156,7 +157,7 @@ std::vector<std::string> Diagnosis::hints(std::size_t i, const std::string& name
     if (innermost != nullptr) enclosing += (enclosing.empty() ? " (inside '" : "', '") + innermost->name;
     if (innermost == nullptr || t.depth > innermost->depth) innermost = &t;
   }
-  if (innermost != nullptr) {
+  if (innermost != nullptr && !meantToRunForever) {
     out.push_back(format("%s's task '%s'%s ran from %.1f s to the end of the run: the event that should end it never occurred", name.c_str(),
                          innermost->name.c_str(), enclosing.empty() ? "" : (enclosing + "')").c_str(), innermost->start));
   }

@@ -308,7 +308,7 @@ Result<Summary> runSession(const RunDef& def) {
     RobotWatch& w = watch[i];
     w.summary.lastTasks.assign(w.lastEnded.begin(), w.lastEnded.end());
     const std::vector<TaskRecord> running = run.timeline(i).running();
-    w.summary.hints = diagnosis.hints(i, w.summary.name, running, sim.time());
+    w.summary.hints = diagnosis.hints(i, w.summary.name, running, sim.time(), def.meantToRunForever);
     // A run that looks stuck may be a silent bug: say how to look for one.
     const bool stuck = w.summary.distance < kNeverMoved || (w.lastEnded.empty() && running.size() > 1);
     if (stuck && !checked) {

@@ -91,6 +91,7 @@ TEST(Diagnosis, NestedTasksThatNeverEndGiveOneHint) {
   EXPECT_EQ(d.hints(0, "ada", running, 40.0),
             std::vector<std::string>{"ada's task 'keepDistance' (inside 'follow', 'alongWall') ran from 1.0 s to the end of the run: the event "
                                      "that should end it never occurred"});
+  EXPECT_EQ(d.hints(0, "ada", running, 40.0, true), std::vector<std::string>{}) << "a follower meant to run for ever";
 }
 
 TEST(Diagnosis, TasksThatEndAsTheyBegin) {

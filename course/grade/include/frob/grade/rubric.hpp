@@ -89,6 +89,9 @@ struct Check {
   double seconds = 60.0;             ///< simulated seconds of each run
   std::vector<Criterion> criteria;
   int line = 0;
+  /// Whether it needs the controller's task to return (a `returns` criterion): else the task may be
+  /// meant to run for ever, as a wall follower's is.
+  [[nodiscard]] bool waitsForAReturn() const;
 };
 
 /// An assignment's rubric.

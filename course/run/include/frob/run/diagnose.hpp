@@ -35,8 +35,11 @@ class Diagnosis {
   /// A task of robot `i` ended.
   void taskEnded(std::size_t i, const TaskRecord& task);
   /// What went wrong for robot `i` (named `name`), one sentence each; `running` are its tasks still
-  /// running at `end`. Empty when nothing common went wrong.
-  [[nodiscard]] std::vector<std::string> hints(std::size_t i, const std::string& name, const std::vector<TaskRecord>& running, double end) const;
+  /// running at `end`. Empty when nothing common went wrong. A controller `meantToRunForever` (a
+  /// wall follower, whose assignment never waits for its task to return) gets no hint that its tasks
+  /// never ended.
+  [[nodiscard]] std::vector<std::string> hints(std::size_t i, const std::string& name, const std::vector<TaskRecord>& running, double end,
+                                               bool meantToRunForever = false) const;
 
  private:
   struct Impl;

@@ -49,6 +49,7 @@ struct RunDef {
   bool wholeTime = false;                     ///< run all `seconds` even after every task returned, as a graded run does
   double settleSeconds = 0.0;                 ///< once every controller's task returned, the run goes on this long, the robots commanded still
   bool keepRecord = false;                    ///< keep the grader's record of the run in the summary, to judge it against a rubric
+  bool meantToRunForever = false;             ///< the controller's task is meant never to return (Diagnosis::hints)
   RunOutputs outputs;                         ///< files to write
   int fps = 30;                               ///< frames per second of the video and frames
   double speed = 1.0;                         ///< the video plays this many times faster than simulated time
