@@ -68,7 +68,8 @@ const course::RunGrade* firstFailure(const course::Grade& g, std::string& check)
 constexpr std::uint64_t kReportVideoBytes = 2'000'000;
 
 // Writes each file asked for (making their folders); the first that cannot be written is the error.
-// The report films its failing run unless `film` is false (a class's reports: the viewer and the plot).
+// The report, the videos and PrairieLearn's results show the first failing run (refilmed): the report
+// films it unless `film` is false (a class's reports: the viewer and the plot); PrairieLearn's show its plot.
 Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const course::Grade& g, bool film = true) {
   for (const std::string& file : {a.results, a.prairielearn, a.junit, a.report}) {
     std::error_code ec;
@@ -77,21 +78,22 @@ Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const cours
   if (!a.results.empty()) {
     if (Status s = course::writeGradescope(g, a.results); !s) return s;
   }
-  if (!a.prairielearn.empty()) {
-    if (Status s = course::writePrairieLearn(g, a.prairielearn); !s) return s;
-  }
   if (!a.junit.empty()) {
     if (Status s = course::writeJUnit(g, a.junit); !s) return s;
   }
-  if (a.report.empty() && a.videos.empty()) return {};
   course::HtmlMedia media;
+  std::vector<course::CheckImage> images;
   std::string check;
-  if (const course::RunGrade* run = firstFailure(g, check); run != nullptr && g.compileError.empty()) {
-    const fs::path dir = a.videos.empty() ? fs::temp_directory_path() / ("frob-report-" + std::to_string(::getpid())) : fs::path(a.videos);
-    std::error_code ec;
+  const course::RunGrade* run = firstFailure(g, check);
+  const bool pages = !a.report.empty() || !a.videos.empty();
+  std::error_code ec;
+  fs::path dir;
+  if (run != nullptr && g.compileError.empty() && (pages || !a.prairielearn.empty())) {
+    dir = a.videos.empty() ? fs::temp_directory_path() / ("frob-report-" + std::to_string(::getpid())) : fs::path(a.videos);
     fs::create_directories(dir, ec);
     const std::string stem = (dir / fs::path(run->log.empty() ? "first_failure" : run->log.stem().string())).string();
-    course::RunOutputs out{.video = film ? stem + ".mp4" : "", .videoBytes = kReportVideoBytes, .plot = stem + ".png", .html = stem + ".html"};
+    course::RunOutputs out{
+        .video = film && pages ? stem + ".mp4" : "", .videoBytes = kReportVideoBytes, .plot = stem + ".png", .html = pages ? stem + ".html" : ""};
     media.caption = "The first failing run: " + check + ", in " + run->world + " with seed " + std::to_string(run->seed) + ": " + run->reason;
     for (const course::CriterionVerdict& v : run->criteria) {
       if (!v.passed && v.margin && v.margin->at && !media.openAt) media.openAt = v.margin->at;
@@ -101,17 +103,17 @@ Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const cours
       media.video = out.video, media.plot = out.plot, media.viewer = out.html;
       media.caption += course::format(" The run shown is the graded run: its trajectory hash, %016" PRIx64 ", is the graded run's, %016" PRIx64 ".",
                                       shown.value(), run->trajectoryHash);
+      images.push_back(
+          {.check = check, .label = "The first failing run, " + run->world + " with seed " + std::to_string(run->seed), .png = out.plot});
     } else {
       media.caption += " (" + shown.error() + ")";
     }
-    if (!a.report.empty()) {
-      Status s = course::writeHtmlReport(g, media, a.report);
-      if (a.videos.empty()) fs::remove_all(dir, ec);
-      return s;
-    }
-    return {};
   }
-  return a.report.empty() ? Status() : course::writeHtmlReport(g, media, a.report);
+  Status s;
+  if (!a.prairielearn.empty()) s = course::writePrairieLearn(g, a.prairielearn, images);
+  if (s && !a.report.empty()) s = course::writeHtmlReport(g, media, a.report);
+  if (!dir.empty() && a.videos.empty()) fs::remove_all(dir, ec);
+  return s;
 }
 
 // A submission frob could not grade through its own or the machine's fault: said loudly, no results

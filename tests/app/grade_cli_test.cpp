@@ -60,9 +60,6 @@ TEST(GradeCli, ASubmissionThatFailsStillExitsZeroWithItsScore) {
   EXPECT_NE(r.out.find("never came within 0.40 m of goal"), std::string::npos) << r.out;
 }
 
-// A machine that cannot make namespaces (here a user namespace that allows none inside it, as a
-// chroot or a container's seccomp profile may) still grades, and the instructor is told on stderr;
-// nothing a student reads (results, scores) says which layer is missing.
 // The report's film is the first failing visible run, filmed again and proven the graded one by its
 // hash: its video, its plot, and the run viewer of that run in a frame; the films' files go away.
 TEST(GradeCli, TheReportShowsTheFailingRunInTheViewer) {
@@ -77,6 +74,24 @@ TEST(GradeCli, TheReportShowsTheFailingRunInTheViewer) {
   EXPECT_NE(page.find("The run shown is the graded run"), std::string::npos);
 }
 
+// PrairieLearn's results carry the first failing visible run's plot on that check's test, and no other.
+TEST(GradeCli, PrairieLearnShowsTheFailingRunsPlotOnItsCheck) {
+  const fs::path dir = assignment("grade_cli_prairielearn");
+  std::ofstream(dir / "slow.cpp") << driver("0.1");
+  const FrobResult r = runFrob(dir, {"grade", "forward", "slow.cpp", "--prairielearn", "pl/results.json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(readFile(dir / "pl" / "results.json"));
+  ASSERT_EQ(j["tests"].size(), 2u) << j.dump(1);
+  ASSERT_EQ(j["tests"][0]["images"].size(), 1u) << j.dump(1);
+  EXPECT_EQ(j["tests"][0]["images"][0]["label"], "The first failing run, room.toml with seed 1");
+  const std::string url = j["tests"][0]["images"][0]["url"];
+  EXPECT_EQ(url.rfind("data:image/png;base64,iVBORw0KGgo", 0), 0u) << url.substr(0, 60);  // PNG's signature, in base64
+  EXPECT_FALSE(j["tests"][1].contains("images")) << "the check that passed shows no picture";
+}
+
+// A machine that cannot make namespaces (here a user namespace that allows none inside it, as a
+// chroot or a container's seccomp profile may) still grades, and the instructor is told on stderr;
+// nothing a student reads (results, scores) says which layer is missing.
 TEST(GradeCli, ASandboxLayerThisMachineLacksIsSaidToTheInstructorOnly) {
   const fs::path dir = assignment("grade_cli_layers");
   std::ofstream(dir / "fast.cpp") << driver("0.5");
@@ -138,13 +153,13 @@ clearance = { min = 0.1 }
   const FrobResult graded = runFrob(dir, {"grade", "forward", "fast.cpp", "--results", "r.json"});
   ASSERT_EQ(graded.status, 0) << graded.err;
   const nlohmann::json results = nlohmann::json::parse(readFile(dir / "r.json"));
-  const std::string output = results["tests"][2]["output"];
-  const std::string prefix = "in room.toml, seed 1: ";
+  const std::string output = markdownRead(results["tests"][2]["output"]);
+  const std::string prefix = "- **room.toml, seed 1**: failed: ";
   ASSERT_EQ(output.find(prefix), 0u) << output;
   const std::string reason = output.substr(prefix.size(), output.find('\n') - prefix.size());
   EXPECT_NE(reason.find("never came within 0.40 m of goal"), std::string::npos) << reason;
   // How near the edge, as the grade says it: the run says the same.
-  const std::string marginsPrefix = "\n  margins: goal ";
+  const std::string marginsPrefix = "\n  - margins: goal ";
   const std::size_t m = output.find(marginsPrefix);
   ASSERT_NE(m, std::string::npos) << output;
   const std::string margin = output.substr(m + marginsPrefix.size(), output.find('\n', m + 1) - m - marginsPrefix.size());

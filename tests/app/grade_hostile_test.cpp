@@ -51,7 +51,7 @@ TEST_P(GradeHostile, FailsItsCheckWithTheReasonAndTheGraderStaysWhole) {
   ASSERT_EQ(results["tests"].size(), 2u) << results.dump(1);
   EXPECT_EQ(results["tests"][0]["score"], c.beforePasses ? 1.0 : 0.0) << results.dump(1);
   EXPECT_EQ(results["tests"][1]["score"], 0.0) << results.dump(1);
-  const std::string output = results["tests"][1]["output"];
+  const std::string output = markdownRead(results["tests"][1]["output"]);
   EXPECT_TRUE(output.find(c.reason) != std::string::npos || (!c.orReason.empty() && output.find(c.orReason) != std::string::npos)) << results.dump(1);
   const std::string junit = readFile(dir / "junit.xml");
   EXPECT_EQ(junit.rfind("<?xml", 0), 0u);

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -31,6 +32,16 @@ inline std::filesystem::path freshFolder(const std::string& name) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+// Markdown's text as it reads: each backslash escape of a punctuation mark undone (Gradescope's test output).
+inline std::string markdownRead(const std::string& markdown) {
+  std::string text;
+  for (std::size_t i = 0; i < markdown.size(); ++i) {
+    if (markdown[i] == '\\' && i + 1 < markdown.size() && std::ispunct(static_cast<unsigned char>(markdown[i + 1])) != 0) ++i;
+    text += markdown[i];
+  }
+  return text;
 }
 
 inline std::string readFile(const std::filesystem::path& path) {

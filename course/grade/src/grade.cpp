@@ -193,6 +193,23 @@ std::vector<std::string> CheckGrade::hintsShown(std::size_t k) const {
   return shown;
 }
 
+LeaderboardValue leaderboardValue(const LeaderboardMetric& m, const Grade& g) {
+  LeaderboardValue v{.name = m.name, .ascending = m.ascending};
+  const auto check = std::find_if(g.checks.begin(), g.checks.end(), [&](const CheckGrade& c) { return c.name == m.check; });
+  if (check == g.checks.end() || check->runs.empty()) return v;
+  double sum = 0.0;
+  for (const RunGrade& r : check->runs) {
+    const auto found =
+        std::find_if(r.criteria.begin(), r.criteria.end(), [&](const CriterionVerdict& c) { return c.criterion == toString(m.criterion); });
+    if (found == r.criteria.end() || !found->passed || !found->margin) return v;
+    const std::optional<double> measure = m.measure == LeaderboardMetric::Measure::Time ? found->margin->at : found->margin->value;
+    if (!measure) return v;
+    sum += *measure;
+  }
+  v.value = sum / static_cast<double>(check->runs.size());
+  return v;
+}
+
 double Grade::score() const {
   double s = 0;
   for (const CheckGrade& c : checks) s += c.score;
@@ -396,6 +413,7 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
     cg.score = cg.runs.empty() ? 0.0 : check.points * static_cast<double>(passed) / static_cast<double>(cg.runs.size());
     g.checks.push_back(std::move(cg));
   }
+  for (const LeaderboardMetric& m : def.rubric.leaderboard) g.leaderboard.push_back(leaderboardValue(m, g));
   // Lateness takes its share of what the checks earned, for each day or part of one.
   if (def.daysLate && *def.daysLate > 0 && def.rubric.latePerDay > 0) {
     const double days = std::ceil(*def.daysLate - 1e-9), share = std::min(def.rubric.lateMost, def.rubric.latePerDay * days);

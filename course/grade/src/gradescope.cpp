@@ -71,7 +71,7 @@ if [ -f "$root/source/secret.txt" ]; then export FROB_GRADE_SECRET="$(head -n 1 
 late=()  # when the rubric takes points for lateness, Gradescope's times say how late
 if [ -f "$root/submission_metadata.json" ]; then late=(--submission-metadata "$root/submission_metadata.json"); fi
 exec bash "$root/source/course/autograder/grade_submission.sh" gradescope "$root/source/assignments/ASSIGNMENT" "$root/submission" \
-  "$root/results/results.json" --logs "$root/results/logs" "${late[@]}"
+  "$root/results/results.json" "${late[@]}"
 )sh";
 
 // What of frob's sources the autograder builds from: everything but tests, builds and the other assignments.

@@ -1,9 +1,10 @@
 // PrairieLearn's external grader results.json, as its documentation says
 // (https://prairielearn.readthedocs.io/en/latest/externalGrading/#grading-results): "score" in [0, 1];
 // "gradable": false for a submission that could not be compiled (no attempt is used up) with
-// "format_errors"; the file must stay under 1 MB.
+// "format_errors"; a test's "images" are {label, url} with data: URLs; the file must stay under 1 MB.
 
 #include "frob/grade/grade_report.hpp"
+#include "markup.hpp"
 #include "writers.hpp"
 
 #include <algorithm>
@@ -22,7 +23,18 @@ std::string clip(const std::string& text, std::size_t limit) {
   return text.substr(0, end) + "\n[... " + std::to_string(text.size() - end) + " more bytes cut]\n";
 }
 
-Json prairieLearnResults(const Grade& g, std::size_t limit) {
+// The images of check `name`, as data: URLs; an image that cannot be read is left out.
+Json imagesOf(const std::string& name, const std::vector<CheckImage>& images) {
+  Json list = Json::array();
+  for (const CheckImage& i : images) {
+    if (i.check != name) continue;
+    if (Result<std::string> png = readWhole(i.png, "image"))
+      list.push_back(Json{{"label", i.label}, {"url", "data:image/png;base64," + base64(png.value())}});
+  }
+  return list;
+}
+
+Json prairieLearnResults(const Grade& g, std::size_t limit, const std::vector<CheckImage>& images) {
   Json doc;
   const bool gradable = g.compileError.empty();
   const double max = g.maxScore();
@@ -62,6 +74,7 @@ Json prairieLearnResults(const Grade& g, std::size_t limit) {
     t["max_points"] = rounded(c.points);
     t["output"] = clip(c.output(), limit);
     t["message"] = c.runs.empty() ? std::string("not run") : std::to_string(passedRuns(c)) + " of " + std::to_string(c.runs.size()) + " runs passed";
+    if (Json shown = imagesOf(c.name, images); !shown.empty()) t["images"] = std::move(shown);
     tests.push_back(std::move(t));
   }
   if (hidden > 0) {
@@ -79,14 +92,15 @@ Json prairieLearnResults(const Grade& g, std::size_t limit) {
 
 }  // namespace
 
-Status writePrairieLearn(const Grade& g, const std::filesystem::path& path) {
-  // PrairieLearn rejects results over 1 MB: long texts are cut until the file fits.
+Status writePrairieLearn(const Grade& g, const std::filesystem::path& path, const std::vector<CheckImage>& images) {
+  // PrairieLearn rejects results over 1 MB: the images go first, then long texts are cut until the file fits.
   constexpr std::size_t kMaxBytes = 1'000'000;
   std::size_t limit = kMaxBytes;
-  std::string text = jsonText(prairieLearnResults(g, limit));
+  std::string text = jsonText(prairieLearnResults(g, limit, images));
+  if (text.size() > kMaxBytes) text = jsonText(prairieLearnResults(g, limit, {}));
   while (text.size() > kMaxBytes && limit > 1000) {
     limit /= 2;
-    text = jsonText(prairieLearnResults(g, limit));
+    text = jsonText(prairieLearnResults(g, limit, {}));
   }
   if (text.size() > kMaxBytes) {
     return Status::failure("prairielearn results: cannot write '" + path.string() + "': the results take " + std::to_string(text.size()) +

@@ -50,7 +50,7 @@ class RubricReader : worlds::TomlReader {
 
  private:
   bool readRubric(const toml::table& root) {
-    if (!onlyKeys(root, "", {"title", "reference", "starter", "dt", "seconds", "late", "check"})) return false;
+    if (!onlyKeys(root, "", {"title", "reference", "starter", "dt", "seconds", "late", "check", "leaderboard"})) return false;
     if (const toml::node* late = root.get("late")) {
       const toml::table* t = table(*late, "late");
       if (t == nullptr || !onlyKeys(*t, "late.", {"per_day", "most"}) || !need(*t, "per_day", "late.", rubric_.latePerDay) ||
@@ -82,6 +82,55 @@ class RubricReader : worlds::TomlReader {
         if (other.name == c.name) return fail(c.line, field + "name", "'" + c.name + "' names two checks");
       }
       rubric_.checks.push_back(std::move(c));
+    }
+    return readLeaderboard(root);
+  }
+
+  // `[[leaderboard]]`: each names a criterion of a visible check and what of it to rank by.
+  bool readLeaderboard(const toml::table& root) {
+    const toml::node* n = root.get("leaderboard");
+    if (n == nullptr) return true;
+    const toml::array* list = n->as_array();
+    if (list == nullptr) return fail(*n, "leaderboard", "expected [[leaderboard]] tables");
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const std::string field = "leaderboard[" + std::to_string(i) + "].";
+      const toml::table* t = table((*list)[i], field);
+      if (t == nullptr || !onlyKeys(*t, field, {"name", "check", "criterion", "measure", "order"})) return false;
+      LeaderboardMetric m{.line = line((*list)[i])};
+      std::string criterion, measure = "margin", order;
+      for (const char* key : {"name", "check", "criterion"}) {
+        if (t->get(key) == nullptr) return fail(m.line, field + key, "missing");
+      }
+      if (!string(*t->get("name"), field + "name", m.name) || !string(*t->get("check"), field + "check", m.check) ||
+          !string(*t->get("criterion"), field + "criterion", criterion) || !optString(*t, "measure", field + "measure", measure) ||
+          !optString(*t, "order", field + "order", order))
+        return false;
+      const auto check = std::find_if(rubric_.checks.begin(), rubric_.checks.end(), [&](const Check& c) { return c.name == m.check; });
+      if (check == rubric_.checks.end()) return fail(*t->get("check"), field + "check", "no check is named '" + m.check + "'");
+      if (check->visibility != Visibility::Visible) {
+        return fail(*t->get("check"), field + "check",
+                    "'" + m.check + "' is not visible: every student reads a leaderboard, and a hidden check's numbers are chosen by the controller");
+      }
+      const auto given =
+          std::find_if(check->criteria.begin(), check->criteria.end(), [&](const Criterion& c) { return toString(c.kind) == criterion; });
+      if (given == check->criteria.end())
+        return fail(*t->get("criterion"), field + "criterion", "check '" + m.check + "' has no " + criterion + " criterion");
+      m.criterion = given->kind;
+      if (measure == "time") {
+        m.measure = LeaderboardMetric::Measure::Time;
+        if ((m.criterion != Kind::Goal && m.criterion != Kind::Waypoints) || given->seconds <= 0)
+          return fail(*t->get("measure"), field + "measure",
+                      "\"time\" is when a goal or the last waypoint was reached: the criterion must be one with `by`");
+      } else if (measure != "margin") {
+        return fail(*t->get("measure"), field + "measure", "expected \"time\" or \"margin\"");
+      }
+      m.ascending = m.measure == LeaderboardMetric::Measure::Time;
+      if (order == "asc" || order == "desc") {
+        m.ascending = order == "asc";
+      } else if (!order.empty()) {
+        return fail(*t->get("order"), field + "order", "expected \"asc\" (smaller first) or \"desc\"");
+      }
+      rubric_.leaderboard.push_back(std::move(m));
     }
     return true;
   }

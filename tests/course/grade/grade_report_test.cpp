@@ -152,26 +152,97 @@ TEST(Gradescope, FieldsAsTheSpecificationNamesThem) {
          {"score", 2},
          {"max_score", 2},
          {"status", "passed"},
-         {"output", ""},
+         {"output", "- **empty\\, seed 1**: passed\n- **maze\\, seed 2**: passed\n"},
+         {"output_format", "md"},
          {"visibility", "visible"},
          {"tags", {"empty", "maze"}}},
         {{"name", "avoids walls"},
          {"score", 0.5},
          {"max_score", 1},
          {"status", "failed"},
-         {"output", "in maze, seed 3: touched a wall at 41.2 s at (3.1, 4.5)\n"},
+         {"output", "- **maze\\, seed 3**: failed: touched a wall at 41\\.2 s at \\(3\\.1\\, 4\\.5\\)\n- **maze\\, seed 4**: passed\n"},
+         {"output_format", "md"},
          {"visibility", "visible"},
          {"tags", {"maze"}}},
         {{"name", "secret worlds"},
          {"score", 0},
          {"max_score", 2},
          {"status", "failed"},
-         {"output", "in hidden world 1: it failed the rubric's \"goal\" criterion" + kNoDetails + "\n"},
+         {"output",
+          "- **hidden world 1**: failed: it failed the rubric\\'s \\\"goal\\\" criterion \\(hidden worlds give no details\\: practise with frob "
+          "grade \\-\\-practice\\)\n"},
+         {"output_format", "md"},
          {"visibility", "hidden"},
          {"tags", json::array()}}}},
+      {"extra_data",
+       {{"submission_sha256", "5ca1ab1e"},
+        {"runs",
+         {{{"check", "reaches the goal"}, {"run", "empty, seed 1"}, {"trajectory", "0000000000000011"}},
+          {{"check", "reaches the goal"}, {"run", "maze, seed 2"}, {"trajectory", "0000000000000012"}},
+          {{"check", "avoids walls"}, {"run", "maze, seed 3"}, {"trajectory", "0000000000000013"}},
+          {{"check", "avoids walls"}, {"run", "maze, seed 4"}, {"trajectory", "0000000000000014"}},
+          {{"check", "secret worlds"}, {"run", "hidden world 1"}, {"trajectory", "0000000000000017"}}}}}},
   };
   EXPECT_EQ(doc, want) << doc.dump(2);
   EXPECT_TRUE(doc["execution_time"].is_number_integer());
+}
+
+TEST(Gradescope, TestOutputIsMarkdownInWhichNoTextOfTheRunMarksAnythingUp) {
+  const fs::path dir = scratch("gradescope_markdown");
+  Grade g = sample();
+  const std::string hostile = "returned [click](http://evil.example) ![x](y) <b>*bold*</b> `code` # head | cell _em_ ~s~ \\ & done";
+  g.checks[1].runs[0].reason = hostile;
+  g.checks[1].runs[0].hints = {"hint [a](b)"};
+  ASSERT_TRUE(writeGradescope(g, dir / "results.json").ok());
+  const std::string md = json::parse(readFile(dir / "results.json"))["tests"][1]["output"];
+  const std::string line = md.substr(0, md.find('\n'));
+  const std::string shown = line.substr(line.find("failed: ") + 8);
+  // Every ASCII punctuation character of the reason is escaped (CommonMark's backslash escapes), so it reads as written.
+  std::string unescaped;
+  for (std::size_t i = 0; i < shown.size(); ++i) {
+    if (shown[i] == '\\') {
+      ASSERT_LT(i + 1, shown.size());
+      ASSERT_TRUE(std::ispunct(static_cast<unsigned char>(shown[i + 1]))) << shown;
+      unescaped += shown[++i];
+    } else {
+      ASSERT_FALSE(std::ispunct(static_cast<unsigned char>(shown[i]))) << "unescaped '" << shown[i] << "' in " << shown;
+      unescaped += shown[i];
+    }
+  }
+  EXPECT_EQ(unescaped, hostile);
+  EXPECT_NE(md.find("  - hint: hint \\[a\\]\\(b\\)\n"), std::string::npos) << md;
+}
+
+TEST(Gradescope, ALeaderboardEntryForEachBoardTheSubmissionIsOn) {
+  const fs::path dir = scratch("gradescope_leaderboard");
+  Grade g = sample();
+  g.leaderboard = {{.name = "Time to wp4 (s)", .value = 60.31449, .ascending = true},
+                   {.name = "Missed", .value = std::nullopt},
+                   {.name = "Spare (m)", .value = 0.25, .ascending = false}};
+  ASSERT_TRUE(writeGradescope(g, dir / "results.json").ok());
+  const json want = {{{"name", "Time to wp4 (s)"}, {"value", 60.314}, {"order", "asc"}}, {{"name", "Spare (m)"}, {"value", 0.25}, {"order", "desc"}}};
+  EXPECT_EQ(json::parse(readFile(dir / "results.json"))["leaderboard"], want);
+  ASSERT_TRUE(writeGradescope(sample(), dir / "none.json").ok());
+  EXPECT_FALSE(json::parse(readFile(dir / "none.json")).contains("leaderboard"));  // no board, no key
+}
+
+TEST(Grade, ALeaderboardValueIsTheMeanOverTheChecksRunsAndNoneWhenOneMissed) {
+  Grade g = sample();
+  const auto verdict = [](bool passed, double value, double at) {
+    return CriterionVerdict{.criterion = "goal", .passed = passed, .margin = Margin{.value = value, .unit = "s", .at = at}};
+  };
+  g.checks[0].runs[0].criteria = {verdict(true, 5.0, 55.0)};
+  g.checks[0].runs[1].criteria = {verdict(true, 2.0, 58.0)};
+  const LeaderboardMetric time{.name = "t", .check = "reaches the goal", .measure = LeaderboardMetric::Measure::Time, .ascending = true};
+  const LeaderboardMetric spare{.name = "s", .check = "reaches the goal", .measure = LeaderboardMetric::Measure::Margin};
+  EXPECT_EQ(leaderboardValue(time, g).value, 56.5);
+  EXPECT_EQ(leaderboardValue(spare, g).value, 3.5);
+  EXPECT_TRUE(leaderboardValue(time, g).ascending);
+  g.checks[0].runs[1].criteria = {verdict(false, -2.0, 62.0)};
+  EXPECT_FALSE(leaderboardValue(time, g).value);  // a run missed it: no place on the board
+  LeaderboardMetric other = time;
+  other.check = "no such check";
+  EXPECT_FALSE(leaderboardValue(other, g).value);
 }
 
 TEST(Gradescope, CompileErrorIsTheOutputAndBadUtf8IsReplaced) {
@@ -225,6 +296,41 @@ TEST(PrairieLearn, ScoreIsAFractionAndHiddenChecksAreSummed) {
   // PrairieLearn shows students every test: nothing of the hidden check may be in the file.
   EXPECT_EQ(text.find("secret worlds"), std::string::npos);
   EXPECT_EQ(text.find("rooms"), std::string::npos);
+}
+
+TEST(PrairieLearn, AVisibleChecksPictureIsOnItsTestAndNoHiddenOnesAnywhere) {
+  const fs::path dir = scratch("prairielearn_images");
+  const std::string png = std::string("\x89PNG\r\n\x1a\n", 8) + std::string(300, '\x07');
+  writeFile(dir / "plot.png", png);
+  const std::vector<CheckImage> images = {{.check = "avoids walls", .label = "the first failing run: maze, seed 3", .png = dir / "plot.png"},
+                                          {.check = "secret worlds", .label = "hidden", .png = dir / "plot.png"}};
+  ASSERT_TRUE(writePrairieLearn(sample(), dir / "results.json", images).ok());
+  const std::string text = readFile(dir / "results.json");
+  const json doc = json::parse(text);
+  EXPECT_FALSE(doc["tests"][0].contains("images"));
+  ASSERT_EQ(doc["tests"][1]["images"].size(), 1u);
+  EXPECT_EQ(doc["tests"][1]["images"][0]["label"], "the first failing run: maze, seed 3");
+  const std::string url = doc["tests"][1]["images"][0]["url"];
+  const std::string prefix = "data:image/png;base64,";
+  ASSERT_EQ(url.substr(0, prefix.size()), prefix);
+  EXPECT_EQ(url.substr(prefix.size(), 12), "iVBORw0KGgoH");  // the PNG signature, then the first 0x07
+  EXPECT_EQ(url.size(), prefix.size() + (png.size() + 2) / 3 * 4);
+  EXPECT_FALSE(doc["tests"][2].contains("images"));
+  EXPECT_EQ(text.find("hidden\""), std::string::npos);
+  // A picture that would take the file past 1 MB is left out; the results stay whole.
+  writeFile(dir / "big.png", std::string(800'000, 'x'));
+  ASSERT_TRUE(writePrairieLearn(sample(), dir / "big.json", {{.check = "avoids walls", .label = "big", .png = dir / "big.png"}}).ok());
+  const std::string big = readFile(dir / "big.json");
+  EXPECT_LE(big.size(), 1'000'000u);
+  EXPECT_FALSE(json::parse(big)["tests"][1].contains("images"));
+  // The picture goes before any text is cut.
+  Grade wordy = sample();
+  wordy.notes = {std::string(600'000, 'n')};
+  writeFile(dir / "mid.png", std::string(300'000, 'x'));
+  ASSERT_TRUE(writePrairieLearn(wordy, dir / "wordy.json", {{.check = "avoids walls", .label = "mid", .png = dir / "mid.png"}}).ok());
+  const json kept = json::parse(readFile(dir / "wordy.json"));
+  EXPECT_FALSE(kept["tests"][1].contains("images"));
+  EXPECT_EQ(kept["output"], "Note: " + wordy.notes[0] + "\n");
 }
 
 TEST(PrairieLearn, NotCompilingIsNotGradable) {

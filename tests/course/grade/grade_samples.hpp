@@ -55,6 +55,10 @@ inline Grade sample() {
        .runs = {fail("rooms", 7, "not within 0.3 m of goal by 60 s", "it failed the rubric's \"goal\" criterion")}},
   };
   g.notes = {"the controller printed more than 1 MB; the rest was cut"};
+  g.submissionHash = "5ca1ab1e";
+  for (CheckGrade& c : g.checks) {
+    for (RunGrade& r : c.runs) r.trajectoryHash = 0x10 + r.seed;
+  }
   return g;
 }
 

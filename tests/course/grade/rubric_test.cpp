@@ -104,6 +104,32 @@ TEST(Rubric, ACheckWithoutSeedsGetsADrawnOne) {
   EXPECT_NE(seedsOf(hidden, "s3cret"), seedsOf(hidden, "other"));
 }
 
+// A leaderboard after the checks (line 21 on): kGood plus this, edited by the mistakes below.
+constexpr const char* kBoard = R"toml(
+[[leaderboard]]
+name = "Time to the goal (s)"
+check = "reaches the goal"
+criterion = "goal"
+measure = "time"
+)toml";
+
+TEST(Rubric, ALeaderboardRanksAVisibleChecksCriterion) {
+  Result<Rubric> r = loadRubric(rubricFile(
+      "leaderboard", std::string(kGood) + kBoard + "[[leaderboard]]\nname = \"Spare\"\ncheck = \"reaches the goal\"\ncriterion = \"collisions\"\n"));
+  ASSERT_TRUE(r.ok()) << r.error();
+  ASSERT_EQ(r.value().leaderboard.size(), 2u);
+  const LeaderboardMetric& time = r.value().leaderboard[0];
+  EXPECT_EQ(time.name, "Time to the goal (s)");
+  EXPECT_EQ(time.check, "reaches the goal");
+  EXPECT_EQ(time.criterion, Kind::Goal);
+  EXPECT_EQ(time.measure, LeaderboardMetric::Measure::Time);
+  EXPECT_TRUE(time.ascending);  // a time: the smaller the better
+  const LeaderboardMetric& spare = r.value().leaderboard[1];
+  EXPECT_EQ(spare.criterion, Kind::Collisions);
+  EXPECT_EQ(spare.measure, LeaderboardMetric::Measure::Margin);
+  EXPECT_FALSE(spare.ascending);  // a margin: the larger the better
+}
+
 struct Mistake {
   std::string replace, with;  // an edit of kGood
   std::string error;          // the whole message after "<file>:"
@@ -114,7 +140,7 @@ void PrintTo(const Mistake& m, std::ostream* os) { *os << m.with; }
 class RubricMistake : public ::testing::TestWithParam<Mistake> {};
 
 TEST_P(RubricMistake, IsOneLineNamingFileLineAndField) {
-  std::string text = kGood;
+  std::string text = std::string(kGood) + kBoard;
   const std::size_t at = text.find(GetParam().replace);
   ASSERT_NE(at, std::string::npos);
   text.replace(at, GetParam().replace.size(), GetParam().with);
@@ -148,6 +174,16 @@ INSTANTIATE_TEST_SUITE_P(
                 "20: check[1].goal.by: missing: a check that is not visible must give the time allowed"},
         Mistake{"returns = { value = true }", "waypoints = { points = [\"a\"], within = 0.3 }",
                 "20: check[1].waypoints.by: missing: a check that is not visible must give the time allowed"},
+        Mistake{"check = \"reaches the goal\"\ncriterion", "check = \"hidden fields\"\ncriterion",
+                "24: leaderboard[0].check: 'hidden fields' is not visible: every student reads a leaderboard, and a hidden check's numbers are "
+                "chosen by the controller"},
+        Mistake{"criterion = \"goal\"", "criterion = \"coverage\"",
+                "25: leaderboard[0].criterion: check 'reaches the goal' has no coverage criterion"},
+        Mistake{"check = \"reaches the goal\"\ncriterion", "check = \"reaches\"\ncriterion", "24: leaderboard[0].check: no check is named 'reaches'"},
+        Mistake{"goal = { within = 0.2, by = 60 }", "goal = { within = 0.2 }",
+                "26: leaderboard[0].measure: \"time\" is when a goal or the last waypoint was reached: the criterion must be one with `by`"},
+        Mistake{"measure = \"time\"", "measure = \"time\"\norder = \"up\"", "27: leaderboard[0].order: expected \"asc\" (smaller first) or \"desc\""},
+        Mistake{"measure = \"time\"", "measure = \"speed\"", "26: leaderboard[0].measure: expected \"time\" or \"margin\""},
         Mistake{"seconds = 90", "seconds = [", "4: syntax error: Error while parsing value: could not determine value type"}));
 
 TEST(Rubric, GeneratedWorldsFromSeedsAndFromTheSecret) {

@@ -93,6 +93,13 @@ struct CheckGrade {
   [[nodiscard]] std::string output() const;
 };
 
+/// A submission's place on one of the rubric's leaderboards (LeaderboardMetric).
+struct LeaderboardValue {
+  std::string name;
+  std::optional<double> value;  ///< the mean over the check's runs; unset when a run missed the criterion (no place on the board)
+  bool ascending = false;
+};
+
 /// A submission's grade.
 struct Grade {
   std::string assignment;
@@ -101,14 +108,19 @@ struct Grade {
   std::string compileError;    ///< the compiler's complaint when it did not compile (then every check scores 0)
   std::string graderFailure;   ///< why frob or the machine could not grade it (kGraderFailure): then it has no grade at all, not 0
   std::vector<CheckGrade> checks;
-  double latePenalty = 0.0;        ///< points taken for lateness (Rubric::latePerDay), already out of score()
-  std::vector<std::string> notes;  ///< e.g. output that was cut
-  std::string sandboxMissing;      ///< the sandbox's layers this machine could not apply, one per line; for the instructor only
-  double wallSeconds = 0.0;        ///< how long grading took (with the runs' and startedAt, the only fields that differ between two gradings)
-  std::string startedAt;           ///< when grading began, UTC, as 2026-12-02T21:58:37
+  double latePenalty = 0.0;                   ///< points taken for lateness (Rubric::latePerDay), already out of score()
+  std::vector<LeaderboardValue> leaderboard;  ///< one per Rubric::leaderboard entry
+  std::vector<std::string> notes;             ///< e.g. output that was cut
+  std::string sandboxMissing;                 ///< the sandbox's layers this machine could not apply, one per line; for the instructor only
+  double wallSeconds = 0.0;  ///< how long grading took (with the runs' and startedAt, the only fields that differ between two gradings)
+  std::string startedAt;     ///< when grading began, UTC, as 2026-12-02T21:58:37
   [[nodiscard]] double score() const;
   [[nodiscard]] double maxScore() const;
 };
+
+/// Where `grade` stands on `metric`'s board: the mean of the criterion's measure over the check's
+/// runs (Margin::at for a time, Margin::value for a margin); none when a run missed the criterion.
+[[nodiscard]] LeaderboardValue leaderboardValue(const LeaderboardMetric& metric, const Grade& grade);
 
 /// How many days after its due date a submission came, from Gradescope's submission_metadata.json
 /// (`created_at` against `assignment.due_date`, ISO 8601 with offsets); negative when early.

@@ -30,9 +30,17 @@ namespace frob::course {
 /// summary of the visible checks (the compile error when there is one), one test per check.
 [[nodiscard]] Status writeGradescope(const Grade& grade, const std::filesystem::path& path);
 
+/// A picture shown with a check's result: a PNG of one of its runs (a visible check's only).
+struct CheckImage {
+  std::string check;  ///< the check it belongs to
+  std::string label;  ///< what it shows: "the first failing run: lounge, seed 3"
+  std::filesystem::path png;
+};
+
 /// Writes PrairieLearn's external-grader results.json: score in [0, 1], one test per visible check
-/// (hidden ones summed into one), and "gradable": false with the compile error when it did not compile.
-[[nodiscard]] Status writePrairieLearn(const Grade& grade, const std::filesystem::path& path);
+/// (hidden ones summed into one) with its `images` (data: URLs; left out when they would take the file
+/// past PrairieLearn's 1 MB), and "gradable": false with the compile error when it did not compile.
+[[nodiscard]] Status writePrairieLearn(const Grade& grade, const std::filesystem::path& path, const std::vector<CheckImage>& images = {});
 
 /// Writes JUnit XML: one <testsuite> named after the assignment, one <testcase> per run of each
 /// check ("check / world seed N"), a <failure> with the reason for each failed run.

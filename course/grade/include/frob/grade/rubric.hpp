@@ -94,6 +94,21 @@ struct Check {
   [[nodiscard]] bool waitsForAReturn() const;
 };
 
+/// A number Gradescope's leaderboard ranks submissions by: one criterion of a visible check, averaged
+/// over the check's runs (a hidden check's would be a number the controller chooses, read by every student).
+struct LeaderboardMetric {
+  enum class Measure {
+    Time,    ///< when the criterion was met, s (a goal or waypoints with `by`)
+    Margin,  ///< by how much it was met, in the criterion's unit (Margin)
+  };
+  std::string name;  ///< the column Gradescope shows: "Time to the last waypoint (s)"
+  std::string check;
+  Criterion::Kind criterion = Criterion::Kind::Goal;
+  Measure measure = Measure::Margin;
+  bool ascending = false;  ///< smaller ranks first (Gradescope's "asc"); default: for a time, else larger first
+  int line = 0;
+};
+
 /// An assignment's rubric.
 struct Rubric {
   std::string title;
@@ -106,6 +121,7 @@ struct Rubric {
   /// or part of one a submission comes after its due date, at most `most`; per_day 0: none.
   double latePerDay = 0.0;
   double lateMost = 1.0;
+  std::vector<LeaderboardMetric> leaderboard;  ///< `[[leaderboard]]` entries, in order
   /// Total points.
   [[nodiscard]] double points() const;
   /// True when some check draws seeds or worlds from the instructor's secret.
