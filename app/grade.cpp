@@ -126,8 +126,28 @@ int notGraded(const course::Grade& g) {
 // Grades `submissions` of `students` into the class folder `a.out`: each student's folder (their
 // results.json, junit.xml, grade.json, wheel logs, and report.html when they lost points), their rows
 // of its gradebook, then its summary. The other students' rows and folders stay.
-int gradeIntoFolder(const GradeArgs& a, const course::GradeDef& def, const std::vector<fs::path>& submissions,
-                    const std::vector<std::string>& students) {
+// With --changed, of `submissions`, those whose row of the class folder's gradebook (made for `checks`)
+// the rubric as it now is changes, judged again from their logs; and those it cannot tell of without
+// grading them again (no row, no logs, other runs, another simulator).
+void keepChanged(const course::GradeDef& def, const fs::path& dir, const std::vector<std::string>& checks, std::vector<fs::path>& submissions,
+                 std::vector<std::string>& students) {
+  std::vector<fs::path> again;
+  std::vector<std::string> who;
+  std::size_t changed = 0, unlogged = 0;
+  for (std::size_t k = 0; k < submissions.size(); ++k) {
+    const std::optional<course::Grade> now = course::rejudge(def, submissions[k], dir / students[k] / "logs");
+    if (now && !course::changesRow(dir, checks, students[k], *now)) continue;
+    ++(now ? changed : unlogged);
+    again.push_back(submissions[k]), who.push_back(students[k]);
+  }
+  std::string names;
+  for (const std::string& s : who) names += (names.empty() ? ": grading again " : ", ") + course::terminalSafe(s);
+  std::fprintf(stderr, "frob: of %zu students, %zu unchanged, %zu changed by the rubric as it now is, %zu without logs of the runs it now makes%s\n",
+               submissions.size(), submissions.size() - who.size(), changed, unlogged, names.c_str());
+  submissions = std::move(again), students = std::move(who);
+}
+
+int gradeIntoFolder(const GradeArgs& a, const course::GradeDef& def, std::vector<fs::path> submissions, std::vector<std::string> students) {
   const fs::path dir = a.out;
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -136,6 +156,7 @@ int gradeIntoFolder(const GradeArgs& a, const course::GradeDef& def, const std::
   for (const course::Check& c : def.rubric.checks) {
     if (!def.visibleOnly || c.visibility == course::Visibility::Visible) checks.push_back(c.name);
   }
+  if (a.changed) keepChanged(def, dir, checks, submissions, students);
   std::vector<std::optional<course::StudentFolder>> folders(submissions.size());
   std::vector<std::string> problems(submissions.size());
   const course::ClassHooks hooks{.logs =

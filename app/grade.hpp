@@ -13,6 +13,7 @@ struct GradeArgs {
   std::string submissionMetadata;  // Gradescope's submission_metadata.json: how late it came
   std::vector<std::string> merge;
   bool visibleOnly = false;
+  bool changed = false;  // with --out: grade again only those whose result the rubric as it now is changes
   int jobs = 1;
   int practice = 0;                // grade the hidden checks' criteria in this many worlds of their families instead
   std::uint64_t practiceSeed = 1;  // the student's own seed for them

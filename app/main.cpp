@@ -403,6 +403,8 @@ int main(int argc, char** argv) {
   frob grade go_to_goal my.cpp --visible-only --report r.html   check your work as students may
   frob grade go_to_goal my.cpp --practice 5 --seed 7           practise the hidden checks on their family
   frob grade go_to_goal sub.cpp --results results.json --junit r.xml --logs logs/
+  frob grade go_to_goal class/ --jobs 2 --out graded/           a folder per student, a gradebook and a summary
+  frob grade go_to_goal class/ --out graded/ --changed         after a fix of the rubric, only those it changes
   frob grade go_to_goal class/ --jobs 2 --shard 1/4 --gradebook shard1.csv
   frob grade --merge shard1.csv shard2.csv shard3.csv shard4.csv --gradebook grades.csv
   frob grade --replay logs/reaches_the_goal__maze__3.log --secret secret.txt   a disputed run, judged again
@@ -424,9 +426,13 @@ The rubric format and the instructors' guide: course/grading.md)");
   gradeCmd->add_option("--secret", grade.secret, "The instructor's secret for hidden seeds (default: $FROB_GRADE_SECRET)");
   gradeCmd->add_option("--jobs", grade.jobs, "Submissions graded at once (a class)")->capture_default_str()->check(CLI::Range(1, 256));
   gradeCmd->add_option("--shard", grade.shard, "Grade only shard I of N of the class, e.g. 2/8 (the same split on every machine)");
-  gradeCmd->add_option("--out", grade.out,
-                       "The class folder: DIR/gradebook.csv, a row per student, and DIR/<student>/ with their results and report; "
-                       "grading one student again replaces theirs only");
+  CLI::Option* outOption = gradeCmd->add_option("--out", grade.out,
+                                                "The class folder: DIR/gradebook.csv, a row per student, and DIR/<student>/ with their results "
+                                                "and report; grading one student again replaces theirs only");
+  gradeCmd
+      ->add_flag("--changed", grade.changed,
+                 "After a fix of the rubric: grade again only the students of --out whose result it changes (judged again from their logs)")
+      ->needs(outOption);
   gradeCmd->add_option("--gradebook", grade.gradebook, "Write the class's gradebook (CSV)");
   gradeCmd->add_option("--merge", grade.merge, "Merge these shard gradebooks into --gradebook");
   gradeCmd->add_option("--replay", grade.replay,

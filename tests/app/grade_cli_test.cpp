@@ -292,6 +292,55 @@ TEST(GradeCli, AClassIntoAFolderGivesEachStudentTheirOwnEvidence) {
   for (const std::string& name : filesIn(dir / "out")) EXPECT_FALSE(name.ends_with(".partial") || name.ends_with(".old")) << name;
 }
 
+// --changed after a fix of the rubric: each student's logged runs are judged again under it, and only
+// those whose row it changes are graded again (their folders rewritten), with those whose runs it
+// now makes otherwise (no logs: a failed compile; another length); the others are left as they were.
+TEST(GradeCli, AFixedRubricGradesAgainOnlyThoseItChanges) {
+  const fs::path dir = assignment("grade_cli_changed");
+  fs::create_directories(dir / "class");
+  std::ofstream(dir / "class" / "ann.cpp") << driver("0.5");
+  std::ofstream(dir / "class" / "ben.cpp") << driver("0.1");
+  std::ofstream(dir / "class" / "cat.cpp") << "not C++";
+  std::ofstream(dir / "secret.txt") << "course secret\n";
+  const std::vector<std::string> again{"grade", "forward", "class", "--out", "out", "--secret", "secret.txt", "--changed"};
+  ASSERT_EQ(runFrob(dir, {"grade", "forward", "class", "--out", "out", "--secret", "secret.txt"}).status, 0);
+  const auto graded = [&](const std::string& student) { return readFile(dir / "out" / student / "grade.json"); };  // it says when it was graded
+  const std::string ann = graded("ann"), ben = graded("ben");
+  ASSERT_EQ(rowOf(readFile(dir / "out" / "gradebook.csv"), "ben").rfind("ben,1,3,graded,0,1,", 0), 0u);
+
+  const FrobResult same = runFrob(dir, again);
+  ASSERT_EQ(same.status, 0) << same.err;
+  EXPECT_NE(same.err.find("frob: of 3 students, 2 unchanged, 0 changed by the rubric as it now is, 1 without logs of the runs it now makes: "
+                          "grading again cat\n"),
+            std::string::npos)
+      << same.err;
+  EXPECT_EQ(graded("ann"), ann);
+  EXPECT_EQ(graded("ben"), ben);
+
+  // A goal of 0.9 m: ben's slow robot (0.3 m driven) now comes near enough; ann's result is as it was.
+  std::string rubric = kRubric;
+  rubric.replace(rubric.find("within = 0.4"), 12, "within = 0.9");
+  std::ofstream(dir / "forward" / "rubric.toml") << rubric;
+  const FrobResult fixed = runFrob(dir, again);
+  ASSERT_EQ(fixed.status, 0) << fixed.err;
+  EXPECT_NE(fixed.err.find("frob: of 3 students, 1 unchanged, 1 changed by the rubric as it now is, 1 without logs of the runs it now makes: "
+                           "grading again ben, cat\n"),
+            std::string::npos)
+      << fixed.err;
+  EXPECT_EQ(rowOf(readFile(dir / "out" / "gradebook.csv"), "ben"), "ben,3,3,graded,2,1,,class/ben.cpp");
+  EXPECT_EQ(graded("ann"), ann);
+  EXPECT_NE(graded("ben"), ben);
+
+  // Runs of 4 s, not 3: no student's logs are of the runs the rubric now makes.
+  rubric.replace(rubric.find("seconds = 3"), 11, "seconds = 4");
+  std::ofstream(dir / "forward" / "rubric.toml") << rubric;
+  const FrobResult longer = runFrob(dir, again);
+  ASSERT_EQ(longer.status, 0) << longer.err;
+  EXPECT_NE(longer.err.find("frob: of 3 students, 0 unchanged, 0 changed by the rubric as it now is, 3 without logs"), std::string::npos)
+      << longer.err;
+  EXPECT_NE(graded("ann"), ann);
+}
+
 // A rubric's late penalty, from Gradescope's submission metadata: a share of the score per day begun,
 // at most `most`; on time, nothing; a time that is not one is the autograder's error, not a grade.
 TEST(GradeCli, ALateSubmissionLosesItsShareAndSaysSo) {

@@ -109,6 +109,32 @@ std::optional<KnownStudent> knownStudent(const fs::path& dir, const fs::path& pa
   return std::nullopt;
 }
 
+namespace {
+
+// A student's gradebook row: student, score, max_score, result, a score per check, reasons, submission.
+std::vector<std::string> gradebookRow(const std::string& student, const Grade& g, const std::vector<std::string>& checks) {
+  const bool scored = g.graderFailure.empty();  // no score at all, never 0
+  std::vector<std::string> row{student, scored ? number(g.score()) : "", number(g.maxScore()), resultKind(g)};
+  for (const std::string& name : checks) {
+    const auto c = std::find_if(g.checks.begin(), g.checks.end(), [&](const CheckGrade& x) { return x.name == name; });
+    row.push_back(c == g.checks.end() || !scored ? std::string() : number(c->score));
+  }
+  row.push_back(reasonsOf(g));
+  row.push_back(g.submission);
+  return row;
+}
+
+}  // namespace
+
+bool changesRow(const fs::path& dir, const std::vector<std::string>& checks, const std::string& student, const Grade& g) {
+  Result<std::string> text = detail::readWhole(dir / "gradebook.csv", "gradebook");
+  if (!text) return true;
+  Result<std::vector<CsvRow>> rows = detail::parseCsv(text.value(), (dir / "gradebook.csv").string());
+  if (!rows) return true;
+  const std::vector<std::string> row = gradebookRow(student, g, checks);
+  return std::none_of(rows.value().begin(), rows.value().end(), [&](const CsvRow& r) { return r.fields == row; });
+}
+
 Status updateClassGradebook(const fs::path& dir, const std::vector<std::string>& checks, const std::vector<StudentGrade>& graded) {
   const fs::path file = dir / "gradebook.csv";
   std::error_code ec;
@@ -142,18 +168,7 @@ Status updateClassGradebook(const fs::path& dir, const std::vector<std::string>&
       rows[r.fields[0]] = r.fields;
     }
   }
-  for (const StudentGrade& s : graded) {
-    const Grade& g = *s.grade;
-    const bool scored = g.graderFailure.empty();  // no score at all, never 0
-    std::vector<std::string> row{s.student, scored ? number(g.score()) : "", number(g.maxScore()), resultKind(g)};
-    for (const std::string& name : checks) {
-      const auto c = std::find_if(g.checks.begin(), g.checks.end(), [&](const CheckGrade& x) { return x.name == name; });
-      row.push_back(c == g.checks.end() || !scored ? std::string() : number(c->score));
-    }
-    row.push_back(reasonsOf(g));
-    row.push_back(g.submission);
-    rows[s.student] = std::move(row);
-  }
+  for (const StudentGrade& s : graded) rows[s.student] = gradebookRow(s.student, *s.grade, checks);
   std::string csv = csvRecord(header);
   for (const auto& [student, row] : rows) csv += csvRecord(row);
   return detail::writeWhole(file, "gradebook", csv);

@@ -14,9 +14,11 @@
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 namespace frob::course {
 
@@ -366,23 +368,17 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
   return kept;
 }
 
-Grade grade(const GradeDef& def, const fs::path& submission) {
-  const auto start = std::chrono::steady_clock::now();
-  Grade g{.assignment = def.assignment, .submission = submission.string(), .submissionHash = submissionHash(submission), .startedAt = utcNow()};
-  KeptWorlds kept;
-  if (def.kept) {
-    kept = *def.kept;
-  } else if (Result<KeptWorlds> fair = fairHiddenWorlds(def)) {
-    kept = fair.value();
-  } else {
-    g.notes.push_back("the hidden worlds were not checked against the reference solution: " + fair.error());
-  }
-  std::string messages;
-  Result<CompiledController> compiled = compileSubmission(submission, def.compiler, &messages);
-  if (!compiled)
-    (isGraderFailure(compiled.status()) ? g.graderFailure : g.compileError) = compiled.error() + (messages.empty() ? "" : "\n" + messages);
+namespace {
+
+// How one run of a check is made: runs `r` (its world and seed set) into `r` and `g`.
+using RunMaker = std::function<void(const Check& check, const WorldRef& ref, const worlds::WorldDef& world, RunGrade& r, Grade& g)>;
+
+// `g`'s checks, each of its runs made by `make` (after `failed`, a reason that stands for every run),
+// then the scores, the leaderboard and the lateness: grading and judging again share it.
+void scoreChecks(const GradeDef& def, Grade& g, const RunMaker& make, const std::string& failed = {}) {
   // Loaded once per world, not per name: two checks' "hidden world 1" are different draws.
   std::map<std::string, Result<worlds::WorldDef>> loaded;
+  const KeptWorlds kept = def.kept.value_or(KeptWorlds{});
   for (const Check& check : def.rubric.checks) {
     if (def.visibleOnly && check.visibility != Visibility::Visible) continue;
     if (!g.graderFailure.empty()) break;  // no grade: nothing more to run
@@ -397,14 +393,14 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
         if (!g.graderFailure.empty()) break;
         RunGrade& r = cg.runs.emplace_back(RunGrade{
             .world = w.name, .seed = seed, .generator = w.generated ? format("%s --seed %" PRIu64, toString(*w.generated), w.worldSeed) : ""});
-        if (!compiled) {
-          r.reason = r.kind = "the submission did not compile";
+        if (!failed.empty()) {
+          r.reason = r.kind = failed;
         } else if (!world) {
           r.reason = "the world could not be loaded: " + world.error();
           r.kind = "the world could not be loaded";
         } else {
           const auto began = std::chrono::steady_clock::now();
-          runCheck(def, compiled.value(), check, w, world.value(), r, g);
+          make(check, w, world.value(), r, g);
           r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
         }
       }
@@ -422,7 +418,71 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
                              (std::to_string(static_cast<int>(std::lround(100 * share))) + "%").c_str(), 100 * def.rubric.latePerDay,
                              100 * def.rubric.lateMost));
   }
+}
+
+// The wheels of `log` played back in `world` for `steps` steps, with what the controller reported.
+Ran replayed(const WheelLog& log, const worlds::WorldDef& world, double dt, std::int64_t steps) {
+  const auto factory = [&](const worlds::Simulation& sim) -> std::unique_ptr<worlds::ControllerDriver> {
+    return std::make_unique<ReplayDriver>(sim.robotCount(), log.wheels);
+  };
+  worlds::Run run(world, {.dt = dt, .seed = log.seed}, factory, {.keepSteps = false});
+  Ran ran = drive(run, world, steps);
+  for (const auto& [i, why] : log.failures) ran.record.robots.at(i).failure = why;
+  for (const auto& [i, value] : log.returned) ran.record.robots.at(i).returned = value;
+  for (const auto& [i, at] : log.returnedAt) ran.record.robots.at(i).returnedAt = at;
+  return ran;
+}
+
+}  // namespace
+
+Grade grade(const GradeDef& def, const fs::path& submission) {
+  const auto start = std::chrono::steady_clock::now();
+  Grade g{.assignment = def.assignment, .submission = submission.string(), .submissionHash = submissionHash(submission), .startedAt = utcNow()};
+  GradeDef checked = def;
+  if (!def.kept) {
+    if (Result<KeptWorlds> fair = fairHiddenWorlds(def)) {
+      checked.kept = fair.value();
+    } else {
+      g.notes.push_back("the hidden worlds were not checked against the reference solution: " + fair.error());
+    }
+  }
+  std::string messages;
+  Result<CompiledController> compiled = compileSubmission(submission, def.compiler, &messages);
+  if (!compiled)
+    (isGraderFailure(compiled.status()) ? g.graderFailure : g.compileError) = compiled.error() + (messages.empty() ? "" : "\n" + messages);
+  scoreChecks(
+      checked, g,
+      [&](const Check& check, const WorldRef& ref, const worlds::WorldDef& world, RunGrade& r, Grade& out) {
+        runCheck(def, compiled.value(), check, ref, world, r, out);
+      },
+      compiled ? "" : "the submission did not compile");
   g.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return g;
+}
+
+std::optional<Grade> rejudge(const GradeDef& def, const fs::path& submission, const fs::path& logs) {
+  Grade g{.assignment = def.assignment, .submission = submission.string(), .submissionHash = submissionHash(submission), .startedAt = utcNow()};
+  bool complete = true;
+  scoreChecks(def, g, [&](const Check& check, const WorldRef& ref, const worlds::WorldDef& world, RunGrade& r, Grade&) {
+    if (!complete) return;
+    // The run as graded: its log, signed with this secret, of this submission in this world with this
+    // seed, as long as the rubric now runs it (or ended sooner by the controller's failure).
+    Result<WheelLog> log = readWheelLog(fileText(logs / logName(check.name, ref.name, r.seed)), def.secret);
+    const std::int64_t steps = stepsFor(check.seconds, def.rubric.dt);
+    complete =
+        log && log.value().check == check.name && log.value().world == ref.name && log.value().seed == r.seed &&
+        log.value().submissionHash == g.submissionHash && log.value().robots == world.robots.size() &&
+        log.value().generated == (ref.generated ? std::string(toString(*ref.generated)) : std::string()) && log.value().worldSeed == ref.worldSeed &&
+        (std::cmp_equal(log.value().wheels.size(), steps) || (std::cmp_less(log.value().wheels.size(), steps) && !log.value().failures.empty()));
+    if (!complete) return;
+    const Ran ran = replayed(log.value(), world, def.rubric.dt, static_cast<std::int64_t>(log.value().wheels.size()));
+    complete = ran.trajectoryHash == log.value().trajectory;  // else the simulator has changed: only a new run can tell
+    judgeRun(check, ran.record, r);
+    r.trajectoryHash = ran.trajectoryHash;
+    r.hints = ran.hints;
+    r.log = logs / logName(check.name, ref.name, r.seed);
+  });
+  if (!complete) return std::nullopt;
   return g;
 }
 
@@ -447,7 +507,6 @@ Result<Replay> replay(const fs::path& file, const std::string& secret, const fs:
   }
   const std::uint64_t seed = log.seed, graded = log.trajectory;
   const std::size_t steps = log.wheels.size(), robots = log.robots;
-  const std::vector<std::vector<Wheels>>& wheels = log.wheels;
   const auto bad = [&](const std::string& what) { return Status::failure(file.string() + ": not a wheel log of frob grade (" + what + ")"); };
   // Named by its assignment's folder (logs of before: the rubric's absolute path): found beside the
   // log or in a folder above it, else as frob grade finds an assignment (the working folder, assignments/).
@@ -475,14 +534,7 @@ Result<Replay> replay(const fs::path& file, const std::string& secret, const fs:
   if (!world) return world.status();
   if (world.value().robots.size() != robots) return bad("the world now has another number of robots");
 
-  const auto factory = [&](const worlds::Simulation& sim) -> std::unique_ptr<worlds::ControllerDriver> {
-    return std::make_unique<ReplayDriver>(sim.robotCount(), wheels);
-  };
-  worlds::Run run(world.value(), {.dt = rubric.value().dt, .seed = seed}, factory, {.keepSteps = false});
-  Ran ran = drive(run, world.value(), static_cast<std::int64_t>(steps));
-  for (const auto& [i, why] : log.failures) ran.record.robots.at(i).failure = why;
-  for (const auto& [i, value] : log.returned) ran.record.robots.at(i).returned = value;
-  for (const auto& [i, at] : log.returnedAt) ran.record.robots.at(i).returnedAt = at;
+  const Ran ran = replayed(log, world.value(), rubric.value().dt, static_cast<std::int64_t>(steps));
   if (ran.trajectoryHash != graded) {
     return Status::failure(file.string() + format(": replaying it gives the trajectory %016" PRIx64 ", not the graded run's %016" PRIx64
                                                   " (the simulator has changed since)",

@@ -54,6 +54,10 @@ struct StudentGrade {
 [[nodiscard]] Status updateClassGradebook(const std::filesystem::path& dir, const std::vector<std::string>& checks,
                                           const std::vector<StudentGrade>& graded);
 
+/// Whether `g` would change `student`'s row of `dir`'s gradebook (made for `checks`): its score, result,
+/// a check's score or a reason; true where there is no such row.
+[[nodiscard]] bool changesRow(const std::filesystem::path& dir, const std::vector<std::string>& checks, const std::string& student, const Grade& g);
+
 /// Writes `g` whole as JSON: every check and run, with reasons, hints, times and trajectories, and
 /// the code's `fingerprints` (codeFingerprints()), as the class summary reads it (summary.html).
 [[nodiscard]] Status writeGradeJson(const Grade& g, const std::string& student, const std::vector<std::uint64_t>& fingerprints,

@@ -131,6 +131,12 @@ struct Grade {
 /// start, a full disk) stops it with Grade::graderFailure set: no score stands.
 [[nodiscard]] Grade grade(const GradeDef& def, const std::filesystem::path& submission);
 
+/// The grade `submission` would get from `def` (a rubric since fixed), judged again from the wheel logs
+/// in `logs` of an earlier grading with the same secret, without compiling or running it. Nothing when
+/// some run `def` makes has no such log (another world, seed or length, or none) or the simulator now
+/// strays from a logged trajectory: then only grading it again can tell.
+[[nodiscard]] std::optional<Grade> rejudge(const GradeDef& def, const std::filesystem::path& submission, const std::filesystem::path& logs);
+
 /// What gradeAll does for each submission besides grading it, in the job that grades it.
 struct ClassHooks {
   std::function<std::filesystem::path(std::size_t k)> logs;   ///< submission k's folder of wheel logs; unset: GradeDef::logs
