@@ -143,11 +143,12 @@ struct Page {
   support::Doc dom;
   std::string console;
 };
-// The page opened at `t` (its address's #t=), or, with none, where the page itself says.
-Page openAt(const Written& w, std::optional<double> t) {
+// The page opened at `t` (its address's #t=), or, with none, where the page itself says; `more`
+// adds to the address ("&next=task:curve").
+Page openAt(const Written& w, std::optional<double> t, const std::string& more = "") {
   const fs::path out = w.dir / "dom.html";
   std::ostringstream hash;
-  if (t) hash << "#t=" << *t;
+  if (t) hash << "#t=" << *t << more;
   // The page inflates its data asynchronously: a virtual time budget lets it finish before the dump.
   const Ran ran = chromium(w.dir, {"--dump-dom", "--virtual-time-budget=20000", "--enable-logging=stderr", "--v=0"}, w.html, out, hash.str());
   EXPECT_EQ(ran.status, 0) << ran.err;
@@ -212,6 +213,41 @@ TEST(RunPage, ThePageOpensAtTheInstantItsBodyNames) {
   ASSERT_TRUE(asked.dom);
   std::snprintf(shown, sizeof shown, "%.2f s", traceAt(w.trace, 1.37).time);
   EXPECT_EQ(one(asked.dom.get(), "//output[@id='time']"), shown);
+}
+
+// Jumps, as the address asks them (the buttons and [ ] call the same): to the next or previous start
+// of a named task, and to where a plotted value crosses a level, found in the trace; none past the
+// last leaves the instant as it was; the page's link to its instant says where it now is.
+TEST(RunPage, JumpsToTheStartOfATaskOrWhereAValueCrossesALevel) {
+  requireChromium();
+  const Written w = runTour("jumps");
+  const auto shown = [](double t) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f s", t);
+    return std::string(text);
+  };
+  const auto opened = [&](double t, const std::string& more) {
+    const Page page = openAt(w, t, more);
+    EXPECT_EQ(page.console, "");
+    return std::pair{one(page.dom.get(), "//output[@id='time']"), one(page.dom.get(), "//a[@id='place']/@href")};
+  };
+  EXPECT_EQ(opened(0.5, "&next=task:curve"), std::pair(shown(2.0), std::string("#t=2.000")));
+  EXPECT_EQ(opened(8.0, "&prev=task:straight").first, shown(0.0));
+  EXPECT_EQ(opened(3.0, "&next=task:curve").first, shown(3.0)) << "the curve starts once";
+  // The forward command drops from 0.4 to 0.3 m/s where the curve begins: the first trace row below 0.35.
+  std::istringstream trace(support::readText(w.trace.string()));
+  std::string line;
+  std::getline(trace, line);
+  double below = -1;
+  while (below < 0 && std::getline(trace, line)) {
+    std::vector<std::string> f;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) f.push_back(cell);
+    if (std::stod(f.at(8)) < 0.35) below = std::stod(f.at(0));
+  }
+  ASSERT_GT(below, 0.0);
+  EXPECT_EQ(opened(0.0, "&next=cross:forward%20(m%2Fs)@0.35").first, shown(below));
+  EXPECT_EQ(opened(0.0, "&next=cross:forward%20(m%2Fs)@0.45").first, shown(0.0)) << "it never reaches 0.45";
 }
 
 TEST(RunPage, TextFromTheControllerIsShownAsTextNeverAsMarkup) {
