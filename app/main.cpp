@@ -216,6 +216,7 @@ int runCommand(RunArgs a) {
   if (rubric) {  // an assignment none of whose checks waits for the task to return: it is meant to run for ever
     const std::vector<course::Check> checks = course::checksFor(*rubric, def.worldName);
     def.meantToRunForever = std::none_of(checks.begin(), checks.end(), [](const course::Check& c) { return c.waitsForAReturn(); });
+    def.measure = [checks](const course::RunRecord& record) { return course::measuredAlong(checks, record); };
   }
   if (Status s = parseSize(a.size, def.view); !s) return fail(s.error());
   def.view.view = a.view == "chase" ? render::ViewMode::Chase : render::ViewMode::TopDown;

@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <sstream>
+
 namespace frob::testing {
 namespace {
 
@@ -200,6 +203,34 @@ clearance = { min = 0.1 }
 
   EXPECT_EQ(runFrob(dir, {"run", "fast.cpp", "--world", "forward/room.toml", "--assignment", "nowhere"}).err,
             "frob: unknown assignment 'nowhere': not a folder of assignments/ (see frob list), and no rubric.toml there\n");
+}
+
+// With --assignment, the trace has a column per quantity the checks judge: here the distance to the
+// goal the "goal" criteria measure, equal at every row to the distance from the row's true position.
+TEST(GradeCli, FrobRunTracesWhatTheAssignmentJudges) {
+  const fs::path dir = assignment("grade_cli_measured");
+  std::ofstream(dir / "fast.cpp") << driver("0.5");
+  const FrobResult run =
+      runFrob(dir, {"run", "fast.cpp", "--world", "forward/room.toml", "--seed", "1", "--assignment", "forward", "--trace", "t.csv", "--quiet"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  std::istringstream trace(readFile(dir / "t.csv"));
+  std::string line;
+  std::getline(trace, line);
+  ASSERT_TRUE(line.ends_with(",bumper,task,goal_distance")) << line;
+  int rows = 0;
+  while (std::getline(trace, line)) {
+    std::vector<std::string> f;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) f.push_back(cell);
+    ASSERT_GE(f.size(), 4u);
+    EXPECT_NEAR(std::stod(f.back()), std::hypot(std::stod(f[2]) - 2.0, std::stod(f[3]) - 1.5), 1e-6) << line;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 300) << "a row per step of 3 s at 100 Hz";
+  // Without an assignment, no such column.
+  ASSERT_EQ(runFrob(dir, {"run", "fast.cpp", "--world", "forward/room.toml", "--seconds", "0.5", "--trace", "u.csv", "--quiet"}).status, 0);
+  const std::string plain = readFile(dir / "u.csv");
+  EXPECT_TRUE(plain.substr(0, plain.find('\n')).ends_with(",bumper,task"));
 }
 
 TEST(GradeCli, AClassInShardsMergesToTheWholeClassesGradebook) {

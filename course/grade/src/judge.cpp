@@ -499,6 +499,69 @@ class Judge {
   // Box2D lets touching bodies overlap by up to a centimetre: closer than this over the distance required is too close.
   static constexpr double kOverlap = 0.01;
 
+ public:
+  // What the criterion measures of each robot at every step, as it measures it to judge.
+  std::vector<Measured> measured() const {
+    std::vector<Measured> out;
+    for (std::size_t i = 0; i < run_.robots.size(); ++i) {
+      const Track& t = run_.robots[i];
+      Measured m{.unit = "m", .robot = i, .dt = run_.dt};
+      switch (c_.kind) {
+        case Kind::WallDistance: {
+          const worlds::WallIndex walls(run_.walls, run_.size, t.radius + c_.distance + c_.tolerance + 1.0);
+          m.name = "wall_distance", m.low = c_.distance - c_.tolerance, m.high = c_.distance + c_.tolerance, m.from = c_.after;
+          for (std::size_t k = 0; k < t.path.size(); ++k) m.values.push_back(wallDistanceAt(t, k, walls) - t.radius);
+          break;
+        }
+        case Kind::Clearance: {
+          const worlds::WallIndex walls(run_.walls, run_.size, t.radius + c_.distance + 1.0);
+          m.name = "clearance", m.low = c_.distance;
+          for (const Point2& p : t.path) m.values.push_back(walls.distance(p) - t.radius);
+          break;
+        }
+        case Kind::Goal: {
+          const std::string name = resolved(c_.point, t);
+          const std::optional<Point2> g = pointNamed(run_, name);
+          if (!g) continue;
+          m.name = name + "_distance", m.high = c_.distance, m.everyInstant = false;
+          for (const Point2& p : t.path) m.values.push_back((p - *g).norm());
+          break;
+        }
+        case Kind::Coverage: {
+          const worlds::FreeGrid grid(run_.walls, run_.size, t.radius, c_.cell);
+          const std::vector<bool> reachable = grid.reachable(grid.cellOf(t.path.front()));
+          const auto free = static_cast<double>(std::count(reachable.begin(), reachable.end(), true));
+          std::vector<bool> visited(reachable.size(), false);
+          double seen = 0;
+          m.name = "covered", m.unit = "%", m.low = 100 * c_.fraction, m.everyInstant = false;
+          for (const Point2& p : t.path) {
+            const std::size_t cell = grid.cellOf(p);
+            if (reachable[cell] && !visited[cell]) visited[cell] = true, ++seen;
+            m.values.push_back(free == 0 ? 0.0 : 100 * seen / free);
+          }
+          break;
+        }
+        case Kind::RobotsApart: {
+          if (run_.robots.size() < 2) continue;
+          m.name = "nearest_robot", m.low = c_.distance + kOverlap;
+          for (std::size_t k = 0; k < t.path.size(); ++k) {
+            double gap = INFINITY;
+            for (const Track& o : run_.robots) {
+              if (&o != &t && k < o.path.size()) gap = std::min(gap, (t.path[k] - o.path[k]).norm() - t.radius - o.radius);
+            }
+            m.values.push_back(gap);
+          }
+          break;
+        }
+        default:
+          continue;
+      }
+      out.push_back(std::move(m));
+    }
+    return out;
+  }
+
+ private:
   Verdict robotsApart() {
     std::optional<Margin> least;
     for (std::size_t i = 0; i < run_.robots.size(); ++i) {
@@ -563,6 +626,19 @@ std::vector<Check> checksFor(const Rubric& rubric, const std::string& world) {
   std::vector<Check> there;
   std::copy_if(rubric.checks.begin(), rubric.checks.end(), std::back_inserter(there), runsThere);
   return there.empty() ? rubric.checks : there;
+}
+
+std::vector<Measured> measuredAlong(const std::vector<Check>& checks, const RunRecord& record) {
+  std::vector<Measured> all;
+  for (const Check& check : checks) {
+    for (const Criterion& c : check.criteria) {
+      for (Measured& m : Judge(c, record).measured()) {
+        const bool known = std::any_of(all.begin(), all.end(), [&](const Measured& a) { return a.robot == m.robot && a.name == m.name; });
+        if (!known) all.push_back(std::move(m));
+      }
+    }
+  }
+  return all;
 }
 
 std::vector<CriterionVerdict> judgeChecks(const std::vector<Check>& checks, const RunRecord& record) {

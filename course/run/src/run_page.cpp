@@ -235,6 +235,25 @@ Result<std::uint64_t> RunPage::write(const RunPageEnd& end) const {
       }
     }
     r["tasks"] = std::move(tasks);
+    // An assignment's measures, at the page's instants: name, unit, band and values as the columns are kept.
+    nlohmann::json judged = nlohmann::json::array();
+    for (const Measured& m : end.measured) {
+      if (m.robot != i || m.values.empty()) continue;
+      Column c;
+      for (std::int64_t k = 0; k < samples_; ++k) {
+        const double at = std::round((t0_.value_or(0.0) + static_cast<double>(k) * dt_) / m.dt);
+        c.add(m.values[static_cast<std::size_t>(std::clamp(at, 0.0, static_cast<double>(m.values.size() - 1)))]);
+      }
+      const auto bound = [](const std::optional<double>& b) { return b ? nlohmann::json(*b) : nlohmann::json(); };
+      judged.push_back({{"name", m.name},
+                        {"unit", m.unit},
+                        {"low", bound(m.low)},
+                        {"high", bound(m.high)},
+                        {"each", m.everyInstant},
+                        {"from", m.from},
+                        {"v", c.deltas}});
+    }
+    r["judged"] = std::move(judged);
   }
   doc["subtitle"] = subtitle;
   // The controller's strings may hold any bytes: what is not UTF-8 becomes U+FFFD.

@@ -5,6 +5,7 @@
 
 #include "frob/debug.hpp"
 #include "frob/errors.hpp"
+#include "frob/run/run_record.hpp"
 #include "frob/worlds/recorder.hpp"
 #include "frob/worlds/simulation.hpp"
 
@@ -25,6 +26,7 @@ struct RunPageEnd {
   std::vector<std::string> controllers;           ///< per robot, its controller
   std::vector<std::optional<double>> finishedAt;  ///< per robot, when its task returned
   std::vector<std::vector<TaskRecord>> tasks;     ///< per robot, every task (still running: TaskEnd::Running)
+  std::vector<Measured> measured;                 ///< what an assignment's criteria measure, plotted with their bands
 };
 
 /// Collects a run's steps, then writes the page whole (a .partial file, then renamed).

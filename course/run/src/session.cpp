@@ -327,6 +327,7 @@ Result<Summary> runSession(const RunDef& def) {
     summary.robots.at(f.robot).failure = f.message;
   }
   if (recorder) summary.record = std::move(*recorder).finish(run.failures());
+  const std::vector<Measured> measured = def.measure && summary.record ? def.measure(*summary.record) : std::vector<Measured>{};
   if (summary.failed()) {
     discard();  // the video and trace are dropped with their writers
     return summary;
@@ -352,7 +353,7 @@ Result<Summary> runSession(const RunDef& def) {
   }
   if (frames) summary.written.push_back(out.frames + " (" + std::to_string(frames->count()) + " frames)");
   if (trace) {
-    if (Status s = trace->commit(); !s) return s;
+    if (Status s = trace->commit(measured); !s) return s;
     summary.written.push_back(out.trace);
   }
   std::vector<std::vector<TaskRecord>> tasks;
@@ -367,7 +368,8 @@ Result<Summary> runSession(const RunDef& def) {
     RunPageEnd end{.title = pageTitle(def),
                    .subtitle = format("seed %llu, %.2f s in %lld steps, trajectory %016llx.", (unsigned long long)summary.seed,
                                       summary.simulatedSeconds, (long long)summary.steps, (unsigned long long)summary.trajectoryHash),
-                   .tasks = std::move(tasks)};
+                   .tasks = std::move(tasks),
+                   .measured = measured};
     for (const RobotSummary& r : summary.robots) end.controllers.push_back(r.controller), end.finishedAt.push_back(r.finishedAt);
     Result<std::uint64_t> bytes = page->write(end);
     if (!bytes) return bytes.status();

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -74,9 +75,42 @@ void TraceFile::row(double time, std::size_t robot, const worlds::RobotRecord& r
   std::fwrite(l.data(), 1, l.size(), file_);
 }
 
-Status TraceFile::commit() {
-  const bool written = std::ferror(file_) == 0;
-  const bool closed = std::fclose(std::exchange(file_, nullptr)) == 0;
+Status TraceFile::commit(const std::vector<Measured>& measured) {
+  bool written = std::ferror(file_) == 0;
+  bool closed = std::fclose(std::exchange(file_, nullptr)) == 0;
+  if (written && closed && !measured.empty()) {  // each row again, with the measures after it
+    std::vector<std::string> names;
+    for (const Measured& m : measured) {
+      if (std::find(names.begin(), names.end(), m.name) == names.end()) names.push_back(m.name);
+    }
+    const std::string partial = render::partialPath(path_), rows = partial + ".rows";
+    std::error_code ec;
+    std::filesystem::rename(partial, rows, ec);
+    std::ifstream in(rows);
+    std::FILE* out = ec ? nullptr : std::fopen(partial.c_str(), "w");
+    written = out != nullptr && in.good();
+    std::string line;
+    for (bool header = true; written && std::getline(in, line); header = false) {
+      for (const std::string& name : names) {
+        line += ',';
+        if (header) {
+          line += name;
+          continue;
+        }
+        const double time = std::strtod(line.c_str(), nullptr), robot = std::strtod(line.c_str() + line.find(',') + 1, nullptr);
+        for (const Measured& m : measured) {
+          const double k = std::round(time / m.dt);
+          if (m.name == name && static_cast<double>(m.robot) == robot && k >= 0 && k < static_cast<double>(m.values.size())) {
+            appendNumber(line, m.values[static_cast<std::size_t>(k)]);
+          }
+        }
+      }
+      line += '\n';
+      written = std::fputs(line.c_str(), out) >= 0;
+    }
+    closed = out != nullptr && std::fclose(out) == 0;
+    std::filesystem::remove(rows, ec);
+  }
   if (!written || !closed) {
     render::discardPartial(path_);
     return Status::failure("trace: writing '" + path_ + "' failed (disk full?)");

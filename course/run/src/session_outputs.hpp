@@ -5,6 +5,7 @@
 #include "frob/base/result.hpp"
 #include "frob/debug.hpp"
 #include "frob/render/image.hpp"
+#include "frob/run/run_record.hpp"
 #include "frob/worlds/recorder.hpp"
 
 #include <cstdio>
@@ -20,8 +21,9 @@ class TraceFile {
   [[nodiscard]] static Result<TraceFile> open(const std::string& path, std::size_t sonars);
   // Appends robot `robot`'s row at `time`; `task` is its innermost running task.
   void row(double time, std::size_t robot, const worlds::RobotRecord& rec, const std::string& task);
-  // Finishes the file and moves it into place.
-  [[nodiscard]] Status commit();
+  // Finishes the file, with a column per `measured` name (its robot's value at each row's time, blank
+  // for other robots), and moves it into place.
+  [[nodiscard]] Status commit(const std::vector<Measured>& measured = {});
   TraceFile(TraceFile&& other) noexcept;
   TraceFile& operator=(TraceFile&&) = delete;
   ~TraceFile();  // removes the partial file unless committed

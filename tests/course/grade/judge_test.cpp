@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace frob::course {
 namespace {
 
@@ -240,6 +243,51 @@ TEST(Judge, WallDistanceHeldForAFractionAfterSettling) {
   EXPECT_EQ(run(c, drift).reason,
             "kept 0.50 ± 0.05 m from the wall for 18% of the time after 1.0 s; 80% required (at worst 0.20 m off the 0.50 m wanted, at 10.0 s at "
             "(4.0, 0.9))");
+}
+
+// What the judge measures along a run, step by step, is what it judges: the drift's wall distance
+// keeps its band at 16 of the 91 steps from 1 s on (the 18% of its reason), the clearance's least is
+// the reason's 0.07 m, the floor covered ends at the margin's 17%, the goal's distance is the path's.
+TEST(Judge, MeasuresAlongTheRunWhatItJudges) {
+  Track drift{.name = "ada"};
+  for (int k = 0; k <= 100; ++k) drift.path.emplace_back(1 + 0.03 * k, 0.73 + 0.002 * k);
+  RunRecord r = room();
+  r.robots.push_back(drift);
+  const Check check{.name = "c",
+                    .criteria = {{.kind = Kind::WallDistance, .distance = 0.5, .tolerance = 0.05, .fraction = 0.8, .after = 1.0},
+                                 {.kind = Kind::Goal, .distance = 0.2},
+                                 {.kind = Kind::Goal, .distance = 0.5},     // the same measure again: one column
+                                 {.kind = Kind::Collisions, .count = 0}}};  // a count: no column
+  const std::vector<Measured> m = measuredAlong({check}, r);
+  ASSERT_EQ(m.size(), 2u);
+  EXPECT_EQ(m[0].name, "wall_distance");
+  EXPECT_EQ(m[0].values.size(), drift.path.size());
+  EXPECT_EQ(m[0].from, 1.0);
+  EXPECT_TRUE(m[0].everyInstant);
+  EXPECT_NEAR(*m[0].low, 0.45, 1e-12);
+  EXPECT_NEAR(*m[0].high, 0.55, 1e-12);
+  int within = 0;
+  for (std::size_t k = 10; k < m[0].values.size(); ++k) within += m[0].values[k] >= *m[0].low - 1e-9 && m[0].values[k] <= *m[0].high + 1e-9;
+  EXPECT_EQ(within, 16);
+  EXPECT_EQ(m[1].name, "goal_distance");
+  EXPECT_EQ(m[1].high, 0.2) << "the first criterion that measures it gives its band";
+  EXPECT_FALSE(m[1].everyInstant);
+  EXPECT_NEAR(m[1].values[50], (drift.path[50] - Point2(5.0, 1.5)).norm(), 1e-12);
+
+  RunRecord near = room();
+  near.robots.push_back(straight(1, 0.30, 0.5, 1));
+  const std::vector<Measured> clearance = measuredAlong({{.name = "c", .criteria = {{.kind = Kind::Clearance, .distance = 0.1}}}}, near);
+  ASSERT_EQ(clearance.size(), 1u);
+  EXPECT_NEAR(*std::min_element(clearance[0].values.begin(), clearance[0].values.end()), 0.07, 1e-9);
+  EXPECT_EQ(clearance[0].low, 0.1);
+
+  RunRecord swept = room();
+  swept.robots.push_back(straight(0.25, 1.25, 0.5, 11));
+  const std::vector<Measured> covered = measuredAlong({{.name = "c", .criteria = {{.kind = Kind::Coverage, .fraction = 0.16, .cell = 0.5}}}}, swept);
+  ASSERT_EQ(covered.size(), 1u);
+  EXPECT_EQ(covered[0].unit, "%");
+  EXPECT_EQ(std::lround(covered[0].values.back()), 17);
+  EXPECT_TRUE(std::is_sorted(covered[0].values.begin(), covered[0].values.end())) << "what is covered stays covered";
 }
 
 // With a side, only the wall on that side counts: in the 6 x 3 m room, 0.73 m from the south wall,

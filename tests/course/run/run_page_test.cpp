@@ -15,6 +15,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <optional>
 #include <sstream>
 #include <tuple>
@@ -70,7 +71,7 @@ struct Written {
   Summary summary;
 };
 
-Written runTour(const std::string& name, bool long120 = false) {
+Written runTour(const std::string& name, bool long120 = false, std::function<std::vector<Measured>(const RunRecord&)> measure = {}) {
   Written w{.dir = fs::path(::testing::TempDir()) / "run_page_test" / name, .html = {}, .trace = {}, .timeline = {}, .summary = {}};
   fs::remove_all(w.dir);
   fs::create_directories(w.dir);
@@ -80,6 +81,8 @@ Written runTour(const std::string& name, bool long120 = false) {
                                   .controllers = {inlineController(long120 ? makeController(tours) : makeController(tour))},
                                   .seconds = long120 ? 120.0 : 12.0,
                                   .settleSeconds = 1.0,
+                                  .keepRecord = static_cast<bool>(measure),
+                                  .measure = std::move(measure),
                                   .outputs = {.trace = w.trace.string(), .timeline = w.timeline.string(), .html = w.html.string()}});
   EXPECT_TRUE(s.ok()) << s.error();
   if (s.ok()) w.summary = std::move(s.value());
@@ -248,6 +251,37 @@ TEST(RunPage, JumpsToTheStartOfATaskOrWhereAValueCrossesALevel) {
   ASSERT_GT(below, 0.0);
   EXPECT_EQ(opened(0.0, "&next=cross:forward%20(m%2Fs)@0.35").first, shown(below));
   EXPECT_EQ(opened(0.0, "&next=cross:forward%20(m%2Fs)@0.45").first, shown(0.0)) << "it never reaches 0.45";
+}
+
+// A measure an assignment judges (here: the distance to the goal, wanted within 3 m) is a column of
+// the trace and a row of the page with its band, the same value at each instant; off the band, the
+// row says so.
+TEST(RunPage, WhatTheAssignmentMeasuresIsShownWithItsBand) {
+  requireChromium();
+  const Written w = runTour("measured", false, [](const RunRecord& r) {
+    Measured m{.name = "goal_distance", .unit = "m", .robot = 0, .dt = r.dt, .values = {}, .low = std::nullopt, .high = 3.0, .everyInstant = false};
+    for (const Point2& p : r.robots[0].path) m.values.push_back((p - Point2(6.0, 2.5)).norm());
+    Measured each = m;  // the same band held at every instant
+    each.name = "goal_distance_each", each.everyInstant = true;
+    return std::vector<Measured>{m, each};
+  });
+  std::istringstream trace(support::readText(w.trace.string()));
+  std::string line;
+  std::getline(trace, line);
+  ASSERT_TRUE(line.ends_with(",task,goal_distance,goal_distance_each")) << line;
+  for (double t : {1.0, 6.31}) {
+    SCOPED_TRACE("t = " + std::to_string(t));
+    const Page page = openAt(w, t);
+    ASSERT_TRUE(page.dom);
+    EXPECT_EQ(page.console, "");
+    const TraceRow row = traceAt(w.trace, t);
+    const double wanted = std::hypot(row.x - 6.0, row.y - 2.5);
+    EXPECT_NEAR(std::stod(one(page.dom.get(), "//tr[td='goal_distance']/@data-value")), wanted, 0.0005 + 1e-9);
+    const std::string shown = one(page.dom.get(), "//tr[td='goal_distance']/td[2]");
+    EXPECT_TRUE(shown.ends_with(" m (wanted at most 3.00 once)")) << shown;
+    EXPECT_EQ(one(page.dom.get(), "//tr[td='goal_distance']/@class"), "judged") << "a reach is judged once, not at each instant";
+    EXPECT_EQ(one(page.dom.get(), "//tr[td='goal_distance_each']/@class"), wanted > 3.0 ? "judged off" : "judged");
+  }
 }
 
 TEST(RunPage, TextFromTheControllerIsShownAsTextNeverAsMarkup) {

@@ -51,4 +51,9 @@ struct CriterionVerdict {
 /// that failed fails them all, with its reason.
 [[nodiscard]] std::vector<CriterionVerdict> judgeChecks(const std::vector<Check>& checks, const RunRecord& record);
 
+/// The quantities `checks`' criteria measure along `record`, each robot's once (the first criterion
+/// that measures it gives its band): a wall's distance, the clearance, the distance to a point to
+/// reach, the floor covered so far, the nearest other robot.
+[[nodiscard]] std::vector<Measured> measuredAlong(const std::vector<Check>& checks, const RunRecord& record);
+
 }  // namespace frob::course

@@ -40,6 +40,19 @@ struct RunRecord {
   [[nodiscard]] RunRecord upTo(double seconds) const;
 };
 
+/// A quantity a judge measures of one robot along a run, with the band a criterion wants it in:
+/// what `frob run --assignment` adds to the trace and the run viewer.
+struct Measured {
+  std::string name;  ///< a column's name: "wall_distance", "clearance", "goal_distance"
+  std::string unit;  ///< "m", "%"
+  std::size_t robot = 0;
+  double dt = 0.01;  ///< values[k] is at t = k × dt
+  std::vector<double> values;
+  std::optional<double> low, high;  ///< the band wanted; one side only for a bound
+  bool everyInstant = true;         ///< the band holds at each instant (from `from` s); else once, or by the end
+  double from = 0.0;                ///< seconds: the band holds from then on
+};
+
 /// Keeps a RunRecord as a run goes: made before the first step, told of every step and of every
 /// task that ended.
 class RunRecorder {

@@ -49,10 +49,13 @@ struct RunDef {
   bool wholeTime = false;                     ///< run all `seconds` even after every task returned, as a graded run does
   double settleSeconds = 0.0;                 ///< once every controller's task returned, the run goes on this long, the robots commanded still
   bool keepRecord = false;                    ///< keep the grader's record of the run in the summary, to judge it against a rubric
-  bool meantToRunForever = false;             ///< the controller's task is meant never to return (Diagnosis::hints)
-  RunOutputs outputs;                         ///< files to write
-  int fps = 30;                               ///< frames per second of the video and frames
-  double speed = 1.0;                         ///< the video plays this many times faster than simulated time
+  /// With keepRecord: what an assignment's criteria measure along the record, added as columns to the
+  /// trace and as plots with their bands to the page.
+  std::function<std::vector<Measured>(const RunRecord&)> measure;
+  bool meantToRunForever = false;  ///< the controller's task is meant never to return (Diagnosis::hints)
+  RunOutputs outputs;              ///< files to write
+  int fps = 30;                    ///< frames per second of the video and frames
+  double speed = 1.0;              ///< the video plays this many times faster than simulated time
   render::RenderDef view{.width = 854, .height = 480, .layout = render::PanelLayout::PlotRight};  ///< how frames look
   std::function<void(double done)> progress;  ///< told the share of the run done (0 to 1) after each step
   /// Told each frame drawn of the video or frames, which are drawn after the run (frames drawn, of how many).
