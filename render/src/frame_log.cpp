@@ -70,7 +70,7 @@ Status FrameLog::replay(const RunView& end, const std::function<Status(const Fra
     std::size_t k = 0;
     for (std::size_t p = 0; p < all.plots.size() && k < f.samples.size(); ++p) {
       const Plot& whole = all.plots[p];
-      if (plots.plots.size() <= p) plots.plots.push_back({whole.title, {}, whole.yMin, whole.yMax});
+      if (plots.plots.size() <= p) plots.plots.push_back({whole.title, {}, whole.yMin, whole.yMax, whole.levels});
       Plot& shown = plots.plots[p];
       shown.series.resize(whole.series.size());
       for (std::size_t s = 0; s < whole.series.size(); ++s, ++k) {

@@ -115,12 +115,17 @@ void drawPlots(Canvas& c, const FontAtlas& fonts, const PlotSet& plots, double n
     for (const Series& s : plot.series)
       for (const Sample& v : s.samples)
         if (std::isfinite(v.value)) lo = std::min(lo, v.value), hi = std::max(hi, v.value);
+    for (const double level : plot.levels) lo = std::min(lo, level), hi = std::max(hi, level);
     if (plot.yMin) lo = *plot.yMin;
     if (plot.yMax) hi = *plot.yMax;
     if (!(hi > lo)) lo = (lo > 1e299 ? 0.0 : lo) - 1.0, hi = lo + 2.0;
     if (!plot.yMin && !plot.yMax) std::tie(lo, hi) = niceRange(lo, hi);
     auto yOf = [&](double v) { return y1 - (std::clamp(v, lo, hi) - lo) / (hi - lo) * (y1 - valuesTop); };
     if (lo < 0 && hi > 0) c.line({left, yOf(0)}, {right, yOf(0)}, 1, faint, false);
+    for (const double level : plot.levels) {
+      const Vec2 across[2] = {{left, yOf(level)}, {right, yOf(level)}};
+      c.dashed(across, 1, 5, 3, rgba8(green));
+    }
     c.polyline(std::vector<Vec2>{{left, y0}, {left, y1}, {right, y1}}, 1, axis);
     fonts.draw(c, Font::Sans, {vp.x + 4, valuesTop + asc}, tick(hi), ink);
     fonts.draw(c, Font::Sans, {vp.x + 4, y1}, tick(lo), ink);
@@ -140,7 +145,13 @@ void drawPlots(Canvas& c, const FontAtlas& fonts, const PlotSet& plots, double n
       };
       for (const Sample& v : s.samples) {
         if (v.t > now) break;
-        if (v.t < t0 || v.t > t1 || !std::isfinite(v.value)) continue;
+        if (v.t < t0 || v.t > t1) continue;
+        if (!std::isfinite(v.value)) {  // a gap: the line so far is drawn, the next starts afresh
+          flush();
+          c.polyline(simplifyPolyline(pts, 0.4), 1.5, rgba8(palette::series(s, si)));
+          pts.clear(), column = -1;
+          continue;
+        }
         const double x = xOf(v.t), y = yOf(v.value);
         const long col = std::lround(std::floor(x));
         if (col != column) {

@@ -3,6 +3,7 @@
 #include "frob/errors.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace frob::render {
 
@@ -74,7 +75,7 @@ RunView::RunView(const worlds::Run& run, RunViewDef def) : def_(std::move(def)) 
     frontSonar_ = def_.frontSonar ? frontSonarIndex(sim.spec(def_.plotRobot)) : -1;
     if (!def_.goal.empty()) goal_ = worlds::findPoint(sim.world(), def_.goal);
     if (frontSonar_ >= 0 || goal_) {
-      Plot range{.title = "range", .series = {}, .yMin = 0.0, .yMax = {}};
+      Plot range{.title = "range (gaps: no echo)", .series = {}, .yMin = 0.0, .yMax = {}, .levels = {}};
       if (frontSonar_ >= 0) {
         sonarSlot_ = {plots_.plots.size(), range.series.size()};
         range.series.push_back({"front sonar (m)", {}, {}});
@@ -88,11 +89,11 @@ RunView::RunView(const worlds::Run& run, RunViewDef def) : def_(std::move(def)) 
     if (def_.wheels) {
       forwardSlot_ = {plots_.plots.size(), 0};
       turnSlot_ = {plots_.plots.size(), 1};
-      plots_.plots.push_back({"wheels", {{"forward (m/s)", {}, {}}, {"turn (rad/s)", {}, {}}}, {}, {}});
+      plots_.plots.push_back({"wheels", {{"forward (m/s)", {}, {}}, {"turn (rad/s)", {}, {}}}, {}, {}, {}});
     }
     for (const RunSignal& s : def_.signals) {
       signalSlots_.push_back({plots_.plots.size(), 0});
-      plots_.plots.push_back({s.name, {{s.name, {}, {}}}, {}, {}});
+      plots_.plots.push_back({s.name, {{s.name, {}, {}}}, {}, {}, {}});
     }
   }
   plots_.tStart = 0.0;
@@ -114,7 +115,10 @@ void RunView::takeInstant(const worlds::StepRecord& rec) {
   lastSample_ = rec.time;
   const worlds::RobotRecord& r = rec.robots[def_.plotRobot];
   auto add = [&](Slot s, double v) { plots_.plots[s.plot].series[s.series].samples.push_back({rec.time, v}); };
-  if (frontSonar_ >= 0 && static_cast<std::size_t>(frontSonar_) < r.sonar.size()) add(sonarSlot_, r.sonar[frontSonar_]);
+  if (frontSonar_ >= 0 && static_cast<std::size_t>(frontSonar_) < r.sonar.size()) {  // no echo: a gap, so the scale is the echoes'
+    const double range = r.sonar[static_cast<std::size_t>(frontSonar_)];
+    add(sonarSlot_, range < scene_.robots[def_.plotRobot].spec.sonarMaxRange ? range : std::numeric_limits<double>::quiet_NaN());
+  }
   if (goal_) add(goalSlot_, (r.truePose.position - *goal_).norm());
   if (def_.wheels) {
     add(forwardSlot_, r.wheels.forward);
@@ -130,7 +134,7 @@ void RunView::takeInstant(const worlds::StepRecord& rec) {
       publishedNames_.push_back(s.text);
       if (!def_.published || std::find(def_.published->begin(), def_.published->end(), s.text) != def_.published->end()) {
         known->second = plots_.plots.size();
-        plots_.plots.push_back({s.text, {{s.text, {}, s.color}}, {}, {}});
+        plots_.plots.push_back({s.text, {{s.text, {}, s.color}}, {}, {}, {}});
       }
     }
     if (known->second != std::string::npos) add({known->second, 0}, s.value);

@@ -72,6 +72,40 @@ TEST(Renderer, StandalonePlotsMatchGolden) {
   EXPECT_TRUE(matchesGolden(r.renderPlots(roomPlots()), "plots"));
 }
 
+// A value that is not finite (a sonar's no echo) is a gap in its line, not a stroke across it; a
+// plot's levels (what an assignment wants) are dashed across it in green.
+TEST(Renderer, APlotLeavesAGapWhereAValueIsNotFiniteAndMarksItsLevels) {
+  Renderer r = make({.width = 320, .height = 200});
+  const auto chart = [](bool gap, std::vector<double> levels) {
+    Series s{"value", {}, Color{0, 0, 1}};
+    for (int i = 0; i <= 200; ++i) {
+      const double t = i * 0.1;
+      if (!gap || t < 8 || t > 12)
+        s.samples.push_back({t, 1.0});
+      else
+        s.samples.push_back({t, std::numeric_limits<double>::quiet_NaN()});
+    }
+    PlotSet p;
+    p.plots = {{"chart", {s}, 0.0, 2.0, std::move(levels)}};
+    p.tEnd = 20.0;
+    return p;
+  };
+  const auto count = [](const Image& img, auto is) {
+    int n = 0;
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) n += is(img.pixel(x, y));
+    return n;
+  };
+  const auto pureBlue = [](const std::uint8_t* p) { return p[2] > 200 && p[0] < 60 && p[1] < 60; };
+  const auto greenish = [](const std::uint8_t* p) { return p[1] > 120 && p[0] < 90 && p[2] < 110; };
+  const int whole = count(r.renderPlots(chart(false, {})), pureBlue), broken = count(r.renderPlots(chart(true, {})), pureBlue);
+  // 4 s of 20 s missing: about a fifth of the line's length (the chart is about 270 pixels wide).
+  EXPECT_GT(whole, 200);
+  EXPECT_NEAR(static_cast<double>(broken) / whole, 0.8, 0.05);
+  EXPECT_EQ(count(r.renderPlots(chart(false, {})), greenish), 0);
+  EXPECT_GT(count(r.renderPlots(chart(false, {0.5, 1.5})), greenish), 200) << "two dashed lines across the chart";
+}
+
 TEST(Renderer, ChaseViewMatchesGolden) {
   Renderer r = make({.width = 320, .height = 240, .view = ViewMode::Chase});
   const Image img = r.render(roomScene());

@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 namespace frob::render {
@@ -104,8 +106,12 @@ TEST(RunView, AWindowOfOneStepGivesTheSameViewAsTheWholeRun) {
   EXPECT_EQ(b.instants(), a.instants());
   EXPECT_EQ(b.scene().robots[0].path, a.scene().robots[0].path);
   ASSERT_EQ(b.plots().plots.size(), a.plots().plots.size());
-  for (std::size_t k = 0; k < a.plots().plots.size(); ++k) {
-    EXPECT_EQ(b.plots().plots[k].series[0].samples, a.plots().plots[k].series[0].samples) << k;
+  for (std::size_t k = 0; k < a.plots().plots.size(); ++k) {  // the same samples, a gap (no echo: NaN) where the other has one
+    const std::vector<Sample>&x = b.plots().plots[k].series[0].samples, &y = a.plots().plots[k].series[0].samples;
+    ASSERT_EQ(x.size(), y.size()) << k;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      EXPECT_TRUE(x[i].t == y[i].t && (x[i].value == y[i].value || (std::isnan(x[i].value) && std::isnan(y[i].value)))) << k << " " << i;
+    }
   }
 }
 
@@ -135,6 +141,20 @@ TEST(RunView, PathsPlotsAndTaskMarksGrowWithTheRunEvenWhenTheTimelineIsDrained) 
   EXPECT_EQ(plots.plots[0].series[1].name, "to goal (m)");
   EXPECT_EQ(plots.plots[1].series[0].name, "forward (m/s)");
   EXPECT_EQ(plots.plots[0].series[0].samples.size(), 600u);  // every 0.05 s
+  // The front sonar's no-echo readings are gaps (NaN), its echoes the readings recorded at that instant.
+  int gaps = 0;
+  for (const Sample& v : plots.plots[0].series[0].samples) {
+    const auto at = std::find_if(steps.begin(), steps.end(), [&](const worlds::StepRecord& r) { return r.time == v.t; });
+    ASSERT_NE(at, steps.end()) << v.t;
+    const double recorded = at->robots[0].sonar[static_cast<std::size_t>(frontSonarIndex(robot.spec))];
+    if (recorded >= robot.spec.sonarMaxRange) {
+      EXPECT_TRUE(std::isnan(v.value)) << v.t;
+      ++gaps;
+    } else {
+      EXPECT_EQ(v.value, recorded) << v.t;
+    }
+  }
+  EXPECT_GT(gaps, 0) << "a maze's corridors leave the front sonar without an echo now and then";
   EXPECT_EQ(plots.tEnd, 30.0);
   // Every task the timeline saw start (and end) is marked, in time order, at its start.
   ASSERT_GT(ended.size(), 4u);

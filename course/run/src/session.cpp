@@ -378,6 +378,16 @@ Result<Summary> runSession(const RunDef& def) {
   if (!out.plot.empty()) {
     render::PlotSet plots = view->plots();
     plots.tEnd = summary.simulatedSeconds;  // the time axis ends where the run ended
+    for (const Measured& m : measured) {    // the first robot's, as the other charts: with the band wanted marked
+      if (m.robot != 0) continue;
+      render::Plot chart{.title = "judged: " + m.name, .series = {{m.name + " (" + m.unit + ")", {}, green}}, .yMin = {}, .yMax = {}, .levels = {}};
+      const auto every = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(0.05 / m.dt)));  // as RunView samples
+      for (std::size_t k = 0; k < m.values.size(); k += every) chart.series[0].samples.push_back({static_cast<double>(k) * m.dt, m.values[k]});
+      for (const std::optional<double>& b : {m.low, m.high}) {
+        if (b) chart.levels.push_back(*b);
+      }
+      plots.plots.push_back(std::move(chart));
+    }
     if (Status s = render::writePng(out.plot, renderer->renderPlots(plots)); !s) return s;
     summary.written.push_back(out.plot);
   }

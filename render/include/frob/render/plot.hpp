@@ -17,7 +17,7 @@ struct Sample {
   friend bool operator==(const Sample&, const Sample&) = default;
 };
 
-/// A named signal; samples in increasing time.
+/// A named signal; samples in increasing time; a value that is not finite is a gap in its line.
 struct Series {
   std::string name;             ///< legend text, with its unit, e.g. "front sonar (m)"
   std::vector<Sample> samples;  ///< increasing t
@@ -30,6 +30,7 @@ struct Plot {
   std::vector<Series> series;  ///< drawn in order
   std::optional<double> yMin;  ///< unset: from the data
   std::optional<double> yMax;  ///< unset: from the data
+  std::vector<double> levels;  ///< values marked across it, dashed (what an assignment wants)
 };
 
 /// An instant where a robot's task changed, marked as a vertical line.
