@@ -6,6 +6,7 @@
 #include "frob/render/run_view.hpp"
 #include "frob/run/controller_file.hpp"
 #include "frob/run/examples.hpp"
+#include "frob/run/format.hpp"
 #include "frob/run/host.hpp"
 #include "frob/run/project.hpp"
 #include "frob/run/session.hpp"
@@ -140,6 +141,7 @@ struct RunArgs {
   std::optional<double> speed;
   course::RunOutputs outputs;
   std::string assignment;  // judge the run against this assignment's checks
+  std::string from;        // an earlier run's trace and instant, RUN.csv#t=T: the run is that one's up to T
   bool json = false, quiet = false, sandbox = true, check = false;
 };
 
@@ -220,6 +222,13 @@ int runCommand(RunArgs a) {
   }
   if (Status s = parseSize(a.size, def.view); !s) return fail(s.error());
   def.view.view = a.view == "chase" ? render::ViewMode::Chase : render::ViewMode::TopDown;
+  if (!a.from.empty()) {
+    Result<course::ForkPoint> fork = course::readForkPoint(a.from, def.options.dt);
+    if (!fork) return fail(fork.error());
+    if (fork.value().at >= def.seconds)
+      return fail(course::format("--from: the run ends at %.2f s, before its fork at %.2f s (--seconds)", def.seconds, fork.value().at));
+    def.fork = std::move(fork.value());
+  }
   if (Status s = course::validate(def); !s) return fail(s.error());
 
   ProgressBar bar(stderr, !a.quiet && ::isatty(STDERR_FILENO) == 1, "frob: running " + def.controllers.front().entry.name + " in " + def.worldName);
@@ -369,6 +378,9 @@ int main(int argc, char** argv) {
                    "publishes with withPlot (default: every published value), e.g. s4,left")
       ->delimiter(',');
   runCmd->add_option("--trace", run.outputs.trace, "Write a CSV row per robot per step");
+  runCmd->add_option("--from", run.from,
+                     "Start from an instant of an earlier run, e.g. run.csv#t=12.5 (its --trace): the world as it was then, to the last bit, "
+                     "with your controllers taking over (give that run's --world, --seed and --dt)");
   runCmd->add_option("--timeline", run.outputs.timeline, "Write the task timeline as JSON for ui.perfetto.dev or chrome://tracing");
   runCmd->add_option(
       "--html", run.outputs.html,

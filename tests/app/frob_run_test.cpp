@@ -54,6 +54,41 @@ TEST(FrobRun, GoodControllerWritesEveryOutputWhole) {
   EXPECT_EQ(filesIn(dir / "frames").size(), 60u);                 // 2 s at 30 fps
 }
 
+// --from RUN#t=T, through the sandboxed host: the trace's rows up to T are the earlier run's; the
+// controller's clock reads T when it takes over (its task starts there), and its behaviors start
+// there (time() is 0: forward 0.1 + time() / 10 is 0.1); the summary says where the run came from.
+TEST(FrobRun, AForkTakesOverAtTheInstantWithItsClockThere) {
+  const fs::path dir = freshFolder("fork");
+  write(dir, "slow.cpp", controller("0.2"));
+  write(dir, "clocked.cpp",
+        "#include <frob/frob.hpp>\nusing namespace frob;\nTask<Wheels> drive(const Robot&) {\n  return mkTask([](const TaskState&) { "
+        "return std::pair{wheels(0.1 + time() / 10.0, 0.0), after(100.0)}; }).named(\"clocked\");\n}\n"
+        "FROB_CONTROLLER(drive, .world = \"empty\", .seconds = 3)\n");
+  ASSERT_EQ(runFrob(dir, {"run", "slow.cpp", "--seconds", "2", "--trace", "a.csv"}).status, 0);
+  const FrobResult r = runFrob(dir, {"run", "clocked.cpp", "--seconds", "2", "--from", "a.csv#t=1.5", "--trace", "b.csv"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("note: the run up to 1.50 s is a.csv's, played back step by step; the controllers took over at 1.50 s"), std::string::npos)
+      << r.out;
+  const std::vector<std::string> a = lines(readFile(dir / "a.csv")), b = lines(readFile(dir / "b.csv"));
+  ASSERT_EQ(b.size(), a.size());
+  for (std::size_t k = 1; k <= 150; ++k) EXPECT_EQ(b[k], a[k]) << k;  // rows of 0 to 1.49 s, the header first
+  const auto forward = [](const std::string& row) {
+    std::stringstream cells(row);
+    std::string cell;
+    for (int j = 0; j <= 8; ++j) std::getline(cells, cell, ',');
+    return std::stod(cell);
+  };
+  EXPECT_DOUBLE_EQ(forward(b[151]), 0.1) << b[151];
+  EXPECT_DOUBLE_EQ(forward(b[161]), 0.1 + 0.1 / 10.0) << b[161];
+  const FrobResult json = runFrob(dir, {"run", "clocked.cpp", "--seconds", "2", "--from", "a.csv#t=1.5", "--json"});
+  ASSERT_EQ(json.status, 0) << json.err;
+  EXPECT_EQ(nlohmann::json::parse(json.out)["robots"][0]["last_tasks"][0]["start"], 1.5) << json.out;
+  EXPECT_EQ(runFrob(dir, {"run", "clocked.cpp", "--seconds", "2", "--from", "a.csv#t=3"}).err,
+            "frob: --from: a.csv has its run up to 1.99 s, not to 3.00 s\n");
+  EXPECT_EQ(runFrob(dir, {"run", "clocked.cpp", "--seconds", "1", "--from", "a.csv#t=1.5"}).err,
+            "frob: --from: the run ends at 1.00 s, before its fork at 1.50 s (--seconds)\n");
+}
+
 // A video fits in --video-size (8 MB unless given; 0 for any size): a long run's bitrate is lowered.
 TEST(FrobRun, AVideoFitsInItsSize) {
   const fs::path dir = freshFolder("video_size");

@@ -182,7 +182,9 @@ Result<Summary> runSession(const RunDef& def) {
   const bool allTasks = !out.timeline.empty() || !out.html.empty();
   std::optional<RobotHosts> hosts;
   // Every step is read as it comes (summary, trace, frames, plots, page), so only the newest is kept.
-  worlds::Run run(def.world, def.options, driverFor(def, hosts, drawFrames || !out.plot.empty() || !out.html.empty()), {.window = 1});
+  worlds::DriverFactory drivers = driverFor(def, hosts, drawFrames || !out.plot.empty() || !out.html.empty());
+  if (def.fork) drivers = forkedAt(*def.fork, std::move(drivers));
+  worlds::Run run(def.world, def.options, drivers, {.window = 1});
   const worlds::Simulation& sim = run.simulation();
   const std::size_t n = sim.robotCount();
   const bool checked = def.host && def.host->checked;
@@ -296,6 +298,10 @@ Result<Summary> runSession(const RunDef& def) {
                   .steps = sim.stepCount(),
                   .trajectoryHash = run.recorder().trajectoryHash()};
   if (hosts) summary.notes = hosts->notes(), summary.sandbox = hosts->layers();
+  if (def.fork) {
+    summary.notes.push_back(format("the run up to %.2f s is %s's, played back step by step; the controllers took over at %.2f s", def.fork->at,
+                                   def.fork->source.c_str(), def.fork->at));
+  }
   if (view) {
     for (const std::string& name : def.outputs.plotSignals) {
       const std::vector<std::string>& seen = view->publishedNames();

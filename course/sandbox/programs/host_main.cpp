@@ -159,7 +159,9 @@ int main(int argc, char** argv) {
       clock = Clock(header->dt);
       driven = build(channel, entries);
     } else {
-      const Instant& now = header->step == 0 ? clock.now() : clock.advance();
+      // The step asked for: the next one, or a later first one (a run forked from an instant of another).
+      while (clock.now().step < header->step) clock.advance();
+      const Instant& now = clock.now();
       header->activity = Activity::Stepping;
       step(channel, driven, now);
     }

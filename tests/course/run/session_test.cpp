@@ -43,6 +43,12 @@ Task<Wheels> forwardFor(double seconds) {
   return mkTask([seconds](const TaskState&) { return std::pair{wheels(0.5, 0.0), after(seconds)}; });
 }
 
+// A file's whole text.
+std::string readText(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
 // A path in the temp folder with nothing there (left over from an earlier run).
 fs::path tempPath(const std::string& name) {
   const fs::path path = fs::path(::testing::TempDir()) / name;
@@ -431,6 +437,71 @@ TEST(Session, AWorldWithNoRobotIsRefused) {
   EXPECT_EQ(validate(def).error(),
             "empty.toml: the world has no robot to drive: add one, e.g. a [[robot]] table with start = [1, 1] "
             "(the world format: worlds/data/README.md)");
+}
+
+// A run forked from an instant of another (frob run --from RUN#t=T): up to T it is the earlier run
+// to the last bit (true pose, odometry: the wheels' slip and the start drawn from the seed, played
+// again), each step checked against the trace; from T on the new controller drives, its clock at T.
+// The same fork twice is the same run; a fork in a world run with another seed is refused.
+TEST(Session, AForkIsTheEarlierRunUpToItsInstantThenTheNewControllers) {
+  const worlds::WorldDef world = *worlds::parseWorld("size = [6.0, 4.0]\nseed = 5\n[[robot]]\nstart = [1.5, 2.0]\n", "noisy.toml");
+  const auto driving = [](double forward, double turn) {
+    return inlineController(makeController([=] { return mkTask([=](const TaskState&) { return std::pair{wheels(forward, turn), after(100.0)}; }); }));
+  };
+  const fs::path original = tempPath("fork_original.csv"), forked = tempPath("fork_forked.csv"), again = tempPath("fork_again.csv");
+  const auto run = [&](LoadedController c, const fs::path& trace, std::optional<ForkPoint> fork, std::uint64_t seed = 5) {
+    return runSession({.world = world,
+                       .worldName = "noisy",
+                       .options = {.seed = seed},
+                       .controllers = {std::move(c)},
+                       .seconds = 6,
+                       .fork = std::move(fork),
+                       .outputs = {.trace = trace.string()}});
+  };
+  ASSERT_TRUE(run(driving(0.4, 0.3), original, std::nullopt).ok());
+  Result<ForkPoint> at3 = readForkPoint(original.string() + "#t=3", 0.01);
+  ASSERT_TRUE(at3.ok()) << at3.error();
+  EXPECT_EQ(at3.value().poses.size(), 301u);
+  EXPECT_EQ(at3.value().wheels.size(), 300u) << "the new controller decides at 3 s itself";
+  Result<Summary> f = run(driving(0.2, -0.5), forked, at3.value());
+  ASSERT_TRUE(f.ok()) << f.error();
+  ASSERT_FALSE(f.value().failed()) << f.value().robots[0].failure;
+  ASSERT_FALSE(f.value().robots[0].lastTasks.empty());
+  EXPECT_EQ(f.value().robots[0].lastTasks.front().start, 3.0) << "the controller's clock reads the instant it took over at";
+  // Rows: time, robot, true pose, odometry, wheels, ...: up to 2.99 s all of these the earlier run's, at 3 s its poses.
+  const auto rows = [](const fs::path& file) {
+    std::vector<std::vector<std::string>> out;
+    std::istringstream in(readText(file));
+    std::string line;
+    std::getline(in, line);
+    while (std::getline(in, line)) {
+      std::vector<std::string> cells;
+      std::istringstream c(line);
+      for (std::string cell; cells.size() < 10 && std::getline(c, cell, ',');) cells.push_back(cell);
+      out.push_back(cells);
+    }
+    return out;
+  };
+  const auto before = rows(original), after = rows(forked);
+  ASSERT_EQ(after.size(), before.size());
+  for (std::size_t k = 0; k < 300; ++k) EXPECT_EQ(after[k], before[k]) << k;
+  EXPECT_EQ(std::vector(after[300].begin(), after[300].begin() + 8), std::vector(before[300].begin(), before[300].begin() + 8));
+  EXPECT_EQ(after[300][8], "0.2") << "the new controller's wheels from 3 s on";
+  EXPECT_NE(after[400][2], before[400][2]);
+  // The same fork again: the same run.
+  Result<Summary> g = run(driving(0.2, -0.5), again, at3.value());
+  ASSERT_TRUE(g.ok()) << g.error();
+  EXPECT_EQ(g.value().trajectoryHash, f.value().trajectoryHash);
+  EXPECT_EQ(readText(again), readText(forked));
+  // Another seed draws another start: not the earlier run, said at once.
+  Result<Summary> other = run(driving(0.2, -0.5), tempPath("fork_other.csv"), at3.value(), 6);
+  ASSERT_TRUE(other.ok()) << other.error();
+  EXPECT_EQ(other.value().robots[0].failure,
+            "robot0: the run strays from " + original.string() +
+                " at 0.00 s: it is not a run of this world and seed (give frob run that run's --world, --seed and --dt)");
+  EXPECT_EQ(readForkPoint(original.string() + "#t=7", 0.01).error(), "--from: " + original.string() + " has its run up to 5.99 s, not to 7.00 s");
+  EXPECT_EQ(readForkPoint(original.string(), 0.01).error(),
+            "--from " + original.string() + ": give an earlier run's trace and an instant of it, e.g. run.csv#t=12.5");
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "frob/debug.hpp"
 #include "frob/render/renderer.hpp"
 #include "frob/run/controller_file.hpp"
+#include "frob/run/fork.hpp"
 #include "frob/run/host.hpp"
 #include "frob/run/run_record.hpp"
 #include "frob/worlds/run.hpp"
@@ -53,6 +54,7 @@ struct RunDef {
   /// trace and as plots with their bands to the page.
   std::function<std::vector<Measured>(const RunRecord&)> measure;
   bool meantToRunForever = false;  ///< the controller's task is meant never to return (Diagnosis::hints)
+  std::optional<ForkPoint> fork;   ///< set: the run is an earlier one's up to its instant, the controllers' from then on
   RunOutputs outputs;              ///< files to write
   int fps = 30;                    ///< frames per second of the video and frames
   double speed = 1.0;              ///< the video plays this many times faster than simulated time
