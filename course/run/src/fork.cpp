@@ -69,6 +69,12 @@ Result<ForkPoint> readForkPoint(const std::string& spec, double dt) {
   if (hash == std::string::npos || !number(std::string_view(spec).substr(hash + 3), f.at) || !(f.at >= 0)) {
     return Status::failure("--from " + spec + ": give an earlier run's trace and an instant of it, e.g. run.csv#t=12.5");
   }
+  if (f.source.ends_with(".html")) {
+    return Status::failure("--from " + f.source +
+                           ": a run viewer page keeps the run to the millimetre, not to the last bit: fork from that run's "
+                           "--trace (frob run ... --trace run.csv, then --from run.csv#t=" +
+                           spec.substr(hash + 3) + ")");
+  }
   std::ifstream in(f.source);
   if (!in) return Status::failure("--from: cannot read the trace '" + f.source + "' (write one with frob run --trace)");
   const auto bad = [&](std::size_t line, const std::string& why) {

@@ -500,6 +500,9 @@ TEST(Session, AForkIsTheEarlierRunUpToItsInstantThenTheNewControllers) {
             "robot0: the run strays from " + original.string() +
                 " at 0.00 s: it is not a run of this world and seed (give frob run that run's --world, --seed and --dt)");
   EXPECT_EQ(readForkPoint(original.string() + "#t=7", 0.01).error(), "--from: " + original.string() + " has its run up to 5.99 s, not to 7.00 s");
+  EXPECT_EQ(readForkPoint("run.html#t=2.5", 0.01).error(),
+            "--from run.html: a run viewer page keeps the run to the millimetre, not to the last bit: fork from that run's --trace (frob run ... "
+            "--trace run.csv, then --from run.csv#t=2.5)");
   EXPECT_EQ(readForkPoint(original.string(), 0.01).error(),
             "--from " + original.string() + ": give an earlier run's trace and an instant of it, e.g. run.csv#t=12.5");
 }
