@@ -378,9 +378,10 @@ int main(int argc, char** argv) {
                    "publishes with withPlot (default: every published value), e.g. s4,left")
       ->delimiter(',');
   runCmd->add_option("--trace", run.outputs.trace, "Write a CSV row per robot per step");
-  runCmd->add_option("--from", run.from,
-                     "Start from an instant of an earlier run, e.g. run.csv#t=12.5 (its --trace): the world as it was then, to the last bit, "
-                     "with your controllers taking over (give that run's --world, --seed and --dt)");
+  runCmd->add_option(
+      "--from", run.from,
+      "Start from an instant of an earlier run, e.g. run.html#t=12.5 (its --html page or --trace): the world as it was then, to the last bit, "
+      "with your controllers taking over (give that run's --world, --seed and --dt)");
   runCmd->add_option("--timeline", run.outputs.timeline, "Write the task timeline as JSON for ui.perfetto.dev or chrome://tracing");
   runCmd->add_option(
       "--html", run.outputs.html,

@@ -2,9 +2,17 @@
 
 #include "frob/run/format.hpp"
 
+#include <nlohmann/json.hpp>
+
+#include <openssl/evp.h>
+#include <zlib.h>
+
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 namespace frob::course {
@@ -39,7 +47,10 @@ class ForkDriver final : public worlds::ControllerDriver {
     if (k < fork_.poses.size()) {  // the earlier run's instant: the same world to the last bit, or not this run at all
       for (std::size_t i = 0; i < wheels.size() && !strayed_; ++i) {
         const Pose2 was = fork_.poses[k][i], is = sim_.truePose(i);
-        if (was.position.x() == is.position.x() && was.position.y() == is.position.y() && was.heading == is.heading) continue;
+        const double d = fork_.tolerance;
+        if (std::abs(was.position.x() - is.position.x()) <= d && std::abs(was.position.y() - is.position.y()) <= d &&
+            std::abs(was.heading - is.heading) <= d)
+          continue;
         strayed_ = true;
         failed.emplace_back(i, format("the run strays from %s at %.2f s: it is not a run of this world and seed (give frob run that run's --world, "
                                       "--seed and --dt)",
@@ -61,20 +72,82 @@ class ForkDriver final : public worlds::ControllerDriver {
   bool strayed_ = false;
 };
 
+// The run a viewer page keeps (run_page.cpp): JSON, deflated, in base64, in its run-data script.
+Result<nlohmann::json> pageData(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return Status::failure("--from: cannot read the page '" + file + "' (write one with frob run --html)");
+  const std::string page{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const std::string open = "id=\"run-data\">";
+  const std::size_t at = page.find(open), end = at == std::string::npos ? at : page.find("</script>", at);
+  if (end == std::string::npos) return Status::failure("--from: " + file + " is not a run viewer page of frob run (frob run --html)");
+  std::string text = page.substr(at + open.size(), end - at - open.size());
+  std::erase_if(text, [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; });
+  if (text.empty() || text.size() % 4 != 0) return Status::failure("--from: " + file + ": its run data is not base64");
+  std::string packed(text.size() / 4 * 3, '\0');
+  const int n = EVP_DecodeBlock(reinterpret_cast<unsigned char*>(packed.data()), reinterpret_cast<const unsigned char*>(text.data()),
+                                static_cast<int>(text.size()));
+  if (n < 0) return Status::failure("--from: " + file + ": its run data is not base64");
+  packed.resize(static_cast<std::size_t>(n) - static_cast<std::size_t>(std::count(text.end() - 2, text.end(), '=')));
+  z_stream z{};
+  std::string json;
+  bool inflated = inflateInit(&z) == Z_OK;
+  z.next_in = reinterpret_cast<Bytef*>(packed.data());
+  z.avail_in = static_cast<uInt>(packed.size());
+  for (int status = Z_OK; inflated && status == Z_OK;) {
+    char chunk[1 << 16];
+    z.next_out = reinterpret_cast<Bytef*>(chunk);
+    z.avail_out = sizeof chunk;
+    status = inflate(&z, Z_NO_FLUSH);
+    json.append(chunk, sizeof chunk - z.avail_out);
+    inflated = status == Z_OK || status == Z_STREAM_END;
+  }
+  inflateEnd(&z);
+  nlohmann::json doc = inflated ? nlohmann::json::parse(json, nullptr, false) : nlohmann::json();
+  if (!inflated || doc.is_discarded()) return Status::failure("--from: " + file + ": its run data cannot be read");
+  return doc;
+}
+
+// A page's run up to the fork's instant: poses to the millimetre (as the page keeps them), wheels to the bit.
+Result<ForkPoint> fromPage(ForkPoint f, double dt) {
+  Result<nlohmann::json> data = pageData(f.source);
+  if (!data) return data.status();
+  const nlohmann::json& doc = data.value();
+  try {
+    const double pageDt = doc.at("dt").get<double>();
+    if (std::abs(pageDt - dt) > 1e-12) {
+      return Status::failure(format("--from: %s is a run with steps of %g s: give --dt %g", f.source.c_str(), pageDt, pageDt));
+    }
+    const auto samples = doc.at("samples").get<std::size_t>(), steps = static_cast<std::size_t>(std::llround(f.at / dt));
+    if (doc.at("t0").get<double>() != 0.0 || steps >= samples) {
+      return Status::failure(
+          format("--from: %s has its run up to %.2f s, not to %.2f s", f.source.c_str(), static_cast<double>(samples - 1) * dt, f.at));
+    }
+    f.poses.assign(steps + 1, {}), f.wheels.assign(steps, {});
+    for (const nlohmann::json& r : doc.at("robots")) {
+      const nlohmann::json &q = r.at("q"), &wheels = r.at("wheels");
+      double x = 0, y = 0, h = 0;  // whole thousandths, each the difference from the one before
+      for (std::size_t k = 0; k <= steps; ++k) {
+        x += q.at("x").at(k).get<double>(), y += q.at("y").at(k).get<double>(), h += q.at("h").at(k).get<double>();
+        f.poses[k].push_back(Pose2{Point2(x / 1000, y / 1000), h / 1000});
+        if (k < steps) f.wheels[k].push_back(Wheels{wheels.at(k).at(0).get<double>(), wheels.at(k).at(1).get<double>()});
+      }
+    }
+  } catch (const nlohmann::json::exception&) {
+    return Status::failure("--from: " + f.source + ": its run data is not that of a run viewer page of this frob");
+  }
+  f.tolerance = 0.0005 + 1e-9;  // half a thousandth, as the page rounds
+  return f;
+}
+
 }  // namespace
 
 Result<ForkPoint> readForkPoint(const std::string& spec, double dt) {
   const std::size_t hash = spec.rfind("#t=");
   ForkPoint f{.source = spec.substr(0, hash)};
   if (hash == std::string::npos || !number(std::string_view(spec).substr(hash + 3), f.at) || !(f.at >= 0)) {
-    return Status::failure("--from " + spec + ": give an earlier run's trace and an instant of it, e.g. run.csv#t=12.5");
+    return Status::failure("--from " + spec + ": give an earlier run's page or trace and an instant of it, e.g. run.html#t=12.5");
   }
-  if (f.source.ends_with(".html")) {
-    return Status::failure("--from " + f.source +
-                           ": a run viewer page keeps the run to the millimetre, not to the last bit: fork from that run's "
-                           "--trace (frob run ... --trace run.csv, then --from run.csv#t=" +
-                           spec.substr(hash + 3) + ")");
-  }
+  if (f.source.ends_with(".html")) return fromPage(std::move(f), dt);
   std::ifstream in(f.source);
   if (!in) return Status::failure("--from: cannot read the trace '" + f.source + "' (write one with frob run --trace)");
   const auto bad = [&](std::size_t line, const std::string& why) {

@@ -178,6 +178,7 @@ void RunPage::step(const worlds::StepRecord& rec) {
     t.oh.add(r.odometry.heading);
     t.forward.add(r.wheels.forward);
     t.turn.add(r.wheels.turn);
+    t.wheels.push_back(r.wheels);
     for (std::size_t k = 0; k < t.sonar.size(); ++k) t.sonar[k].add(k < r.sonar.size() ? r.sonar[k] : 0.0);
     for (const BumperHit& b : r.bumps) t.bumps.emplace_back(samples_, thousandths(b.angle));
     for (char key : r.keys) t.keys.emplace_back(samples_, std::string(1, key));
@@ -204,6 +205,9 @@ Result<std::uint64_t> RunPage::write(const RunPageEnd& end) const {
     for (const Column& c : t.sonar) sonar.push_back(c.deltas);
     r["q"] = {{"x", t.x.deltas},   {"y", t.y.deltas},        {"h", t.h.deltas},     {"ox", t.ox.deltas},    {"oy", t.oy.deltas},
               {"oh", t.oh.deltas}, {"fw", t.forward.deltas}, {"tu", t.turn.deltas}, {"s", std::move(sonar)}};
+    nlohmann::json wheels = nlohmann::json::array();  // [forward, turn] per sample, to the last bit
+    for (const Wheels& w : t.wheels) wheels.push_back({w.forward, w.turn});
+    r["wheels"] = std::move(wheels);
     r["bumps"] = t.bumps;
     r["keys"] = t.keys;
     nlohmann::json pictures = nlohmann::json::array();

@@ -55,6 +55,7 @@ class RunPage {
   // One robot's instants.
   struct Track {
     Column x, y, h, ox, oy, oh, forward, turn;
+    std::vector<Wheels> wheels;  // exact, for a run forked from the page (frob run --from page.html#t=T)
     std::vector<Column> sonar;
     std::vector<std::pair<std::int64_t, std::int64_t>> bumps;  // sample, contact angle in thousandths of a radian
     std::vector<std::pair<std::int64_t, std::string>> keys;    // sample, key

@@ -458,7 +458,7 @@ TEST(Session, AForkIsTheEarlierRunUpToItsInstantThenTheNewControllers) {
                        .fork = std::move(fork),
                        .outputs = {.trace = trace.string()}});
   };
-  ASSERT_TRUE(run(driving(0.4, 0.3), original, std::nullopt).ok());
+  ASSERT_TRUE(run(driving(0.4123457, 0.3012345), original, std::nullopt).ok());
   Result<ForkPoint> at3 = readForkPoint(original.string() + "#t=3", 0.01);
   ASSERT_TRUE(at3.ok()) << at3.error();
   EXPECT_EQ(at3.value().poses.size(), 301u);
@@ -500,11 +500,23 @@ TEST(Session, AForkIsTheEarlierRunUpToItsInstantThenTheNewControllers) {
             "robot0: the run strays from " + original.string() +
                 " at 0.00 s: it is not a run of this world and seed (give frob run that run's --world, --seed and --dt)");
   EXPECT_EQ(readForkPoint(original.string() + "#t=7", 0.01).error(), "--from: " + original.string() + " has its run up to 5.99 s, not to 7.00 s");
-  EXPECT_EQ(readForkPoint("run.html#t=2.5", 0.01).error(),
-            "--from run.html: a run viewer page keeps the run to the millimetre, not to the last bit: fork from that run's --trace (frob run ... "
-            "--trace run.csv, then --from run.csv#t=2.5)");
+  // The earlier run's viewer page keeps its wheels to the bit: a fork from it is the fork from the trace.
+  const fs::path page = tempPath("fork_original.html"), fromPage = tempPath("fork_from_page.csv");
+  ASSERT_TRUE(runSession({.world = world,
+                          .worldName = "noisy",
+                          .options = {.seed = 5},
+                          .controllers = {driving(0.4123457, 0.3012345)},
+                          .seconds = 6,
+                          .outputs = {.html = page.string()}})
+                  .ok());
+  Result<ForkPoint> pageAt3 = readForkPoint(page.string() + "#t=3", 0.01);
+  ASSERT_TRUE(pageAt3.ok()) << pageAt3.error();
+  EXPECT_EQ(pageAt3.value().wheels, at3.value().wheels);
+  ASSERT_TRUE(run(driving(0.2, -0.5), fromPage, pageAt3.value()).ok());
+  EXPECT_EQ(readText(fromPage), readText(forked));
+  EXPECT_EQ(readForkPoint(page.string() + "#t=3", 0.02).error(), "--from: " + page.string() + " is a run with steps of 0.01 s: give --dt 0.01");
   EXPECT_EQ(readForkPoint(original.string(), 0.01).error(),
-            "--from " + original.string() + ": give an earlier run's trace and an instant of it, e.g. run.csv#t=12.5");
+            "--from " + original.string() + ": give an earlier run's page or trace and an instant of it, e.g. run.html#t=12.5");
 }
 
 }  // namespace

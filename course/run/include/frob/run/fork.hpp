@@ -12,15 +12,17 @@
 
 namespace frob::course {
 
-/// An earlier run up to one of its instants, as its trace (--trace) recorded it.
+/// An earlier run up to one of its instants, as its trace (--trace) or viewer page (--html) recorded it.
 struct ForkPoint {
-  std::string source;                       ///< the trace, as named
+  std::string source;                       ///< the trace or page, as named
   double at = 0.0;                          ///< the instant the controllers take over, seconds
   std::vector<std::vector<Wheels>> wheels;  ///< per step before it, per robot: what the earlier run's controllers commanded
   std::vector<std::vector<Pose2>> poses;    ///< per step up to it, per robot: the earlier run's true poses
+  double tolerance = 0.0;                   ///< how far a pose may stray from them: 0 from a trace, half a millimetre from a page
 };
 
-/// Reads `spec` ("run.csv#t=12.5"), a trace of a run with steps of `dt`; says what is wrong with it.
+/// Reads `spec` ("run.csv#t=12.5" or "run.html#t=12.5"), the trace or viewer page of a run with steps of
+/// `dt`; says what is wrong with it.
 [[nodiscard]] Result<ForkPoint> readForkPoint(const std::string& spec, double dt);
 
 /// `controllers`, taking over at the fork's instant; before it the earlier run's wheels, and a robot
