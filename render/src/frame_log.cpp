@@ -2,6 +2,8 @@
 
 #include "frob/assert.hpp"
 
+#include <algorithm>
+
 namespace frob::render {
 
 namespace {
@@ -43,7 +45,8 @@ void FrameLog::note(const RunView& view) {
   frames_.push_back(std::move(f));
 }
 
-Status FrameLog::replay(const RunView& end, const std::function<Status(const FrameScene&, const PlotSet&)>& draw) const {
+Status FrameLog::replay(const RunView& end, const std::function<Status(const FrameScene&, const PlotSet&)>& draw,
+                        const std::vector<Plot>& more) const {
   FrameScene scene = end.scene();
   const PlotSet& all = end.plots();
   PlotSet plots{.plots = {}, .taskMarks = {}, .tStart = all.tStart, .tEnd = all.tEnd};
@@ -79,7 +82,17 @@ Status FrameLog::replay(const RunView& end, const std::function<Status(const Fra
         shown.series[s].samples.assign(whole.series[s].samples.begin(), whole.series[s].samples.begin() + f.samples[k]);
       }
     }
-    if (Status s = draw(scene, plots); !s) return s;
+    const std::size_t noted = plots.plots.size();
+    for (const Plot& m : more) {  // drawn below the noted charts, up to this frame's instant
+      Plot& shown = plots.plots.emplace_back(Plot{m.title, {}, m.yMin, m.yMax, m.levels});
+      for (const Series& s : m.series) {
+        const auto upTo = std::upper_bound(s.samples.begin(), s.samples.end(), f.time + 1e-9, [](double t, const Sample& v) { return t < v.t; });
+        shown.series.push_back(Series{s.name, std::vector<Sample>(s.samples.begin(), upTo), s.color});
+      }
+    }
+    const Status s = draw(scene, plots);
+    plots.plots.resize(noted);
+    if (!s) return s;
   }
   return {};
 }

@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace frob::render {
 namespace {
 
@@ -60,6 +62,36 @@ TEST(FrameLog, FramesDrawnAfterTheRunAreTheFramesDrawnDuringIt) {
   EXPECT_EQ(k, during.size());
   EXPECT_GT(changed, during.size() / 2);  // the frames show a run going on, not one instant
   EXPECT_GT(view.plots().plots.size(), 2u) << "no chart of \"left\" appeared";
+}
+
+// Charts made once the run is over (what an assignment measures) are drawn in each frame below the
+// noted ones, up to the frame's instant, with their levels; the noted charts are as they were.
+TEST(FrameLog, ChartsMadeAfterTheRunGrowWithTheFrames) {
+  Result<worlds::WorldDef> world = worlds::loadReferenceWorld("maze");
+  ASSERT_TRUE(world.ok()) << world.error();
+  worlds::Run run(world.value(), {}, {[](const Robot& r) { return runTask(r, support::runAround()); }}, {.window = 1});
+  RunView view(run);
+  FrameLog film;
+  for (int k = 0; k < 100; ++k) {
+    run.step();
+    view.update(run);
+    if (k % 10 == 9) film.note(view);
+  }
+  Plot measured{.title = "judged: clearance", .series = {{"clearance (m)", {}, green}}, .yMin = {}, .yMax = {}, .levels = {0.1}};
+  for (int k = 0; k < 100; ++k) measured.series[0].samples.push_back({k * 0.01, 0.5 + 0.001 * k});
+  std::vector<std::pair<double, std::size_t>> seen;  // each frame's instant, and the samples of the chart made afterwards
+  const Status s = film.replay(view,
+                               [&](const FrameScene& scene, const PlotSet& plots) {
+                                 EXPECT_EQ(plots.plots.size(), view.plots().plots.size() + 1);
+                                 EXPECT_EQ(plots.plots.back().title, "judged: clearance");
+                                 EXPECT_EQ(plots.plots.back().levels, std::vector<double>{0.1});
+                                 seen.emplace_back(scene.time, plots.plots.back().series[0].samples.size());
+                                 return Status();
+                               },
+                               {measured});
+  ASSERT_TRUE(s.ok()) << s.error();
+  ASSERT_EQ(seen.size(), 10u);
+  for (const auto& [t, samples] : seen) EXPECT_EQ(samples, static_cast<std::size_t>(std::llround(t / 0.01)) + 1) << t;
 }
 
 TEST(FrameLog, AReplayStopsAtTheFirstFrameThatFails) {

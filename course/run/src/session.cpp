@@ -339,16 +339,32 @@ Result<Summary> runSession(const RunDef& def) {
     return summary;
   }
 
+  // What the assignment measures, charted for the video and the plot: the first robot's, as the
+  // other charts are, with the band it wants marked.
+  std::vector<render::Plot> judged;
+  for (const Measured& m : measured) {
+    if (m.robot != 0) continue;
+    render::Plot& chart = judged.emplace_back(
+        render::Plot{.title = "judged: " + m.name, .series = {{m.name + " (" + m.unit + ")", {}, green}}, .yMin = {}, .yMax = {}, .levels = {}});
+    const auto every = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(0.05 / m.dt)));  // as RunView samples
+    for (std::size_t k = 0; k < m.values.size(); k += every) chart.series[0].samples.push_back({static_cast<double>(k) * m.dt, m.values[k]});
+    for (const std::optional<double>& b : {m.low, m.high}) {
+      if (b) chart.levels.push_back(*b);
+    }
+  }
   if (drawFrames) {
     render::Image image;
     std::size_t drawn = 0;
-    Status s = film.replay(*view, [&](const render::FrameScene& scene, const render::PlotSet& plots) {
-      renderer->renderInto(scene, plots, image);
-      Status written = video ? video->write(image) : Status();
-      if (written && frames) written = frames->write(image);
-      if (def.drawing) def.drawing(++drawn, film.size());
-      return written;
-    });
+    Status s = film.replay(
+        *view,
+        [&](const render::FrameScene& scene, const render::PlotSet& plots) {
+          renderer->renderInto(scene, plots, image);
+          Status written = video ? video->write(image) : Status();
+          if (written && frames) written = frames->write(image);
+          if (def.drawing) def.drawing(++drawn, film.size());
+          return written;
+        },
+        judged);
     if (!s) return discard(), s;
   }
 
@@ -384,16 +400,7 @@ Result<Summary> runSession(const RunDef& def) {
   if (!out.plot.empty()) {
     render::PlotSet plots = view->plots();
     plots.tEnd = summary.simulatedSeconds;  // the time axis ends where the run ended
-    for (const Measured& m : measured) {    // the first robot's, as the other charts: with the band wanted marked
-      if (m.robot != 0) continue;
-      render::Plot chart{.title = "judged: " + m.name, .series = {{m.name + " (" + m.unit + ")", {}, green}}, .yMin = {}, .yMax = {}, .levels = {}};
-      const auto every = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(0.05 / m.dt)));  // as RunView samples
-      for (std::size_t k = 0; k < m.values.size(); k += every) chart.series[0].samples.push_back({static_cast<double>(k) * m.dt, m.values[k]});
-      for (const std::optional<double>& b : {m.low, m.high}) {
-        if (b) chart.levels.push_back(*b);
-      }
-      plots.plots.push_back(std::move(chart));
-    }
+    plots.plots.insert(plots.plots.end(), judged.begin(), judged.end());
     if (Status s = render::writePng(out.plot, renderer->renderPlots(plots)); !s) return s;
     summary.written.push_back(out.plot);
   }

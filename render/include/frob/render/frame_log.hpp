@@ -34,8 +34,10 @@ class FrameLog {
   /// Frames noted.
   [[nodiscard]] std::size_t size() const { return frames_.size(); }
   /// Calls `draw` with each noted frame in order, its scene and plots exactly as `end` (the same view,
-  /// updated to the run's end) showed them when the frame was noted; stops at the first failure.
-  [[nodiscard]] Status replay(const RunView& end, const std::function<Status(const FrameScene&, const PlotSet&)>& draw) const;
+  /// updated to the run's end) showed them when the frame was noted, then `more` (charts made once the
+  /// run was over: what an assignment measures) up to the frame's instant; stops at the first failure.
+  [[nodiscard]] Status replay(const RunView& end, const std::function<Status(const FrameScene&, const PlotSet&)>& draw,
+                              const std::vector<Plot>& more = {}) const;
 
  private:
   struct Robot {
