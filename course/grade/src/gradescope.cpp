@@ -47,7 +47,7 @@ DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libseccomp-dev libzip-dev libssl-dev zlib1g-dev
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER="clang-$clang" -DCMAKE_CXX_COMPILER="clang++-$clang" \
   -DFROB_BUILD_TESTS=OFF
-cmake --build build
+cmake --build build --target frob_app  # frob, its sandbox and host: what grading runs (not the examples)
 if [ -z "$(ls reference 2> /dev/null)" ]; then
   echo "setup.sh: the rubric names no reference solution: nothing proves that this build grades" >&2
   exit 0
