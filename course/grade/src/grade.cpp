@@ -36,7 +36,7 @@ std::string utcNow() {
   return text;
 }
 
-// What a run made: the grader's record of it, and the wheels applied at every step.
+// What a run made: the grader's record of it, and the wheels applied at every step (when kept).
 struct Ran {
   RunRecord record;
   std::vector<std::string> hints;
@@ -44,16 +44,23 @@ struct Ran {
   std::uint64_t trajectoryHash = 0;
 };
 
+// How drive() runs: `meantToRunForever`, no hint that a task never ended; `keepWheels`, every
+// step's wheels kept (for a log).
+struct Driving {
+  bool meantToRunForever = false;
+  bool keepWheels = false;
+};
+
 // Steps `run` for `steps` steps, or until a controller fails, keeping every robot's true path,
-// contacts and reported result; `meantToRunForever`: no hint that a task never ended.
-Ran drive(worlds::Run& run, const worlds::WorldDef& world, std::int64_t steps, bool meantToRunForever = false) {
+// contacts and reported result.
+Ran drive(worlds::Run& run, const worlds::WorldDef& world, std::int64_t steps, Driving how = {}) {
   const worlds::Simulation& sim = run.simulation();
   Ran ran;
   RunRecorder recorder(sim, world);
   Diagnosis diagnosis(sim.walls(), world.size, sim.dt());
   for (std::int64_t k = 0; k < steps && run.failures().empty(); ++k) {
     run.step();
-    ran.wheels.push_back(run.commands());
+    if (how.keepWheels) ran.wheels.push_back(run.commands());
     recorder.stepped(sim);
     for (std::size_t i = 0; i < sim.robotCount(); ++i) {
       const SensorFrame& frame = sim.frame(i);
@@ -67,7 +74,7 @@ Ran drive(worlds::Run& run, const worlds::WorldDef& world, std::int64_t steps, b
   }
   ran.record = std::move(recorder).finish(run.failures());
   for (std::size_t i = 0; i < sim.robotCount(); ++i) {
-    for (std::string& h : diagnosis.hints(i, sim.robotName(i), run.timeline(i).running(), sim.time(), meantToRunForever))
+    for (std::string& h : diagnosis.hints(i, sim.robotName(i), run.timeline(i).running(), sim.time(), how.meantToRunForever))
       ran.hints.push_back(std::move(h));
   }
   ran.trajectoryHash = run.recorder().trajectoryHash();
@@ -247,7 +254,8 @@ void runCheck(const GradeDef& def, const CompiledController& compiled, const Che
     return;
   }
   worlds::Run run(world, {.dt = def.rubric.dt, .seed = r.seed}, hosts.value().driver(false), {.keepSteps = false});
-  const Ran ran = drive(run, world, stepsFor(check.seconds, def.rubric.dt), !check.waitsForAReturn());
+  const Ran ran =
+      drive(run, world, stepsFor(check.seconds, def.rubric.dt), {.meantToRunForever = !check.waitsForAReturn(), .keepWheels = !def.logs.empty()});
   judgeRun(check, ran.record, r);
   r.trajectoryHash = ran.trajectoryHash;
   r.hints = ran.hints;

@@ -77,10 +77,13 @@ class HostDriver final : public worlds::ControllerDriver {
   void receive(const Instant& now, std::span<Wheels> wheels, std::span<Picture> pictures, std::vector<std::pair<std::size_t, std::string>>& failed) {
     if (!lost_) return fail(failed, lost_.error());
     if (dead_) return;
-    char at[48];
-    std::snprintf(at, sizeof at, " at t = %.2f s", now.time);
-    if (Status s = host_.await(++host_.sequence, host_.def.stepSeconds, false); !s) return fail(failed, s.error() + at);
-    if (Status s = host_.refusal(); !s) return fail(failed, s.error() + at);
+    const auto at = [&] {  // formatted only for a failure: a step's budget is a few microseconds
+      char text[48];
+      std::snprintf(text, sizeof text, " at t = %.2f s", now.time);
+      return std::string(text);
+    };
+    if (Status s = host_.await(++host_.sequence, host_.def.stepSeconds, false); !s) return fail(failed, s.error() + at());
+    if (Status s = host_.refusal(); !s) return fail(failed, s.error() + at());
     for (std::uint32_t k = 0; k < robots_.size(); ++k) {
       if (stopped_[k]) continue;
       const std::uint32_t i = robots_[k];

@@ -13,6 +13,7 @@
 #include <cstring>
 #include <mutex>
 #include <new>
+#include <optional>
 #include <utility>
 
 namespace frob::sandbox {
@@ -28,13 +29,15 @@ void cpuRelax() { __builtin_ia32_pause(); }
 bool spin(const Doorbell& bell, std::uint32_t sequence, std::uint64_t nanoseconds, int looks) {
   if (bell.sequence.load(std::memory_order_acquire) == sequence) return true;
   if (nanoseconds == 0) return false;
-  const auto end = std::chrono::steady_clock::now() + std::chrono::nanoseconds(nanoseconds);
+  std::optional<std::chrono::steady_clock::time_point> end;  // read after the first looks: most waits end within them
   for (;;) {
     for (int i = 0; i < looks; ++i) {
       if (bell.sequence.load(std::memory_order_acquire) == sequence) return true;
       cpuRelax();
     }
-    if (std::chrono::steady_clock::now() >= end) return false;
+    const auto now = std::chrono::steady_clock::now();
+    if (!end) end = now + std::chrono::nanoseconds(nanoseconds);
+    if (now >= *end) return false;
     ::sched_yield();
   }
 }
