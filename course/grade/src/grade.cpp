@@ -18,6 +18,7 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <tuple>
 #include <utility>
 
 namespace frob::course {
@@ -233,41 +234,56 @@ double Grade::maxScore() const {
 
 namespace {
 
+// What makes a run of a grading: its world (a generated kind and seed, or a file), its seed, its
+// steps and its hints' kind. Checks that name the same world and seeds for as long judge one run
+// each (bit-identical runs).
+using RunKey = std::tuple<std::string, std::uint64_t, std::uint64_t, std::int64_t, bool>;
+using SharedRuns = std::map<RunKey, Ran>;
+
 // Run `r` (its world and seed set) of `check` by the compiled controller, judged; the host's notes and
-// the sandbox's missing layers added to `g`.
+// the sandbox's missing layers added to `g`. With `shared`, a run made for another check is judged
+// again instead of made twice.
 void runCheck(const GradeDef& def, const CompiledController& compiled, const Check& check, const WorldRef& ref, const worlds::WorldDef& world,
-              RunGrade& r, Grade& g) {
-  struct Slot {  // one of the class's run slots, held for the run
-    std::counting_semaphore<>* slots;
-    explicit Slot(std::counting_semaphore<>* s) : slots(s) {
-      if (slots != nullptr) slots->acquire();
+              RunGrade& r, Grade& g, SharedRuns* shared = nullptr) {
+  const std::int64_t steps = stepsFor(check.seconds, def.rubric.dt);
+  const Driving how{.meantToRunForever = !check.waitsForAReturn(), .keepWheels = !def.logs.empty()};
+  const RunKey key{ref.generated ? toString(*ref.generated) : ref.name, ref.worldSeed, r.seed, steps, how.meantToRunForever};
+  const auto known = shared != nullptr ? shared->find(key) : SharedRuns::iterator();
+  std::optional<Ran> own;
+  const Ran* ran = shared != nullptr && known != shared->end() ? &known->second : nullptr;
+  if (ran == nullptr) {
+    struct Slot {  // one of the class's run slots, held for the run
+      std::counting_semaphore<>* slots;
+      explicit Slot(std::counting_semaphore<>* s) : slots(s) {
+        if (slots != nullptr) slots->acquire();
+      }
+      ~Slot() {
+        if (slots != nullptr) slots->release();
+      }
+    } slot(def.runSlots.get());
+    Result<RobotHosts> hosts = RobotHosts::start({compiled.module}, {compiled.source}, {0}, world.robots.size(), def.host);
+    if (!hosts) {
+      r.reason = hosts.error();
+      r.kind = "the controller's program could not start";
+      if (isGraderFailure(hosts.status())) g.graderFailure = hosts.error();
+      return;
     }
-    ~Slot() {
-      if (slots != nullptr) slots->release();
+    worlds::Run run(world, {.dt = def.rubric.dt, .seed = r.seed}, hosts.value().driver(false), {.keepSteps = false});
+    Ran made = drive(run, world, steps, how);
+    for (std::string& n : hosts.value().notes()) {
+      if (std::find(g.notes.begin(), g.notes.end(), n) == g.notes.end()) g.notes.push_back(std::move(n));
     }
-  } slot(def.runSlots.get());
-  Result<RobotHosts> hosts = RobotHosts::start({compiled.module}, {compiled.source}, {0}, world.robots.size(), def.host);
-  if (!hosts) {
-    r.reason = hosts.error();
-    r.kind = "the controller's program could not start";
-    if (isGraderFailure(hosts.status())) g.graderFailure = hosts.error();
-    return;
+    g.sandboxMissing = missingLayers(hosts.value().layers());
+    ran = shared != nullptr ? &shared->emplace(key, std::move(made)).first->second : &own.emplace(std::move(made));
   }
-  worlds::Run run(world, {.dt = def.rubric.dt, .seed = r.seed}, hosts.value().driver(false), {.keepSteps = false});
-  const Ran ran =
-      drive(run, world, stepsFor(check.seconds, def.rubric.dt), {.meantToRunForever = !check.waitsForAReturn(), .keepWheels = !def.logs.empty()});
-  judgeRun(check, ran.record, r);
-  r.trajectoryHash = ran.trajectoryHash;
-  r.hints = ran.hints;
-  for (std::string& n : hosts.value().notes()) {
-    if (std::find(g.notes.begin(), g.notes.end(), n) == g.notes.end()) g.notes.push_back(std::move(n));
-  }
-  g.sandboxMissing = missingLayers(hosts.value().layers());
+  judgeRun(check, ran->record, r);
+  r.trajectoryHash = ran->trajectoryHash;
+  r.hints = ran->hints;
   if (!def.logs.empty()) {
     std::error_code ec;
     fs::create_directories(def.logs, ec);
     r.log = def.logs / logName(check.name, ref.name, r.seed);
-    if (!writeLog(r.log, def, check, ref, r.seed, ran, g)) g.graderFailure = std::string(kGraderFailure) + "cannot write the log " + r.log.string();
+    if (!writeLog(r.log, def, check, ref, r.seed, *ran, g)) g.graderFailure = std::string(kGraderFailure) + "cannot write the log " + r.log.string();
   }
 }
 
@@ -458,10 +474,11 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
   Result<CompiledController> compiled = compileSubmission(submission, def.compiler, &messages);
   if (!compiled)
     (isGraderFailure(compiled.status()) ? g.graderFailure : g.compileError) = compiled.error() + (messages.empty() ? "" : "\n" + messages);
+  SharedRuns shared;
   scoreChecks(
       checked, g,
       [&](const Check& check, const WorldRef& ref, const worlds::WorldDef& world, RunGrade& r, Grade& out) {
-        runCheck(def, compiled.value(), check, ref, world, r, out);
+        runCheck(def, compiled.value(), check, ref, world, r, out, &shared);
       },
       compiled ? "" : "the submission did not compile");
   g.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

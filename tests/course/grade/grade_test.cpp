@@ -350,6 +350,43 @@ TEST_F(Grading, EachCheckRunsInItsOwnDraws) {
   EXPECT_NE(g.checks[0].runs[0].trajectoryHash, g.checks[1].runs[0].trajectoryHash);  // ...another world
 }
 
+// Checks that name the same world and seeds for as long judge one run each: the controller's
+// host starts once per world and seed (its global constructor prints once), not once per check; a
+// check of another length, or with the same criteria kept apart, makes its own. Each check still
+// judges by its own criteria, with its own log.
+TEST_F(Grading, ChecksOfTheSameWorldSeedAndLengthShareTheRun) {
+  std::ofstream(dir_ / "counted.cpp") << kGood << "#include <cstdio>\nstatic const int started = std::puts(\"host started\");\n";
+  std::ofstream(dir_ / "assignment" / "shared.toml")
+      << "title = \"Shared\"\nseconds = 12\n"
+         "[[check]]\nname = \"reaches\"\nworlds = [\"worlds/field.toml\"]\nseeds = [1, 2]\ngoal = { within = 0.3, by = 12 }\n"
+         "[[check]]\nname = \"soon\"\nworlds = [\"worlds/field.toml\"]\nseeds = [1, 2]\ngoal = { within = 0.3, by = 5 }\n"
+         "[[check]]\nname = \"shorter\"\nworlds = [\"worlds/field.toml\"]\nseeds = [1]\nseconds = 11\ngoal = { within = 0.3 }\n";
+  GradeDef def = def_;
+  def.rubric = loadRubric(dir_ / "assignment" / "shared.toml").value();
+  def.logs = dir_ / "logs";
+  std::string output;
+  def.host.output = [&](std::string_view text) { output += text; };
+  const Grade g = grade(def, dir_ / "counted.cpp");
+  ASSERT_EQ(g.compileError, "");
+  ASSERT_EQ(g.checks.size(), 3u);
+  std::size_t starts = 0;
+  for (std::size_t at = 0; (at = output.find("host started", at)) != std::string::npos; at += 1) ++starts;
+  EXPECT_EQ(starts, 3u) << output;  // seeds 1 and 2 for 12 s, seed 1 for 11 s
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(g.checks[0].runs[k].trajectoryHash, g.checks[1].runs[k].trajectoryHash);
+    EXPECT_TRUE(g.checks[0].runs[k].passed) << g.checks[0].runs[k].reason;
+    EXPECT_FALSE(g.checks[1].runs[k].passed);  // the goal at 9.5 s, not by 5 s
+    EXPECT_NE(g.checks[0].runs[k].log, g.checks[1].runs[k].log);
+    EXPECT_TRUE(fs::is_regular_file(g.checks[1].runs[k].log));
+  }
+  EXPECT_NE(g.checks[2].runs[0].trajectoryHash, g.checks[0].runs[0].trajectoryHash);
+  // Judged again from the logs, each check's runs replay to the same verdicts.
+  const std::optional<Grade> again = rejudge(def, dir_ / "counted.cpp", def.logs);
+  ASSERT_TRUE(again.has_value());
+  for (std::size_t c = 0; c < 3; ++c)
+    for (std::size_t k = 0; k < g.checks[c].runs.size(); ++k) EXPECT_EQ(again->checks[c].runs[k].passed, g.checks[c].runs[k].passed);
+}
+
 // A log is signed with the secret: a student who edits a failing log (to stop early and report what
 // the check wants) gets a refusal, not a replay; so does an unsigned log, or the wrong secret.
 TEST_F(Grading, AnEditedOrUnsignedLogIsRefused) {

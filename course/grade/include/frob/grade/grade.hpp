@@ -65,7 +65,7 @@ struct RunGrade {
   std::vector<CriterionVerdict> criteria;  ///< each criterion's verdict and margin; none when the controller failed
   std::uint64_t trajectoryHash = 0;        ///< of every true pose (replays must match it)
   std::filesystem::path log;               ///< its wheel log, when logs are kept
-  double wallSeconds = 0.0;                ///< how long the run took (a timing field, like Grade::wallSeconds)
+  double wallSeconds = 0.0;  ///< how long the run took, or judging an earlier check's same run (a timing field, like Grade::wallSeconds)
 };
 
 /// One check's outcome: the fraction of its runs that passed, times its points.
