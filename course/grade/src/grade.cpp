@@ -238,19 +238,30 @@ namespace {
 // steps and its hints' kind. Checks that name the same world and seeds for as long judge one run
 // each (bit-identical runs).
 using RunKey = std::tuple<std::string, std::uint64_t, std::uint64_t, std::int64_t, bool>;
-using SharedRuns = std::map<RunKey, Ran>;
+
+RunKey runKey(const Check& check, const WorldRef& ref, std::uint64_t seed, double dt) {
+  return {ref.generated ? toString(*ref.generated) : ref.name, ref.worldSeed, seed, stepsFor(check.seconds, dt), !check.waitsForAReturn()};
+}
+
+// The runs of a grading that more than one check judges: how many checks are still to judge each,
+// and those made and still to be judged again.
+struct SharedRuns {
+  std::map<RunKey, int> judges;
+  std::map<RunKey, Ran> made;
+};
 
 // Run `r` (its world and seed set) of `check` by the compiled controller, judged; the host's notes and
 // the sandbox's missing layers added to `g`. With `shared`, a run made for another check is judged
 // again instead of made twice.
 void runCheck(const GradeDef& def, const CompiledController& compiled, const Check& check, const WorldRef& ref, const worlds::WorldDef& world,
               RunGrade& r, Grade& g, SharedRuns* shared = nullptr) {
-  const std::int64_t steps = stepsFor(check.seconds, def.rubric.dt);
-  const Driving how{.meantToRunForever = !check.waitsForAReturn(), .keepWheels = !def.logs.empty()};
-  const RunKey key{ref.generated ? toString(*ref.generated) : ref.name, ref.worldSeed, r.seed, steps, how.meantToRunForever};
-  const auto known = shared != nullptr ? shared->find(key) : SharedRuns::iterator();
+  const RunKey key = runKey(check, ref, r.seed, def.rubric.dt);
+  const bool judgedAgain = shared != nullptr && --shared->judges[key] > 0;  // a later check judges this run too
+  const Ran* ran = nullptr;
+  if (shared != nullptr) {
+    if (const auto known = shared->made.find(key); known != shared->made.end()) ran = &known->second;
+  }
   std::optional<Ran> own;
-  const Ran* ran = shared != nullptr && known != shared->end() ? &known->second : nullptr;
   if (ran == nullptr) {
     struct Slot {  // one of the class's run slots, held for the run
       std::counting_semaphore<>* slots;
@@ -269,12 +280,13 @@ void runCheck(const GradeDef& def, const CompiledController& compiled, const Che
       return;
     }
     worlds::Run run(world, {.dt = def.rubric.dt, .seed = r.seed}, hosts.value().driver(false), {.keepSteps = false});
-    Ran made = drive(run, world, steps, how);
+    Ran made =
+        drive(run, world, stepsFor(check.seconds, def.rubric.dt), {.meantToRunForever = !check.waitsForAReturn(), .keepWheels = !def.logs.empty()});
     for (std::string& n : hosts.value().notes()) {
       if (std::find(g.notes.begin(), g.notes.end(), n) == g.notes.end()) g.notes.push_back(std::move(n));
     }
     g.sandboxMissing = missingLayers(hosts.value().layers());
-    ran = shared != nullptr ? &shared->emplace(key, std::move(made)).first->second : &own.emplace(std::move(made));
+    ran = judgedAgain ? &shared->made.emplace(key, std::move(made)).first->second : &own.emplace(std::move(made));
   }
   judgeRun(check, ran->record, r);
   r.trajectoryHash = ran->trajectoryHash;
@@ -285,6 +297,7 @@ void runCheck(const GradeDef& def, const CompiledController& compiled, const Che
     r.log = def.logs / logName(check.name, ref.name, r.seed);
     if (!writeLog(r.log, def, check, ref, r.seed, *ran, g)) g.graderFailure = std::string(kGraderFailure) + "cannot write the log " + r.log.string();
   }
+  if (shared != nullptr && !judgedAgain) shared->made.erase(key);
 }
 
 std::string fileText(const fs::path& file) {
@@ -475,6 +488,11 @@ Grade grade(const GradeDef& def, const fs::path& submission) {
   if (!compiled)
     (isGraderFailure(compiled.status()) ? g.graderFailure : g.compileError) = compiled.error() + (messages.empty() ? "" : "\n" + messages);
   SharedRuns shared;
+  for (const Check& check : checked.rubric.checks) {
+    if (checked.visibleOnly && check.visibility != Visibility::Visible) continue;
+    for (const WorldRef& w : worldsOf(check, checked.secret, checked.kept.value_or(KeptWorlds{}), g.submissionHash))
+      for (std::uint64_t seed : seedsOf(check, checked.secret)) ++shared.judges[runKey(check, w, seed, checked.rubric.dt)];
+  }
   scoreChecks(
       checked, g,
       [&](const Check& check, const WorldRef& ref, const worlds::WorldDef& world, RunGrade& r, Grade& out) {
