@@ -170,7 +170,7 @@ TEST(HtmlReport, TheViewerOpensAtTheInstantGiven) {
   EXPECT_TRUE(one(dom.get(), "//iframe/@srcdoc") == expected) << "the frame's page is not the viewer's with the instant on its body";
 }
 
-TEST(HtmlReportInChromium, ScreenshotShowsTheTableTheVideoAndThePlot) {
+TEST(HtmlReportInChromium, ScreenshotShowsTheTableAndThePlot) {
   requireChromium();
   const Report r = writeReport("chromium_screenshot");
   const fs::path shot = r.dir / "shot.png";
@@ -185,9 +185,9 @@ TEST(HtmlReportInChromium, ScreenshotShowsTheTableTheVideoAndThePlot) {
   const std::uint8_t background[3] = {bg[0], bg[1], bg[2]};
   EXPECT_LT(pixelsNear(img.value(), background), 1000 * 800 * 98 / 100);
   EXPECT_GT(1000 * 800 - pixelsNear(img.value(), background), 5000);
-  // The plot is drawn whole, and the video's first frame is drawn: its controls shade most of it
-  // (about a fifth keeps its colour), but an undecoded video would show none of it.
-  EXPECT_GE(pixelsNear(img.value(), kVideoColour), kVideoW * kVideoH / 10);
+  // The plot is drawn whole. (The video's frame is not checked here: --screenshot does not wait for
+  // media, and under load it shot the video before its metadata had loaded, 1 in 30 runs; the
+  // load event does wait for it, and VideoDecodesInTheBrowser checks the video there.)
   EXPECT_GE(pixelsNear(img.value(), kPlotColour), kPlotW * kPlotH * 9 / 10);
 }
 
@@ -275,7 +275,9 @@ window.addEventListener('load', () => {
   const out = document.createElement('pre');
   out.id = 'probe';
   out.textContent = JSON.stringify({readyState: v.readyState, duration: v.duration, width: v.videoWidth, height: v.videoHeight,
-                                    error: v.error ? v.error.code : 0, plotWidth: img.naturalWidth, plotHeight: img.naturalHeight});
+                                    error: v.error ? v.error.code : 0, plotWidth: img.naturalWidth, plotHeight: img.naturalHeight,
+                                    boxWidth: v.getBoundingClientRect().width, boxHeight: v.getBoundingClientRect().height,
+                                    shown: getComputedStyle(v).display !== 'none' && getComputedStyle(v).visibility === 'visible'});
   document.body.appendChild(out);
 });
 </script>
@@ -297,6 +299,10 @@ window.addEventListener('load', () => {
   EXPECT_NEAR(state["duration"].get<double>(), static_cast<double>(kVideoFrames) / kFps, 0.05) << state.dump();
   EXPECT_EQ(state["width"], kVideoW);
   EXPECT_EQ(state["height"], kVideoH);
+  // Laid out at its own size and shown, so the page shows its frame.
+  EXPECT_EQ(state["boxWidth"], kVideoW) << state.dump();
+  EXPECT_EQ(state["boxHeight"], kVideoH) << state.dump();
+  EXPECT_EQ(state["shown"], true) << state.dump();
   EXPECT_EQ(state["plotWidth"], kPlotW);
   EXPECT_EQ(state["plotHeight"], kPlotH);
 }
