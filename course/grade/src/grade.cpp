@@ -307,22 +307,41 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
   GradeDef quiet = def;  // the reference's runs leave no logs
   quiet.logs.clear();
   for (const Check& check : rubric.checks) {
-    if (!check.generated || check.generated->secret == 0) continue;
+    if (!check.generated || check.generated->secret == 0 || !check.runsOf.empty()) continue;
+    // Judged in the same draws: this check and those that judge its runs.
+    std::vector<const Check*> judges;
+    for (const Check& c : rubric.checks) {
+      if (c.drawName() == check.name) judges.push_back(&c);
+    }
     const int wanted = check.generated->poolSize(), tries = 10 * wanted;
     std::vector<int>& mine = kept[check.name];
     for (int k = 0; static_cast<int>(mine.size()) < wanted && k < tries; ++k) {
       const WorldRef ref{.name = "draw " + std::to_string(k), .generated = check.generated->kind, .worldSeed = drawnWorldSeed(check, def.secret, k)};
       const Result<worlds::WorldDef> world = loadWorldRef(ref);
-      // Fair: the reference passes every run, and the starter (no answer yet) fails one.
-      const auto passesAll = [&](const CompiledController& controller) {
+      // Which of the judging checks `controller` passes in every run (each run made once for all).
+      const auto passed = [&](const CompiledController& controller) {
+        std::vector<bool> all(judges.size(), true);
         for (std::uint64_t seed : seedsOf(check, def.secret)) {
-          RunGrade r{.world = ref.name, .seed = seed};
-          runCheck(quiet, controller, check, ref, world.value(), r, scratch);
-          if (!r.passed) return false;
+          SharedRuns shared;
+          for (const Check* c : judges) ++shared.judges[runKey(*c, ref, seed, rubric.dt)];
+          for (std::size_t j = 0; j < judges.size(); ++j) {
+            RunGrade r{.world = ref.name, .seed = seed};
+            runCheck(quiet, controller, *judges[j], ref, world.value(), r, scratch, &shared);
+            all[j] = all[j] && r.passed;
+          }
         }
-        return true;
+        return all;
       };
-      if (world.ok() && passesAll(compiled.value()) && !(starter && passesAll(*starter))) mine.push_back(k);
+      // Fair: the reference passes every check in every run, and the starter (no answer yet) fails
+      // each check in one.
+      const auto fair = [&] {
+        const std::vector<bool> reference = passed(compiled.value());
+        if (std::find(reference.begin(), reference.end(), false) != reference.end()) return false;
+        if (!starter) return true;
+        const std::vector<bool> byStarter = passed(*starter);
+        return std::find(byStarter.begin(), byStarter.end(), true) == byStarter.end();
+      };
+      if (world.ok() && fair()) mine.push_back(k);
       if (!scratch.graderFailure.empty()) return Status::failure(scratch.graderFailure);
     }
     if (static_cast<int>(mine.size()) < wanted) {

@@ -137,7 +137,8 @@ class RubricReader : worlds::TomlReader {
 
   bool readCheck(const toml::table& t, const std::string& field, Check& c) {
     for (auto&& [k, v] : t) {
-      static constexpr std::string_view own[] = {"name", "points", "visibility", "worlds", "generated", "seeds", "secret_seeds", "seconds"};
+      static constexpr std::string_view own[] = {"name",  "points",       "visibility", "worlds", "generated",
+                                                 "seeds", "secret_seeds", "seconds",    "runs_of"};
       const std::string_view key = k.str();  // not the binding itself: clang 15 cannot capture a structured binding in a lambda
       if (std::find(std::begin(own), std::end(own), key) != std::end(own)) continue;
       const auto spec = std::find_if(std::begin(kCriteria), std::end(kCriteria), [&](const CriterionSpec& s) { return s.key == key; });
@@ -145,7 +146,8 @@ class RubricReader : worlds::TomlReader {
         std::string list;
         for (const CriterionSpec& s : kCriteria) list += (list.empty() ? "" : ", ") + std::string(s.key);
         return fail(static_cast<int>(k.source().begin.line), field + std::string(k.str()),
-                    "unknown key: a check has name, points, visibility, worlds, generated, seeds, secret_seeds, seconds and criteria (" + list + ")");
+                    "unknown key: a check has name, points, visibility, worlds, generated, seeds, secret_seeds, seconds, runs_of and criteria (" +
+                        list + ")");
       }
       const toml::table* params = table(v, field + std::string(k.str()));
       if (params == nullptr) return false;
@@ -175,7 +177,11 @@ class RubricReader : worlds::TomlReader {
       else
         return fail(*v, field + "visibility", "expected \"visible\", \"hidden\" or \"after_due_date\"");
     }
-    if (!readGenerated(t, field, c) || !readWorlds(t, field, c) || !readSeeds(t, field, c)) return false;
+    if (t.get("runs_of") != nullptr) {
+      if (!readRunsOf(t, field, c)) return false;
+    } else if (!readGenerated(t, field, c) || !readWorlds(t, field, c) || !readSeeds(t, field, c)) {
+      return false;
+    }
     if (c.criteria.empty()) return fail(c.line, field + "name", "check '" + c.name + "' has no criterion");
     // Unbounded, a place is reached by anything that wanders long enough: a check students cannot see must say by when.
     for (const Criterion& k : c.criteria) {
@@ -184,6 +190,32 @@ class RubricReader : worlds::TomlReader {
     }
     // In the order written (TOML tables list their keys sorted): the first that fails gives the reason.
     std::stable_sort(c.criteria.begin(), c.criteria.end(), [](const Criterion& a, const Criterion& b) { return a.line < b.line; });
+    return true;
+  }
+
+  // `runs_of = "NAME"`: the runs of an earlier check of the same visibility, judged by this one's
+  // criteria; it names none of its own.
+  bool readRunsOf(const toml::table& t, const std::string& field, Check& c) {
+    std::string name;
+    const toml::node& n = *t.get("runs_of");
+    if (!string(n, field + "runs_of", name)) return false;
+    for (const char* key : {"worlds", "generated", "seeds", "secret_seeds", "seconds"}) {
+      if (const toml::node* own = t.get(key))
+        return fail(*own, field + key, "this check judges the runs of '" + name + "' (runs_of): it has that check's worlds, seeds and seconds");
+    }
+    const auto other = std::find_if(rubric_.checks.begin(), rubric_.checks.end(), [&](const Check& o) { return o.name == name; });
+    if (other == rubric_.checks.end()) return fail(n, field + "runs_of", "no earlier check is named '" + name + "'");
+    if (other->visibility != c.visibility) {
+      return fail(n, field + "runs_of",
+                  "'" + name + "' is " + toString(other->visibility) + " and this check is " + toString(c.visibility) +
+                      ": a check judges the runs of a check as visible as itself");
+    }
+    c.worlds = other->worlds;
+    c.generated = other->generated;
+    c.seeds = other->seeds;
+    c.secretSeeds = other->secretSeeds;
+    c.seconds = other->seconds;
+    c.runsOf = other->drawName();
     return true;
   }
 
@@ -354,7 +386,7 @@ namespace {
 // The k-th seed of `what` in `check` from the secret: reproducible for the instructor, unguessable
 // without the secret (at most 2^63 - 1, as a rubric's seeds).
 std::uint64_t secretSeed(const std::string& secret, const std::string& what, const Check& check, int k) {
-  return worlds::Fnv1a().add(std::string_view(secret + "\n" + what + check.name + "\n" + std::to_string(k))).value() >> 1;
+  return worlds::Fnv1a().add(std::string_view(secret + "\n" + what + check.drawName() + "\n" + std::to_string(k))).value() >> 1;
 }
 }  // namespace
 
@@ -379,7 +411,7 @@ std::vector<WorldRef> worldsOf(const Check& check, const std::string& secret, co
     all.push_back({.name = "generated " + kind + ", seed " + std::to_string(seed), .generated = g.kind, .worldSeed = seed});
   std::vector<int> draws(static_cast<std::size_t>(g.poolSize()));
   for (std::size_t k = 0; k < draws.size(); ++k) draws[k] = static_cast<int>(k);
-  if (const auto it = kept.find(check.name); it != kept.end()) draws = it->second;
+  if (const auto it = kept.find(check.drawName()); it != kept.end()) draws = it->second;
   // The submission's own: the first `secret` of a shuffle of the pool keyed by the secret and the
   // submission (Fisher-Yates, one hash per place); a pool of no more is every submission's, in order.
   const std::size_t wanted = std::min(draws.size(), static_cast<std::size_t>(g.secret));

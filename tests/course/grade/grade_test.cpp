@@ -3,13 +3,9 @@
 #include "frob/grade/grade.hpp"
 
 #include "frob/run/format.hpp"
-#include "frob/worlds/simulation.hpp"
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cinttypes>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -247,107 +243,6 @@ TEST_F(Grading, EveryRunsLogReplaysToTheSameVerdictBitForBit) {
     }
   }
   EXPECT_EQ(failed, 8);  // the good one late in both seeds; the crash in all six runs
-}
-
-// No student meets a hidden world the reference solution fails: the hidden worlds are the first
-// draws from the secret in which it meets every criterion, found once and kept in the cache. Here
-// the reference stands still and the criterion asks for the crossing's centre within some 3 m of
-// every robot's start, which the crossings' drawn starts meet only now and then.
-TEST_F(Grading, HiddenWorldsAreTheFirstDrawsTheReferencePasses) {
-  std::ofstream(dir_ / "assignment" / "still.cpp") << "#include <frob/frob.hpp>\nusing namespace frob;\nBehavior<Wheels> still(const Robot&) { "
-                                                      "return wheels(0.0, 0.0); }\nFROB_CONTROLLER(still)\n";
-  const auto rubricWith = [&](double within) {
-    std::ofstream(dir_ / "assignment" / "fair.toml")
-        << "title = \"Fair\"\nreference = \"still.cpp\"\nseconds = 0.5\n[[check]]\nname = \"near the centre\"\n"
-           "visibility = \"hidden\"\ngenerated = { kind = \"crossing\", secret = 3, pool = 4 }\n"
-           "goal = { point = \"centre\", within = "
-        << within << ", by = 60 }\n";
-    return loadRubric(dir_ / "assignment" / "fair.toml").value();
-  };
-  GradeDef def = def_;
-  def.rubric = rubricWith(1.0);  // its check names the draws and seeds; the distance is chosen below
-  def.compiler.cacheDir = dir_ / "cache";
-  // How far the still robot stands from the room in each draw: at its start as the run's seed draws
-  // it. The criterion's distance is their median, to the centimetre: some draws meet it, some not.
-  std::vector<double> far;
-  for (int k = 0; k < 40; ++k) {
-    const worlds::WorldDef w = worlds::generateWorld(worlds::WorldKind::Crossing, drawnWorldSeed(def.rubric.checks[0], def.secret, k)).value();
-    const worlds::Simulation still(w, {.dt = def.rubric.dt, .seed = seedsOf(def.rubric.checks[0], def.secret).at(0)});
-    double farthest = 0;  // every robot must be within the distance
-    for (std::size_t i = 0; i < w.robots.size(); ++i)
-      farthest = std::max(farthest, (*worlds::findPoint(w, "centre") - still.truePose(i).position).norm());
-    far.push_back(farthest);
-  }
-  std::vector<double> first(far.begin(), far.begin() + 8);
-  std::nth_element(first.begin(), first.begin() + 4, first.end());
-  const double within = std::round(first[4] * 100) / 100 + 0.005;
-  def.rubric = rubricWith(within);
-  std::vector<int> expected, skipped;
-  for (int k = 0; expected.size() < 4; ++k) (far.at(k) <= within ? expected : skipped).push_back(k);  // the pool's
-  ASSERT_FALSE(skipped.empty()) << "this secret draws no world the reference fails: nothing is tested";
-  Result<KeptWorlds> kept = fairHiddenWorlds(def);
-  ASSERT_TRUE(kept.ok()) << kept.error();
-  EXPECT_EQ(kept.value(), (KeptWorlds{{"near the centre", expected}}));
-  const Grade g = grade(def, dir_ / "assignment" / "still.cpp");
-  EXPECT_EQ(g.score(), g.maxScore()) << g.checks[0].output();
-
-  // Kept for this reference and this simulation: what another build of the simulation kept is drawn anew.
-  const fs::path cache = keptWorldsFile(def);
-  std::stringstream text;
-  text << std::ifstream(cache).rdbuf();
-  const std::string fingerprint = format("simulation %016" PRIx64, worlds::simulationFingerprint());
-  ASSERT_NE(text.str().find(fingerprint), std::string::npos) << text.str();
-  std::string stale = text.str().replace(text.str().find(fingerprint), fingerprint.size(), "simulation 0000000000000000");
-  std::ofstream(cache) << stale.substr(0, stale.find('\n') + 1) << "99 near the centre\n";
-  EXPECT_EQ(fairHiddenWorlds(def).value(), kept.value());
-  // ... and so is what another generator of the worlds kept (its first draw stands for it).
-  text.str(""), text << std::ifstream(cache).rdbuf();
-  const std::size_t worldsAt = text.str().find(" worlds ");
-  ASSERT_NE(worldsAt, std::string::npos) << text.str();
-  stale = text.str().replace(worldsAt, 24, " worlds 0000000000000000");
-  std::ofstream(cache) << stale.substr(0, stale.find('\n') + 1) << "99 near the centre\n";
-  EXPECT_EQ(fairHiddenWorlds(def).value(), kept.value());
-
-  // Kept in the cache: used as it is where the reference is absent (a Gradescope zip).
-  fs::rename(dir_ / "assignment" / "still.cpp", dir_ / "still.cpp");
-  EXPECT_EQ(fairHiddenWorlds(def).value(), kept.value());
-
-  // A secret whose draws the reference cannot pass is refused, naming the check.
-  fs::rename(dir_ / "still.cpp", dir_ / "assignment" / "still.cpp");
-  def.rubric = rubricWith(0.01);
-  EXPECT_EQ(fairHiddenWorlds(def).error(),
-            "only 0 of the 40 worlds drawn for check 'near the centre' from this secret let the reference solution pass: choose another secret");
-
-  // Nor may a hidden world let the starter pass: one that stands still as well passes every draw
-  // the reference does, so none is kept.
-  def.rubric = rubricWith(within);
-  def.rubric.starter = dir_ / "assignment" / "still.cpp";
-  EXPECT_EQ(fairHiddenWorlds(def).error(),
-            "only 0 of the 40 worlds drawn for check 'near the centre' from this secret let the reference "
-            "solution pass and the starter fail: choose another secret");
-}
-
-// Two checks that draw worlds of one kind from the secret run each in its own draws: one check's
-// "hidden world 1" is not the other's (they were once loaded by name, so the second check ran in
-// the first one's worlds, not in those the reference was checked in). A robot standing still at
-// the drawn start leaves another trace in each.
-TEST_F(Grading, EachCheckRunsInItsOwnDraws) {
-  std::ofstream(dir_ / "assignment" / "still.cpp") << "#include <frob/frob.hpp>\nusing namespace frob;\nBehavior<Wheels> still(const Robot&) { "
-                                                      "return wheels(0.0, 0.0); }\nFROB_CONTROLLER(still)\n";
-  std::ofstream(dir_ / "assignment" / "two.toml")
-      << "title = \"Two\"\nseconds = 0.5\n"
-         "[[check]]\nname = \"first\"\nvisibility = \"hidden\"\nseeds = [1]\n"
-         "generated = { kind = \"furnished_room\", secret = 1 }\ngoal = { point = \"room\", within = 100, by = 60 }\n"
-         "[[check]]\nname = \"second\"\nvisibility = \"hidden\"\nseeds = [1]\n"
-         "generated = { kind = \"furnished_room\", secret = 1 }\ngoal = { point = \"room\", within = 100, by = 60 }\n";
-  GradeDef def = def_;
-  def.rubric = loadRubric(dir_ / "assignment" / "two.toml").value();
-  const Grade g = grade(def, dir_ / "assignment" / "still.cpp");
-  ASSERT_EQ(g.checks.size(), 2u);
-  ASSERT_EQ(g.checks[0].runs.size(), 1u);
-  ASSERT_EQ(g.checks[1].runs.size(), 1u);
-  EXPECT_EQ(g.checks[0].runs[0].world, g.checks[1].runs[0].world);                    // the same name...
-  EXPECT_NE(g.checks[0].runs[0].trajectoryHash, g.checks[1].runs[0].trajectoryHash);  // ...another world
 }
 
 // Checks that name the same world and seeds for as long judge one run each: the controller's

@@ -156,7 +156,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         Mistake{"collisions = {", "colisions = {",
                 "10: check[0].colisions: unknown key: a check has name, points, visibility, worlds, generated, seeds, secret_seeds, "
-                "seconds and criteria (goal, waypoints, stopped, collisions, clearance, wall_distance, coverage, robots_apart, "
+                "seconds, runs_of and criteria (goal, waypoints, stopped, collisions, clearance, wall_distance, coverage, robots_apart, "
                 "path_ratio, bug1_bound, returns)"},
         Mistake{"within = 0.2, by", "withn = 0.2, by", "9: check[0].goal.withn: unknown key (expected one of within, by, point)"},
         Mistake{"within = 0.2", "within = -1", "9: check[0].goal.within: must be positive"},
@@ -184,7 +184,69 @@ INSTANTIATE_TEST_SUITE_P(
                 "26: leaderboard[0].measure: \"time\" is when a goal or the last waypoint was reached: the criterion must be one with `by`"},
         Mistake{"measure = \"time\"", "measure = \"time\"\norder = \"up\"", "27: leaderboard[0].order: expected \"asc\" (smaller first) or \"desc\""},
         Mistake{"measure = \"time\"", "measure = \"speed\"", "26: leaderboard[0].measure: expected \"time\" or \"margin\""},
+        Mistake{"worlds = [\"obstacles\"]\nsecret_seeds = 3\nseconds = 120\n", "runs_of = \"hidden fields\"\n",
+                "16: check[1].runs_of: no earlier check is named 'hidden fields'"},
+        Mistake{"worlds = [\"obstacles\"]\nsecret_seeds = 3\nseconds = 120\n", "runs_of = \"reaches the goal\"\n",
+                "16: check[1].runs_of: 'reaches the goal' is visible and this check is hidden: a check judges the runs of a check as visible "
+                "as itself"},
+        Mistake{"worlds = [\"obstacles\"]\nsecret_seeds = 3\n", "runs_of = \"reaches the goal\"\n",
+                "17: check[1].seconds: this check judges the runs of 'reaches the goal' (runs_of): it has that check's worlds, seeds and seconds"},
         Mistake{"seconds = 90", "seconds = [", "4: syntax error: Error while parsing value: could not determine value type"}));
+
+// A check that judges another's runs (runs_of) has its worlds, seeds and seconds, and draws what it
+// draws by that check's name (through a chain, by the first's), so that both judge the same runs.
+TEST(Rubric, AJudgeOfAnotherChecksRunsHasItsWorldsSeedsAndSeconds) {
+  const fs::path file = rubricFile("runs_of", R"(title = "Shared"
+seconds = 90
+[[check]]
+name = "reaches"
+worlds = ["worlds/room.toml"]
+seeds = [1, 2]
+seconds = 30
+goal = { within = 0.2 }
+[[check]]
+name = "on time"
+runs_of = "reaches"
+goal = { within = 0.2, by = 20 }
+[[check]]
+name = "fields"
+visibility = "hidden"
+generated = { kind = "obstacles", secret = 2 }
+collisions = { max = 0 }
+[[check]]
+name = "fields, quickly"
+visibility = "hidden"
+runs_of = "fields"
+goal = { within = 0.3, by = 60 }
+[[check]]
+name = "fields, bound"
+visibility = "hidden"
+runs_of = "fields, quickly"
+bug1_bound = { point = "goal" }
+)");
+  Result<Rubric> r = loadRubric(file);
+  ASSERT_TRUE(r.ok()) << r.error();
+  const std::vector<Check>& c = r.value().checks;
+  ASSERT_EQ(c.size(), 5u);
+  EXPECT_EQ(c[1].runsOf, "reaches");
+  ASSERT_EQ(c[1].worlds.size(), 1u);
+  EXPECT_EQ(c[1].worlds[0].file, c[0].worlds[0].file);
+  EXPECT_EQ(c[1].seeds, (std::vector<std::uint64_t>{1, 2}));
+  EXPECT_DOUBLE_EQ(c[1].seconds, 30);
+  EXPECT_EQ(c[1].criteria.size(), 1u);
+  EXPECT_DOUBLE_EQ(c[1].criteria[0].seconds, 20);
+  for (std::size_t k : {3u, 4u}) {
+    EXPECT_EQ(c[k].drawName(), "fields") << k;
+    EXPECT_DOUBLE_EQ(c[k].seconds, 90) << k;
+    EXPECT_EQ(seedsOf(c[k], "s"), seedsOf(c[2], "s")) << k;
+    const std::vector<WorldRef> theirs = worldsOf(c[2], "s", {}, "a submission"), mine = worldsOf(c[k], "s", {}, "a submission");
+    ASSERT_EQ(mine.size(), 2u);
+    for (std::size_t w = 0; w < mine.size(); ++w) EXPECT_EQ(mine[w].worldSeed, theirs[w].worldSeed) << k;
+  }
+  // Drawn by their own names, they would run elsewhere.
+  EXPECT_EQ(drawnWorldSeed(c[3], "s", 0), drawnWorldSeed(c[2], "s", 0));
+  EXPECT_NE(drawnWorldSeed(Check{.name = "fields, quickly"}, "s", 0), drawnWorldSeed(c[2], "s", 0));
+}
 
 TEST(Rubric, GeneratedWorldsFromSeedsAndFromTheSecret) {
   const fs::path file = rubricFile("generated", R"(title = "Fields"

@@ -87,8 +87,13 @@ struct Check {
   std::vector<std::uint64_t> seeds;  ///< simulation seeds; empty: one drawn (see seedsOf)
   int secretSeeds = 0;               ///< more seeds, drawn from the instructor's secret
   double seconds = 60.0;             ///< simulated seconds of each run
+  /// `runs_of`: the earlier check whose runs it judges (their worlds, seeds and seconds, drawn by
+  /// that check's name), each run made once for both; empty: runs of its own.
+  std::string runsOf;
   std::vector<Criterion> criteria;
   int line = 0;
+  /// The name its seeds and hidden worlds are drawn by: the check whose runs it judges, else its own.
+  [[nodiscard]] const std::string& drawName() const { return runsOf.empty() ? name : runsOf; }
   /// Whether it needs the controller's task to return (a `returns` criterion): else the task may be
   /// meant to run for ever, as a wall follower's is.
   [[nodiscard]] bool waitsForAReturn() const;
@@ -132,12 +137,12 @@ struct Rubric {
 /// naming the file, the line and the field, before anything runs.
 [[nodiscard]] Result<Rubric> loadRubric(const std::filesystem::path& file);
 
-/// Which of the worlds each check draws from the secret it keeps, by check name: the indices of the
-/// draws (0, 1, 2, ...) in its pool, in order. A check without an entry keeps the first `GeneratedWorlds::pool`.
+/// Which of the worlds each check draws from the secret it keeps, by its drawName(): the indices of
+/// the draws (0, 1, 2, ...) in its pool, in order. A check without an entry keeps the first `GeneratedWorlds::pool`.
 using KeptWorlds = std::map<std::string, std::vector<int>>;
 
 /// The seeds a check runs with: its own, then `secretSeeds` derived from `secret` and the check's
-/// name; when that makes none, one drawn from the check's name (and `secret` unless it is visible).
+/// drawName(); when that makes none, one drawn from that name (and `secret` unless it is visible).
 [[nodiscard]] std::vector<std::uint64_t> seedsOf(const Check& check, const std::string& secret);
 /// The generator's seed of a check's draw `k` from the secret.
 [[nodiscard]] std::uint64_t drawnWorldSeed(const Check& check, const std::string& secret, int k);
