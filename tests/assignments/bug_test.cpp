@@ -44,6 +44,9 @@ TEST(BugAssignment, RubricHasTheChecksTheHandoutDescribes) {
     EXPECT_EQ(hidden.generated->kind, worlds::WorldKind::Obstacles);
     EXPECT_EQ(hidden.generated->secret, 4);
   }
+  // "The same run", "the same four runs": the bound is judged where the goal is.
+  EXPECT_EQ(rubric.value().checks[1].seeds, rubric.value().checks[0].seeds);
+  EXPECT_EQ(rubric.value().checks[3].drawName(), kHidden);
 }
 
 // The visible worlds are generated obstacle fields, exactly as `frob world generate obstacles
@@ -127,13 +130,13 @@ TEST(BugAssignment, ForgettingTaskCatchStopsAtTheFirstError) {
 
 // Example 06 pasted onto the starter (goal corrected): the paper's BUG goes all the way round every
 // obstacle and on to the closest point. In the trap field that takes longer than the run; in the
-// open field and one of the hidden ones it arrives, late and past the BUG1 bound, and in another
-// after the 100 s the hidden check allows.
+// open field and two of the hidden ones it arrives, past the BUG1 bound, and in another after the
+// 100 s the hidden check allows.
 TEST(BugAssignment, ThePapersBugCirclesForeverAndDrivesPastTheBound) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "circles_forever.cpp"));
-  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1}, {kHiddenBound, 0.5}}));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 2.5}, {kBound, 0}, {kHidden, 1}, {kHiddenBound, 0}}));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 872466220: never came within 0.30 m of goal"));
-  EXPECT_THAT(reasons(g, kBound), HasSubstr("in worlds/field.toml, seed 402455347: drove 31.43 m to goal; the BUG1 bound is 30.91 m"));
+  EXPECT_THAT(reasons(g, kBound), HasSubstr("in worlds/field.toml, seed 872466220: drove 31.28 m to goal; the BUG1 bound is 30.88 m"));
   EXPECT_THAT(judged(g, kHidden), HasSubstr("in hidden world 1: reached goal at 101.3 s; allowed 100 s"));
   EXPECT_THAT(judged(g, kHidden), HasSubstr("in hidden world 2: never came within 0.30 m of goal"));
   EXPECT_THAT(judged(g, kHiddenBound), HasSubstr("the BUG1 bound is"));
@@ -143,10 +146,10 @@ TEST(BugAssignment, ThePapersBugCirclesForeverAndDrivesPastTheBound) {
 // open field it slides round two obstacles to the goal on a path well inside the BUG1 bound, but
 // every second of pushing counts as a collision (before, each push was one, and it passed "reaches
 // the goal"): a bump at a corner the sonars cannot hear is brief, pushing along an obstacle is not.
-// One hidden field lets it through with so little pushing that it keeps within the bound's limits.
+// No hidden field lets it through.
 TEST(BugAssignment, SlidingAlongObstaclesIsNoPathRoundThem) {
   course::Grade g = gradeFile(kAssignment, wrongSubmission(kAssignment, "slides_along.cpp"));
-  EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}, {kHiddenBound, 0.5}}));
+  EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 0}, {kHiddenBound, 0}}));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/field.toml, seed 872466220: touched a round obstacle at"));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("4 allowed)"));
 }
@@ -185,7 +188,7 @@ TEST(BugAssignment, ExampleSixWithTheGoalCorrectedDoesNotPass) {
   EXPECT_EQ(scores(g), (Scores{{kReaches, 0}, {kBound, 0}, {kHidden, 1}, {kHiddenBound, 0}}));
   EXPECT_THAT(reasons(g, kReaches), HasSubstr("in worlds/trap.toml, seed 872466220: never came within 0.30 m of goal"));
   EXPECT_THAT(reasons(g, kBound),
-              HasSubstr("in worlds/field.toml, seed 402455347: never came within 0.30 m of goal, so its path cannot be measured"));
+              HasSubstr("in worlds/field.toml, seed 872466220: never came within 0.30 m of goal, so its path cannot be measured"));
   for (const char* world : {"hidden world 1", "hidden world 2", "hidden world 3", "hidden world 4"}) {
     EXPECT_THAT(judged(g, kHiddenBound), HasSubstr(world));
   }
