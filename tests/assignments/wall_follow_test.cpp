@@ -34,6 +34,7 @@ TEST(WallFollowAssignment, RubricHasTheChecksTheHandoutDescribes) {
       ASSERT_TRUE(c.generated.has_value()) << c.name;
       EXPECT_EQ(c.generated->kind, worlds::WorldKind::Outline) << c.name;
       EXPECT_EQ(c.generated->secret, 2) << c.name;
+      EXPECT_EQ(c.drawName(), kUnseenRound) << c.name;  // "the same two rooms"
     }
   }
   EXPECT_EQ(points, (Scores{{kRound, 4}, {kKeeps, 4}, {kUnseenRound, 2}, {kUnseenKeeps, 2}}));
@@ -142,7 +143,7 @@ TEST(WallFollowAssignment, StoppingAtTheEndOfTheWallDoesNotGoRound) {
               HasSubstr("in worlds/l_room.toml, seed 1: covered 12% of the floor it could reach (20 of 168 cells of 0.50 m); 15% required"));
   EXPECT_THAT(reasons(g, kKeeps), HasSubstr("in worlds/notched_block.toml, seed 1: covered 2% of the floor it could reach"));
   EXPECT_THAT(judged(g, kUnseenKeeps),
-              HasSubstr("in hidden world 2: covered 8% of the floor it could reach (12 of 149 cells of 0.50 m); 15% required"));
+              HasSubstr("in hidden world 2: covered 8% of the floor it could reach (13 of 165 cells of 0.50 m); 15% required"));
 }
 
 // Example 2 copied as it is follows the wall on its LEFT, 50 cm away, and stops when that wall

@@ -34,6 +34,14 @@ TEST(WanderAssignment, RubricHasTheChecksTheHandoutDescribes) {
   ASSERT_TRUE(hidden.generated.has_value());
   EXPECT_EQ(hidden.generated->kind, worlds::WorldKind::FurnishedRoom);
   EXPECT_EQ(hidden.generated->secret, 2);
+  // "The three visible checks judge the same four runs": the same worlds, seeds and length.
+  for (std::size_t k = 1; k < 3; ++k) {
+    const course::Check &first = rubric.value().checks[0], &other = rubric.value().checks[k];
+    EXPECT_EQ(other.seeds, first.seeds) << other.name;
+    EXPECT_EQ(other.seconds, first.seconds) << other.name;
+    ASSERT_EQ(other.worlds.size(), first.worlds.size()) << other.name;
+    for (std::size_t w = 0; w < first.worlds.size(); ++w) EXPECT_EQ(other.worlds[w].name, first.worlds[w].name) << other.name;
+  }
 }
 
 // Every world, visible or of the hidden family, starts the robot alone in a hall and names the
