@@ -189,8 +189,8 @@ INSTANTIATE_TEST_SUITE_P(
         Mistake{"worlds = [\"obstacles\"]\nsecret_seeds = 3\nseconds = 120\n", "runs_of = \"reaches the goal\"\n",
                 "16: check[1].runs_of: 'reaches the goal' is visible and this check is hidden: a check judges the runs of a check as visible "
                 "as itself"},
-        Mistake{"worlds = [\"obstacles\"]\nsecret_seeds = 3\n", "runs_of = \"reaches the goal\"\n",
-                "17: check[1].seconds: this check judges the runs of 'reaches the goal' (runs_of): it has that check's worlds, seeds and seconds"},
+        Mistake{"worlds = [\"obstacles\"]\nsecret_seeds = 3\n", "runs_of = \"reaches the goal\"\nseeds = [4]\n",
+                "17: check[1].seeds: this check judges the runs of 'reaches the goal' (runs_of): it has that check's worlds, seeds and seconds"},
         Mistake{"seconds = 90", "seconds = [", "4: syntax error: Error while parsing value: could not determine value type"}));
 
 // A check that judges another's runs (runs_of) has its worlds, seeds and seconds, and draws what it
