@@ -4,26 +4,26 @@
 #include "frob/grade/wheel_log.hpp"
 #include "frob/run/diagnose.hpp"
 #include "frob/run/format.hpp"
-#include "frob/worlds/fnv.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/world_file.hpp"
+#include "runs.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cinttypes>
-#include <cstdio>
 #include <ctime>
 #include <fstream>
 #include <functional>
 #include <map>
 #include <optional>
 #include <sstream>
-#include <tuple>
 #include <utility>
 
 namespace frob::course {
 
 namespace fs = std::filesystem;
+
+using namespace detail;
 
 namespace {
 
@@ -36,14 +36,6 @@ std::string utcNow() {
   std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%S", &utc);
   return text;
 }
-
-// What a run made: the grader's record of it, and the wheels applied at every step (when kept).
-struct Ran {
-  RunRecord record;
-  std::vector<std::string> hints;
-  std::vector<std::vector<Wheels>> wheels;
-  std::uint64_t trajectoryHash = 0;
-};
 
 // How drive() runs: `meantToRunForever`, no hint that a task never ended; `keepWheels`, every
 // step's wheels kept (for a log).
@@ -164,27 +156,16 @@ bool writeLog(const fs::path& path, const GradeDef& def, const Check& check, con
   return !ec && fs::exists(path);
 }
 
-// What makes a run of a grading: its world (a generated kind and seed, or a file), its seed, its
-// steps and its hints' kind. Checks that name the same world and seeds for as long judge one run
-// each (bit-identical runs).
-using RunKey = std::tuple<std::string, std::uint64_t, std::uint64_t, std::int64_t, bool>;
+}  // namespace
+
+namespace detail {
 
 RunKey runKey(const Check& check, const WorldRef& ref, std::uint64_t seed, double dt) {
   return {ref.generated ? toString(*ref.generated) : ref.name, ref.worldSeed, seed, stepsFor(check.seconds, dt), !check.waitsForAReturn()};
 }
 
-// The runs of a grading that more than one check judges: how many checks are still to judge each,
-// and those made and still to be judged again.
-struct SharedRuns {
-  std::map<RunKey, int> judges;
-  std::map<RunKey, Ran> made;
-};
-
-// Run `r` (its world and seed set) of `check` by the compiled controller, judged; the host's notes and
-// the sandbox's missing layers added to `g`. With `shared`, a run made for another check is judged
-// again instead of made twice.
 void runCheck(const GradeDef& def, const CompiledController& compiled, const Check& check, const WorldRef& ref, const worlds::WorldDef& world,
-              RunGrade& r, Grade& g, SharedRuns* shared = nullptr) {
+              RunGrade& r, Grade& g, SharedRuns* shared) {
   const RunKey key = runKey(check, ref, r.seed, def.rubric.dt);
   const bool judgedAgain = shared != nullptr && --shared->judges[key] > 0;  // a later check judges this run too
   const Ran* ran = nullptr;
@@ -237,122 +218,7 @@ std::string fileText(const fs::path& file) {
   return text.str();
 }
 
-// The cache of fairHiddenWorlds: "reference <hash> starter <hash> simulation <fingerprint>", then
-// "<draw> <check>" lines.
-std::optional<KeptWorlds> readKept(const fs::path& file, const std::string& reference) {
-  std::ifstream in(file);
-  std::string line;
-  if (!std::getline(in, line) || (!reference.empty() && line != "reference " + reference)) return std::nullopt;
-  KeptWorlds kept;
-  while (std::getline(in, line)) {
-    const std::size_t gap = line.find(' ');
-    if (gap == std::string::npos) return std::nullopt;
-    kept[line.substr(gap + 1)].push_back(std::atoi(line.c_str()));
-  }
-  return kept;
-}
-
-void writeKept(const fs::path& file, const std::string& reference, const KeptWorlds& kept) {
-  std::error_code ec;
-  fs::create_directories(file.parent_path(), ec);
-  const fs::path partial = file.string() + ".partial";
-  {
-    std::ofstream out(partial);
-    out << "reference " << reference << "\n";
-    for (const auto& [check, draws] : kept) {
-      for (int k : draws) out << k << ' ' << check << "\n";
-    }
-  }
-  fs::rename(partial, file, ec);
-}
-
-}  // namespace
-
-fs::path keptWorldsFile(const GradeDef& def) {
-  return def.compiler.cacheDir / "hidden-worlds" /
-         (format("%016" PRIx64, worlds::Fnv1a().add(std::string_view(fileText(def.rubric.file) + "\n" + def.secret)).value()) + ".txt");
-}
-
-Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
-  const Rubric& rubric = def.rubric;
-  if (def.secret.empty() || rubric.reference.empty() || !rubric.needsSecret()) return KeptWorlds{};
-  const fs::path cache = keptWorldsFile(def);
-  if (!fs::is_regular_file(rubric.reference)) return readKept(cache, "").value_or(KeptWorlds{});
-  // Kept for this reference, starter, simulation and generator (each check's first draw stands for
-  // it): a change of any may change which draws are fair.
-  const auto hashOf = [](const fs::path& file) { return file.empty() ? 0 : worlds::Fnv1a().add(std::string_view(fileText(file))).value(); };
-  worlds::Fnv1a generated;
-  for (const Check& check : rubric.checks) {
-    if (!check.generated || check.generated->secret == 0) continue;
-    const Result<worlds::WorldDef> first = worlds::generateWorld(check.generated->kind, drawnWorldSeed(check, def.secret, 0));
-    generated.add(std::string_view(first ? worlds::toToml(first.value()) : first.error()));
-    generated.add(std::string_view(" pool " + std::to_string(check.generated->poolSize())));
-  }
-  const std::string reference = format("%016" PRIx64 " starter %016" PRIx64 " simulation %016" PRIx64 " worlds %016" PRIx64, hashOf(rubric.reference),
-                                       hashOf(rubric.starter), worlds::simulationFingerprint(), generated.value());
-  if (std::optional<KeptWorlds> known = readKept(cache, reference)) return *known;
-
-  std::string messages;
-  Result<CompiledController> compiled = compileSubmission(rubric.reference, def.compiler, &messages);
-  if (!compiled)
-    return Status::failure("the reference solution " + rubric.reference.string() + " does not compile: " + compiled.error() + "\n" + messages);
-  std::optional<CompiledController> starter;
-  if (!rubric.starter.empty()) {
-    Result<CompiledController> s = compileSubmission(rubric.starter, def.compiler, &messages);
-    if (!s) return Status::failure("the starter " + rubric.starter.string() + " does not compile: " + s.error() + "\n" + messages);
-    starter = s.value();
-  }
-  KeptWorlds kept;
-  Grade scratch;         // the reference's runs' notes, unused
-  GradeDef quiet = def;  // the reference's runs leave no logs
-  quiet.logs.clear();
-  for (const Check& check : rubric.checks) {
-    if (!check.generated || check.generated->secret == 0 || !check.runsOf.empty()) continue;
-    // Judged in the same draws: this check and those that judge its runs.
-    std::vector<const Check*> judges;
-    for (const Check& c : rubric.checks) {
-      if (c.drawName() == check.name) judges.push_back(&c);
-    }
-    const int wanted = check.generated->poolSize(), tries = 10 * wanted;
-    std::vector<int>& mine = kept[check.name];
-    for (int k = 0; static_cast<int>(mine.size()) < wanted && k < tries; ++k) {
-      const WorldRef ref{.name = "draw " + std::to_string(k), .generated = check.generated->kind, .worldSeed = drawnWorldSeed(check, def.secret, k)};
-      const Result<worlds::WorldDef> world = loadWorldRef(ref);
-      // Which of the judging checks `controller` passes in every run (each run made once for all).
-      const auto passed = [&](const CompiledController& controller) {
-        std::vector<bool> all(judges.size(), true);
-        for (std::uint64_t seed : seedsOf(check, def.secret)) {
-          SharedRuns shared;
-          for (const Check* c : judges) ++shared.judges[runKey(*c, ref, seed, rubric.dt)];
-          for (std::size_t j = 0; j < judges.size(); ++j) {
-            RunGrade r{.world = ref.name, .seed = seed};
-            runCheck(quiet, controller, *judges[j], ref, world.value(), r, scratch, &shared);
-            all[j] = all[j] && r.passed;
-          }
-        }
-        return all;
-      };
-      // Fair: the reference passes every check in every run, and the starter (no answer yet) fails
-      // each check in one.
-      const auto fair = [&] {
-        const std::vector<bool> reference = passed(compiled.value());
-        if (std::find(reference.begin(), reference.end(), false) != reference.end()) return false;
-        if (!starter) return true;
-        const std::vector<bool> byStarter = passed(*starter);
-        return std::find(byStarter.begin(), byStarter.end(), true) == byStarter.end();
-      };
-      if (world.ok() && fair()) mine.push_back(k);
-      if (!scratch.graderFailure.empty()) return Status::failure(scratch.graderFailure);
-    }
-    if (static_cast<int>(mine.size()) < wanted) {
-      return Status::failure("only " + std::to_string(mine.size()) + " of the " + std::to_string(tries) + " worlds drawn for check '" + check.name +
-                             "' from this secret let the reference solution pass" + (starter ? " and the starter fail" : "") +
-                             ": choose another secret");
-    }
-  }
-  writeKept(cache, reference, kept);
-  return kept;
-}
+}  // namespace detail
 
 namespace {
 
