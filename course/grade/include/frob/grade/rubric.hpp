@@ -147,7 +147,7 @@ using KeptWorlds = std::map<std::string, std::vector<int>>;
 /// The generator's seed of a check's draw `k` from the secret.
 [[nodiscard]] std::uint64_t drawnWorldSeed(const Check& check, const std::string& secret, int k);
 /// The worlds a check runs in: those it names, then those it generates: `secret` of its pool of the
-/// secret's draws (those `kept` names when it names them for this check), chosen by `submission` (its
+/// secret's draws (those `kept` names for its drawName(), if any), chosen by `submission` (its
 /// hash; "": the first ones), so that each submission is graded in worlds of its own.
 [[nodiscard]] std::vector<WorldRef> worldsOf(const Check& check, const std::string& secret, const KeptWorlds& kept = {},
                                              const std::string& submission = "");
