@@ -80,8 +80,7 @@ std::vector<const ControllerEntry*> load(const Channel& channel, int argc, char*
           {.loaded = true, .name = e->name, .world = e->options.world, .summary = e->options.summary, .seconds = e->options.seconds});
     }
   }
-  Writer w(channel.setup());
-  write(w, reply);
+  writeFramed(channel.setup(), reply);  // one too large for the area is cut: the trusted side reports it
   return entries;
 }
 

@@ -194,23 +194,36 @@ bool read(Reader& r, StepReply& reply) {
   return !reply.hasPicture || read(r, reply.picture);
 }
 
-bool writeFramed(std::span<std::byte> area, const StepReply& reply) {
+namespace {
+
+template <class Message>
+bool writeFramedMessage(std::span<std::byte> area, const Message& message) {
   Writer w(area.subspan(sizeof(std::uint32_t)));
-  write(w, reply);
+  write(w, message);
   const auto length = static_cast<std::uint32_t>(w.size());
   std::memcpy(area.data(), &length, sizeof length);
   return w.ok();
 }
 
-Status readFramed(std::span<const std::byte> area, std::vector<std::byte>& copy, StepReply& reply) {
+// Its length read once, then that many bytes copied: the host may change the area meanwhile.
+template <class Message>
+Status readFramedMessage(std::span<const std::byte> area, std::vector<std::byte>& copy, Message& message) {
   std::uint32_t length = 0;
   std::memcpy(&length, area.data(), sizeof length);
   if (length > area.size() - sizeof length) return Status::failure("a reply longer than its area");
   copy.assign(area.begin() + sizeof length, area.begin() + sizeof length + length);
   Reader r(copy);
-  if (!read(r, reply)) return Status::failure(r.why());
+  if (!read(r, message)) return Status::failure(r.why());
   return {};
 }
+
+}  // namespace
+
+bool writeFramed(std::span<std::byte> area, const StepReply& reply) { return writeFramedMessage(area, reply); }
+bool writeFramed(std::span<std::byte> area, const LoadReply& reply) { return writeFramedMessage(area, reply); }
+
+Status readFramed(std::span<const std::byte> area, std::vector<std::byte>& copy, StepReply& reply) { return readFramedMessage(area, copy, reply); }
+Status readFramed(std::span<const std::byte> area, std::vector<std::byte>& copy, LoadReply& reply) { return readFramedMessage(area, copy, reply); }
 
 Status RunBudget::take(const StepReply& reply) {
   for (const TaskRecord& t : reply.records) {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 namespace frob::sandbox {
 namespace {
 
@@ -42,17 +44,24 @@ TEST(Wire, ALoadReplyAndABuildRequestComeBackAsTheyWereWritten) {
   std::vector<std::byte> area(1 << 16);
   const LoadReply load{.seccomp = {"seccomp", true, true, "no sockets"},
                        .modules = {{.loaded = true, .name = "wander", .world = "lounge", .summary = "wanders", .seconds = 30}, {.error = "bad ELF"}}};
-  Writer w(area);
-  write(w, load);
+  ASSERT_TRUE(writeFramed(area, load));
   LoadReply loadBack;
-  Reader r(area);
-  ASSERT_TRUE(read(r, loadBack)) << r.why();
+  std::vector<std::byte> copy;
+  const Status framed = readFramed(area, copy, loadBack);
+  ASSERT_TRUE(framed) << framed.error();
+  std::uint32_t length = 0;
+  std::memcpy(&length, area.data(), sizeof length);
+  EXPECT_EQ(copy.size(), length);  // only the answer is copied, not its whole area
+  EXPECT_LT(length, 200u);
   EXPECT_EQ(loadBack.seccomp.note, "no sockets");
   ASSERT_EQ(loadBack.modules.size(), 2u);
   EXPECT_EQ(loadBack.modules[0].world, "lounge");
   EXPECT_EQ(loadBack.modules[0].seconds, 30.0);
   EXPECT_FALSE(loadBack.modules[1].loaded);
   EXPECT_EQ(loadBack.modules[1].error, "bad ELF");
+  const std::uint32_t past = static_cast<std::uint32_t>(area.size()) - 3;  // a length the area cannot hold
+  std::memcpy(area.data(), &past, sizeof past);
+  EXPECT_EQ(readFramed(area, copy, loadBack).error(), "a reply longer than its area");
 
   BuildRequest build{.robots = {{.module = 1, .spec = {.radius = 0.25, .sonarAngles = {0.0, 1.0}}}}};
   Writer wb(area);

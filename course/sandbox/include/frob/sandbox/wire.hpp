@@ -131,12 +131,14 @@ bool read(Reader& r, BuildRequest& request);
 void write(Writer& w, const StepReply& reply);
 bool read(Reader& r, StepReply& reply);
 
-/// Writes `reply` in a robot's reply area: its length, then its bytes. False if it did not fit (the
-/// reader then fails it).
+/// Writes `reply` in a robot's reply area (or the answer to loading in the setup area): its length,
+/// then its bytes. False if it did not fit (the reader then fails it).
 bool writeFramed(std::span<std::byte> area, const StepReply& reply);
-/// Reads a robot's reply from a copy of its `area` (`copy` is reused), so that the host cannot
-/// change it while it is read.
+bool writeFramed(std::span<std::byte> area, const LoadReply& reply);
+/// Reads a reply from a copy of its `area` (`copy` is reused), so that the host cannot change it
+/// while it is read; only as many bytes as it says it has are copied.
 [[nodiscard]] Status readFramed(std::span<const std::byte> area, std::vector<std::byte>& copy, StepReply& reply);
+[[nodiscard]] Status readFramed(std::span<const std::byte> area, std::vector<std::byte>& copy, LoadReply& reply);
 
 /// What the trusted side keeps of one robot's replies over a run, against the caps per run: the
 /// tasks running now (each start numbered in order, each end of a running task), the names of
