@@ -1,5 +1,6 @@
 #include "sandbox_user.hpp"
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <pwd.h>
 #include <sys/file.h>
@@ -12,7 +13,7 @@
 #include <csignal>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -46,23 +47,39 @@ Result<sandbox::Fd> lockFolder() {
   return Status::failure("cannot keep the sandbox's users apart: " + why);
 }
 
-// This process's children that run as `uid`, from /proc: their parent and real user id.
+// The text of /proc/<pid>/<file>, at most `bytes` of it ("" when it cannot be read).
+std::string procText(int proc, const char* pid, const char* file, std::size_t bytes) {
+  const std::string path = std::string(pid) + "/" + file;
+  const sandbox::Fd fd(::openat(proc, path.c_str(), O_RDONLY | O_CLOEXEC));
+  std::string text(bytes, '\0');
+  const ssize_t n = fd.valid() ? ::read(fd.get(), text.data(), bytes) : -1;
+  text.resize(n > 0 ? static_cast<std::size_t>(n) : 0);
+  return text;
+}
+
+// This process's children that run as `uid`, from /proc: each process's parent from its short
+// `stat` (after the name in parentheses, which may hold anything), then the real user id of this
+// process's children alone from their `status`, which costs the kernel more to write.
 std::vector<pid_t> childrenRunningAs(std::uint32_t uid) {
   std::vector<pid_t> found;
-  std::error_code ec;
+  DIR* dir = ::opendir("/proc");
+  if (dir == nullptr) return found;
   const std::string self = std::to_string(::getpid()), user = std::to_string(uid);
-  for (const std::filesystem::directory_entry& e : std::filesystem::directory_iterator("/proc", ec)) {
-    const std::string name = e.path().filename().string();
-    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
-    std::ifstream status(e.path() / "status");
-    std::string line, parent, real;
+  while (const dirent* e = ::readdir(dir)) {
+    const std::string_view name = e->d_name;
+    if (name.empty() || name.find_first_not_of("0123456789") != std::string_view::npos) continue;
+    const std::string stat = procText(::dirfd(dir), e->d_name, "stat", 512);
+    const std::size_t named = stat.rfind(')');  // then " <state> <ppid> "
+    if (named == std::string::npos || stat.compare(named + 3, self.size() + 2, " " + self + " ") != 0) continue;
+    std::istringstream status(procText(::dirfd(dir), e->d_name, "status", 4096));
+    std::string line, real;
     while (std::getline(status, line)) {
-      if (line.starts_with("PPid:")) parent = line.substr(line.find_first_not_of(" \t", 5));
       if (line.starts_with("Uid:")) real = line.substr(5, line.find_first_of(" \t", line.find_first_not_of(" \t", 5)) - 5);
     }
     real.erase(0, real.find_first_not_of(" \t"));
-    if (parent == self && real == user) found.push_back(static_cast<pid_t>(std::stol(name)));
+    if (real == user) found.push_back(static_cast<pid_t>(std::stol(std::string(name))));
   }
+  ::closedir(dir);
   return found;
 }
 
