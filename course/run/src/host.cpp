@@ -113,12 +113,11 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
   };
   if (Status s = impl->await(1, d.startSeconds, true); !s) return isGraderFailure(s) ? s : named(s.error() + when(0.0, impl->header().activity));
   if (Status s = impl->refusal(); !s) return named(s.error() + when(0.0, Activity::Loading));
+  // Its setup area is the controller's to overwrite: the answer is read from a copy, and checked.
   std::vector<std::byte> copy;
   sandbox::LoadReply reply;
-  if (const Status s = sandbox::readFramed(impl->channel.setup(), copy, reply); !s || reply.modules.size() != modules.size()) {
-    return named("its host's answer to loading was not understood" +
-                 (s ? std::string() : ": " + s.error()));  // its setup area is the controller's to overwrite
-  }
+  if (const Status s = sandbox::readFramed(impl->channel.setup(), copy, reply); !s || reply.modules.size() != modules.size())
+    return named("its host's answer to loading was not understood" + (s ? std::string() : ": " + s.error()));
   impl->layers.push_back({reply.seccomp.name, reply.seccomp.applied, true, reply.seccomp.note});
   for (std::size_t m = 0; m < reply.modules.size(); ++m) {
     sandbox::LoadReply::Module& e = reply.modules[m];
