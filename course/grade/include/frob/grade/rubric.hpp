@@ -88,7 +88,8 @@ struct Check {
   int secretSeeds = 0;               ///< more seeds, drawn from the instructor's secret
   double seconds = 60.0;             ///< simulated seconds of each run
   /// `runs_of`: the earlier check whose runs it judges (their worlds, seeds and seconds, drawn by
-  /// that check's name), each run made once for both; empty: runs of its own.
+  /// that check's name), each run made once for both; the first of a chain of runs_of; empty: runs
+  /// of its own.
   std::string runsOf;
   std::vector<Criterion> criteria;
   int line = 0;
