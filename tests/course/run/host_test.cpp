@@ -279,6 +279,15 @@ TEST(Sandbox, AHostSeesNothingOfAnotherProcessesSchedulingAndTakesNoLock) {
   EXPECT_EQ(o.lastWheels, (Wheels{0.1, 0.0}));
 }
 
+// Nor see or change which pages of a library every host may read the kernel caches, watch files,
+// or read the machine's counters: notes between hosts (robots, runs, students) again. The turn's
+// bits name the calls the kernel carried out (sees_the_page_cache.cpp).
+TEST(Sandbox, AHostSeesNothingOfThePageCacheNorWatchesFiles) {
+  const Outcome o = runHostile({"sees_the_page_cache"});
+  EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
+  EXPECT_EQ(o.lastWheels, (Wheels{0.1, 0.0}));
+}
+
 // A controller that answers each step just inside its deadline falls behind the run's pace and
 // fails within seconds, not after the run's 600 s.
 TEST(Sandbox, AControllerThatSleepsInEveryStepFallsBehindAndFails) {
