@@ -115,6 +115,8 @@ CompilerSetup compilerSetup(bool checked) {
   s.reads = {files.headerOverlay.string(), files.includeDir.string()};
   // A Task called and not awaited does nothing: Task's [[nodiscard]] says so, and here it stops the build.
   s.flags.emplace_back("-Werror=unused-result");
+  // No crashing the compiler on purpose (#pragma clang __debug crash): a crash is the grader's failure.
+  s.flags.insert(s.flags.end(), {"-Xclang", "-disable-pragma-debug-crash"});
   if (checked) {
     // Code that stops at its first mistake and says where: asserts on, line tables for the
     // report's stack, and -O1, at which the stack still names the student's functions.
@@ -340,6 +342,10 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
   if (*FROB_CONTROLLER_LINKER != '\0') program.command.push_back(FROB_CONTROLLER_LINKER);  // gold where there is one
   // Its debug information names the files without the folder (what a checked run's stacks show).
   program.command.push_back("-fdebug-prefix-map=" + work.string() + "=");
+  // Where clang leaves its reproducer when it crashes: the one sign of a crash the source cannot
+  // print (its messages may quote any line of it, "PLEASE submit a bug report" too).
+  const fs::path crashReport = work / "crash";
+  program.command.push_back("-fcrash-diagnostics-dir=" + crashReport.filename().string());
   // Inputs as paths ("./-x.cpp"), never options or response files.
   program.command.insert(program.command.end(), {"-shared", "-o", partial.filename().string(), "./" + shown.filename().string()});
   for (const Companion& c : companions) {
@@ -363,10 +369,10 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
                            " s, so it was stopped (an #include or a macro that never ends?)");
   }
   const int status = run.value().status;
-  // The compiler crashed, or could not be run: no fault of the submission's, and no grade. Its
+  // The compiler crashed (killed by a signal, or it left a reproducer), or could not be run: no
+  // fault of the submission's, and no grade. Its
   // output is kept whole at the end, where the crash is described (runSandboxed).
-  const bool crashed = WIFSIGNALED(status) ? WTERMSIG(status) != SIGXCPU && WTERMSIG(status) != SIGKILL
-                                           : run.value().output.find("PLEASE submit a bug report") != std::string::npos;
+  const bool crashed = WIFSIGNALED(status) ? WTERMSIG(status) != SIGXCPU && WTERMSIG(status) != SIGKILL : !fs::is_empty(crashReport, ec) && !ec;
   if (crashed || (WIFEXITED(status) && WEXITSTATUS(status) == 127)) {
     cleanUp();
     return graderFailure(std::string(crashed ? "the compiler crashed" : "the compiler could not be run") + " compiling '" + source.string() + "' (" +

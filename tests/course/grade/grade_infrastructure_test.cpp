@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -62,9 +63,14 @@ TEST_F(GraderFailure, AHostThatCannotStartIsNoGrade) {
   EXPECT_EQ(row.substr(row.size() - 2), ",\r") << "a check's column holds a score: " << row;
 }
 
-// clang crashes on purpose at `#pragma clang __debug crash`; before it, more warnings than the
-// output kept: the crash's own words, at the end, are kept.
+// clang crashes on purpose at `#pragma clang __debug crash` when frob does not disable it, as a
+// compiler with a bug would; before it, more warnings than the output kept: the crash's own words,
+// at the end, are kept.
 TEST_F(GraderFailure, ACompilerCrashIsNoGradeAndItsEndIsKept) {
+  std::vector<std::string>& flags = def_.compiler.flags;
+  const auto disabled = std::find(flags.begin(), flags.end(), "-disable-pragma-debug-crash");
+  ASSERT_NE(disabled, flags.end());
+  flags.erase(disabled - 1, disabled + 1);  // with its -Xclang
   std::string source = "#include <frob/frob.hpp>\n";
   for (int i = 0; i < 12000; ++i) source += "#warning a long warning to push the crash past the first half of what is kept\n";
   source += "#pragma clang __debug crash\n";
@@ -80,6 +86,26 @@ TEST_F(GraderFailure, ACompilerCrashIsNoGradeAndItsEndIsKept) {
   EXPECT_EQ(g.graderFailure.find("frob-compile-"), std::string::npos) << "the compiler's own folder";
   EXPECT_NE(g.graderFailure.find("-include-pch frob.pch"), std::string::npos);
   EXPECT_TRUE(g.checks.empty());
+}
+
+// What the source makes the compiler print, or a debug pragma it asks for, is the submission's: a
+// compile that says "PLEASE submit a bug report" (a message, or a line of the source quoted with an
+// error) but did not crash is graded as it compiled, never "not graded".
+TEST_F(GraderFailure, ASubmissionCannotPassItselfOffAsACompilerCrash) {
+  const std::string crashWords = "PLEASE submit a bug report to https://github.com/llvm/llvm-project/issues/";
+  std::ofstream(dir_ / "says_it_crashed.cpp") << "#pragma message(\"" << crashWords << "\")\n" << kStill;
+  std::ofstream(dir_ / "quotes_a_crash.cpp") << kStill << crashWords << "\nclang: error: clang frontend command failed due to signal\n";
+  std::ofstream(dir_ / "asks_for_a_crash.cpp") << "#pragma clang __debug crash\n#pragma clang __debug llvm_fatal_error\n" << kStill;
+  const Grade says = grade(def_, dir_ / "says_it_crashed.cpp");
+  EXPECT_EQ(says.graderFailure, "");
+  EXPECT_EQ(says.compileError, "");
+  EXPECT_EQ(says.score(), 2.0);
+  const Grade quotes = grade(def_, dir_ / "quotes_a_crash.cpp");
+  EXPECT_EQ(quotes.graderFailure, "");
+  EXPECT_NE(quotes.compileError.find(crashWords), std::string::npos) << quotes.compileError;
+  const Grade asks = grade(def_, dir_ / "asks_for_a_crash.cpp");
+  EXPECT_EQ(asks.graderFailure, "") << asks.graderFailure.substr(0, 300);
+  EXPECT_EQ(asks.score(), 2.0);
 }
 
 }  // namespace
