@@ -74,4 +74,13 @@ double Grade::maxScore() const {
   return s;
 }
 
+double Grade::shownSeconds() const {
+  double s = wallSeconds;
+  for (const CheckGrade& c : checks) {
+    if (c.visibility == Visibility::Visible) continue;
+    for (const RunGrade& r : c.runs) s -= r.wallSeconds;
+  }
+  return std::max(0.0, s);
+}
+
 }  // namespace frob::course

@@ -49,7 +49,7 @@ std::string markdownOutput(const CheckGrade& c) {
 Status writeGradescope(const Grade& g, const std::filesystem::path& path) {
   Json doc;
   doc["score"] = rounded(g.score());
-  doc["execution_time"] = std::llround(std::max(0.0, g.wallSeconds));
+  doc["execution_time"] = std::llround(g.shownSeconds());
   doc["output"] = summaryOf(g);
   doc["output_format"] = "text";
   Json tests = Json::array();

@@ -60,7 +60,7 @@ Status writeJUnit(const Grade& g, const std::filesystem::path& path) {
       std::string hints;
       for (const std::string& h : c.hintsShown(k)) hints += "hint: " + h + "\n";
       const char* type = r.passed ? nullptr : r.reason.starts_with("the controller failed: ") ? "run failed" : "check failed";
-      testcase(c.name + " / " + c.place(k), r.wallSeconds, type, c.reasonShown(k), hints);
+      testcase(c.name + " / " + c.place(k), c.visibility == Visibility::Visible ? r.wallSeconds : 0.0, type, c.reasonShown(k), hints);
     }
   }
   std::string notes;
@@ -68,7 +68,7 @@ Status writeJUnit(const Grade& g, const std::filesystem::path& path) {
   std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   xml += "<testsuite name=\"" + suite + "\" timestamp=\"" + (g.startedAt.empty() ? "1970-01-01T00:00:00" : g.startedAt) + "\" hostname=\"" +
          markupEscape(hostName(), true) + "\" tests=\"" + std::to_string(tests) + "\" failures=\"" + std::to_string(failures) +
-         "\" errors=\"0\" skipped=\"0\" time=\"" + seconds(g.wallSeconds) + "\">\n";
+         "\" errors=\"0\" skipped=\"0\" time=\"" + seconds(g.shownSeconds()) + "\">\n";
   xml += "  <properties>\n";
   xml += "    <property name=\"submission\" value=\"" + markupEscape(g.submission, true) + "\"/>\n";
   xml += "    <property name=\"score\" value=\"" + number(g.score()) + "\"/>\n";

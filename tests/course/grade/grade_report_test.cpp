@@ -395,6 +395,26 @@ TEST(JUnit, ReadsBackWithAStrictXmlParser) {
   EXPECT_EQ(text.find('\x01'), std::string::npos);
 }
 
+// A hidden run's length is never shown: a controller that sleeps within its pace, in proportion
+// to what its sonar reads, would spell out a hidden world in its time. Its testcase takes 0 s, and
+// the totals (the suite's, Gradescope's execution_time) leave the hidden runs out.
+TEST(JUnit, AHiddenRunsLengthIsShownNowhere) {
+  const fs::path dir = scratch("junit_hidden_time");
+  Grade g = sample();
+  g.wallSeconds = 20.0;
+  g.checks[0].runs[0].wallSeconds = 1.5;
+  g.checks[2].runs[0].wallSeconds = 7.875;
+  ASSERT_TRUE(writeJUnit(g, dir / "junit.xml").ok());
+  const Doc doc = parseXml(readFile(dir / "junit.xml"));
+  EXPECT_EQ(one(doc.get(), "//testcase[@name='reaches the goal / empty, seed 1']/@time"), "1.500");
+  EXPECT_EQ(one(doc.get(), "//testcase[@name='secret worlds / hidden world 1']/@time"), "0.000");
+  EXPECT_EQ(one(doc.get(), "/testsuite/@time"), "12.125");
+  ASSERT_TRUE(writeGradescope(g, dir / "results.json").ok());
+  EXPECT_EQ(json::parse(readFile(dir / "results.json"))["execution_time"], 12);
+  g.checks[2].visibility = Visibility::Visible;  // seen, its length is shown as it is
+  EXPECT_EQ(g.shownSeconds(), 20.0);
+}
+
 // Why `text` is not valid against the Apache Ant JUnit schema; "" when it is.
 std::string antSchemaErrors(const std::string& text) {
   std::string errors;

@@ -116,6 +116,9 @@ struct Grade {
   std::string startedAt;     ///< when grading began, UTC, as 2026-12-02T21:58:37
   [[nodiscard]] double score() const;
   [[nodiscard]] double maxScore() const;
+  /// How long grading took, shown to students: wallSeconds less the runs of checks they do not see,
+  /// whose lengths a controller could stretch (sleeping within its pace) to spell out a hidden world.
+  [[nodiscard]] double shownSeconds() const;
 };
 
 /// Where `grade` stands on `metric`'s board: the mean of the criterion's measure over the check's
