@@ -124,6 +124,27 @@ TEST_F(Grading, AGoodSubmissionGetsFullMarks) {
   EXPECT_DOUBLE_EQ(g.maxScore(), 8.0);
 }
 
+// What a controller prints reaches frob's output in the runs students see, and in no other: it
+// could print what it senses in a hidden world. Here it prints once a run: the two runs of the one
+// visible check, not those of the hidden and after-the-due-date ones (four more).
+TEST_F(Grading, WhatAControllerPrintsInAHiddenRunIsShownNowhere) {
+  std::ofstream(dir_ / "talks.cpp") << R"(#include <frob/frob.hpp>
+#include <cstdio>
+using namespace frob;
+Behavior<Wheels> talks(const Robot&) {
+  return toBehavior(lift([](double t) { if (t == 0.0) std::printf("a run\n"); return Wheels{0.0, 0.0}; }, time()));
+}
+FROB_CONTROLLER(talks)
+)";
+  std::string printed;
+  def_.host.output = [&](std::string_view text) { printed += text; };
+  const Grade g = grade(def_, dir_ / "talks.cpp");
+  ASSERT_EQ(g.compileError, "");
+  ASSERT_EQ(g.checks.size(), 4u);
+  EXPECT_EQ(g.checks[1].runs.size() + g.checks[2].runs.size() + g.checks[3].runs.size(), 4u);
+  EXPECT_EQ(printed, "a run\na run\n");
+}
+
 // A class folder: each .cpp file in it is a submission alone, each subfolder a submission of
 // several files; `frob grade A file.cpp` grades the file's folder when the file is its one controller
 // with helpers beside it. A stray file without a controller in the class compiles with no one's.
