@@ -7,6 +7,7 @@
 
 #include <fcntl.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <mutex>
@@ -20,6 +21,12 @@ constexpr std::size_t kFrameBytes = 64 << 10;   // a frame: its sonars, bumps an
 constexpr std::size_t kReplyBytes = 256 << 10;  // a reply: wheels, task records, a picture
 
 }  // namespace
+
+namespace {
+std::atomic<std::uint64_t> hostsStarted{0};
+}  // namespace
+
+std::uint64_t ControllerHost::started() { return hostsStarted.load(std::memory_order_relaxed); }
 
 Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<fs::path>& modules, const std::vector<std::string>& sources,
                                                               HostDef def) {
@@ -103,6 +110,7 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
   wake.value().write.reset();
   if (!process) return process.status();  // frob's failure, never the controller's (sandboxed.hpp)
   impl->process = std::move(process.value());
+  hostsStarted.fetch_add(1, std::memory_order_relaxed);
   impl->layers = impl->process.layers();
   impl->runDeadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(d.runSeconds));
 

@@ -2,6 +2,7 @@
 // and cached; each check's own draws, or those of the check whose runs it judges (runs_of).
 #include "frob/grade/grade.hpp"
 #include "frob/run/format.hpp"
+#include "frob/run/host.hpp"
 #include "frob/worlds/simulation.hpp"
 
 #include <gtest/gtest.h>
@@ -141,12 +142,11 @@ TEST_F(HiddenWorlds, EachCheckRunsInItsOwnDraws) {
 }
 
 // A check that judges the runs of another (runs_of) is judged in its worlds with its seeds, each run
-// made once for both (the host's global constructor prints once a run); the draws kept are those in
+// made once for both (a host started for each robot of a run); the draws kept are those in
 // which the reference passes both checks: here only the judging check asks the still reference to
 // stand near the centre, and the draws that fail it are skipped for both.
 TEST_F(HiddenWorlds, AJudgeOfAnotherChecksRunsSharesItsFairDraws) {
-  std::ofstream(dir_ / "counted.cpp") << "#include <frob/frob.hpp>\n#include <cstdio>\nusing namespace frob;\n"
-                                         "static const int started = std::puts(\"host started\");\n"
+  std::ofstream(dir_ / "counted.cpp") << "#include <frob/frob.hpp>\nusing namespace frob;\n"
                                          "Behavior<Wheels> still(const Robot&) { return wheels(0.0, 0.0); }\nFROB_CONTROLLER(still)\n";
   const auto rubricWith = [&](double within) {
     std::ofstream(dir_ / "assignment" / "shared.toml")
@@ -182,14 +182,11 @@ TEST_F(HiddenWorlds, AJudgeOfAnotherChecksRunsSharesItsFairDraws) {
     robots += loadWorldRef(worlds[k]).value().robots.size();
   }
 
-  std::string output;
-  def.host.output = [&](std::string_view text) { output += text; };
+  const std::uint64_t before = ControllerHost::started();
   const Grade g = grade(def, dir_ / "counted.cpp");
   ASSERT_EQ(g.compileError, "");
   EXPECT_EQ(g.score(), g.maxScore()) << g.checks[1].output();
-  std::size_t starts = 0;
-  for (std::size_t at = 0; (at = output.find("host started", at)) != std::string::npos; at += 1) ++starts;
-  EXPECT_EQ(starts, robots) << output;  // three hidden worlds, one seed, two checks: a run each
+  EXPECT_EQ(ControllerHost::started() - before, robots);  // three hidden worlds, one seed, two checks: a run each
   ASSERT_EQ(g.checks[1].runs.size(), 3u);
   for (std::size_t k = 0; k < 3; ++k) {
     EXPECT_EQ(g.checks[1].runs[k].world, worlds[k].name);

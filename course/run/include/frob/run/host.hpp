@@ -68,6 +68,8 @@ class ControllerHost : public std::enable_shared_from_this<ControllerHost> {
   [[nodiscard]] int processId() const;
   /// Things worth saying that are not failures, e.g. that output was dropped.
   [[nodiscard]] std::vector<std::string> notes() const;
+  /// How many host processes this process has started, in all (what a run that is shared saves).
+  [[nodiscard]] static std::uint64_t started();
 
   struct Impl;
 
