@@ -80,16 +80,23 @@ std::string reasonsOf(const Grade& g) {
 }
 
 std::vector<std::string> studentNames(const std::vector<fs::path>& submissions) {
-  std::map<std::string, int> stems;
-  for (const fs::path& s : submissions) ++stems[s.stem().string()];
+  const auto usable = [](std::string name) {
+    for (char& c : name) {
+      if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '_';  // a control character would act on a terminal
+    }
+    return name.empty() || name.front() == '.' || reservedNames().contains(name) ? "_" + name : name;
+  };
+  // A folder is named by its name; a file by its stem, or its whole name where another submission
+  // would have the same name (alice.cpp beside alice/, dana.v2.cpp beside dana.v2/); a name still
+  // shared gets a number (~2), so that no two students ever share a row or a folder.
   std::vector<std::string> names;
-  for (const fs::path& s : submissions) {
-    // A folder is named by its name; a file by its stem unless another submission has it too.
-    const bool folder = s.extension() != ".cpp";
-    std::string name = folder ? s.filename().string() : s.stem().string();
-    if (!folder && stems[name] > 1) name = s.filename().string();
-    if (name.empty() || name.front() == '.' || reservedNames().contains(name)) name = "_" + name;
-    names.push_back(std::move(name));
+  std::map<std::string, int> uses;
+  for (const fs::path& s : submissions) ++uses[names.emplace_back(usable(s.extension() == ".cpp" ? s.stem().string() : s.filename().string()))];
+  std::set<std::string> taken;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (uses[names[i]] > 1 && submissions[i].extension() == ".cpp") names[i] = usable(submissions[i].filename().string());
+    const std::string base = names[i];
+    for (int k = 2; !taken.insert(names[i]).second; ++k) names[i] = base + "~" + std::to_string(k);
   }
   return names;
 }

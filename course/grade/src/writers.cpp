@@ -120,13 +120,28 @@ Result<std::string> readWhole(const fs::path& path, const std::string& what) {
 
 namespace {
 
+// A cell a spreadsheet would take for a formula (=, +, -, @, a tab or a return first, unless it
+// is a number), or one that begins with the apostrophe that marks such cells, starts with one more
+// apostrophe, which parseCsv() takes off again: =HYPERLINK(...) as a student's name stays text.
+bool formulaLike(std::string_view text) {
+  if (text.empty() || std::string_view("=+-@\t\r'").find(text.front()) == std::string_view::npos) return false;
+  double value = 0;
+  const auto [end, ec] = std::from_chars(text.data() + (text.front() == '+' ? 1 : 0), text.data() + text.size(), value);
+  return ec != std::errc() || end != text.data() + text.size();
+}
+
 void appendCsvField(std::string& line, std::string_view text) {
-  if (text.find_first_of(",\"\r\n") == std::string_view::npos) {
-    line += text;
+  std::string cell = formulaLike(text) ? "'" : "";
+  for (char c : text) {  // no control characters but line breaks and tabs, which would act on a terminal that shows the file
+    const auto u = static_cast<unsigned char>(c);
+    cell += (u < 0x20 && c != '\n' && c != '\r' && c != '\t') || u == 0x7f ? '?' : c;
+  }
+  if (cell.find_first_of(",\"\r\n") == std::string::npos) {
+    line += cell;
     return;
   }
   line += '"';
-  for (char c : text) {
+  for (char c : cell) {
     if (c == '"') line += '"';
     line += c;
   }
@@ -171,6 +186,8 @@ Result<std::vector<CsvRow>> parseCsv(std::string_view text, const std::string& f
           field += text[i];
         }
       }
+      if (field.size() > 1 && field.front() == '\'' && formulaLike(std::string_view(field).substr(1)))
+        field.erase(0, 1);  // as appendCsvField wrote it
       if (i < text.size() && text[i] == ',') {
         ++i;
         continue;

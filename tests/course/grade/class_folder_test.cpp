@@ -13,6 +13,9 @@ using support::chromium, support::Ran, support::requireChromium;
 TEST(ClassFolder, StudentsAreNamedByFileOrFolderEachOnce) {
   EXPECT_EQ(studentNames({"class/alice.cpp", "class/alice", "class/bob.cpp", "class/.hidden.cpp", "class/gradebook.csv.cpp", "class/summary.html"}),
             (std::vector<std::string>{"alice.cpp", "alice", "bob", "_.hidden", "_gradebook.csv", "_summary.html"}));
+  // A file whose stem is a folder's whole name; names that only differ by what becomes '_'.
+  EXPECT_EQ(studentNames({"class/dana.v2.cpp", "class/dana.v2", "class/e\x1b[2Jve.cpp", "class/e_[2Jve.cpp", "class/e\x01[2Jve"}),
+            (std::vector<std::string>{"dana.v2.cpp", "dana.v2", "e_[2Jve.cpp", "e_[2Jve.cpp~2", "e_[2Jve"}));
 }
 
 TEST(ClassFolder, TheResultTellsACompileAHangAndACrashApart) {

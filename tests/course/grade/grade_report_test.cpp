@@ -509,6 +509,29 @@ TEST(Gradebook, ASubmissionGradedTwiceIsAnError) {
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
+// A cell a spreadsheet would run as a formula is written as text (an apostrophe first, as an
+// apostrophe first is too), numbers stay numbers, and control characters never reach the file; a
+// merge reads each name back as it was.
+TEST(Gradebook, NoCellIsAFormulaOrAControlCharacter) {
+  const fs::path dir = scratch("gradebook_formulas");
+  const std::vector<Grade> grades{scored("=HYPERLINK(\"http://evil.example\",\"x\").cpp", 2, 1), scored("@SUM(1).cpp", 0, 0),
+                                  scored("'quoted.cpp", 1, 0), scored("-2+3.cpp", 1, 1)};
+  ASSERT_TRUE(writeGradebook(grades, dir / "class.csv").ok());
+  EXPECT_EQ(readFile(dir / "class.csv"),
+            "submission,score,max_score,result,reaches the goal,\"avoids walls, maze\"\r\n"
+            "''quoted.cpp,1,3,graded,1,0\r\n"
+            "'-2+3.cpp,2,3,graded,1,1\r\n"
+            "\"'=HYPERLINK(\"\"http://evil.example\"\",\"\"x\"\").cpp\",3,3,graded,2,1\r\n"
+            "'@SUM(1).cpp,0,3,graded,0,0\r\n");
+  const Result<std::vector<std::string>> merged = mergeGradebooks({dir / "class.csv"}, dir / "merged.csv");
+  ASSERT_TRUE(merged.ok()) << merged.error();
+  EXPECT_EQ(merged.value(), (std::vector<std::string>{"'quoted.cpp", "-2+3.cpp", "=HYPERLINK(\"http://evil.example\",\"x\").cpp", "@SUM(1).cpp"}));
+  EXPECT_EQ(readFile(dir / "merged.csv"), readFile(dir / "class.csv"));
+  ASSERT_TRUE(writeGradebook({scored("\x1b]0;owned\x07.cpp", 0, 1)}, dir / "escapes.csv").ok());
+  EXPECT_EQ(readFile(dir / "escapes.csv"),
+            "submission,score,max_score,result,reaches the goal,\"avoids walls, maze\"\r\n?]0;owned?.cpp,1,3,graded,0,1\r\n");
+}
+
 TEST(Gradebook, MergedShardsEqualOneGradebook) {
   const fs::path dir = scratch("merge");
   const std::vector<Grade> a{scored("zed.cpp", 2, 1), scored("alice, \"the\" great.cpp", 2, 0.5)};

@@ -28,9 +28,10 @@ namespace frob::course {
 /// or a line per failed run ("check, place: reason"; hidden runs with their full reason).
 [[nodiscard]] std::string reasonsOf(const Grade& g);
 
-/// The name each submission's student goes by, which names their row and folder: the file's stem or
-/// the folder's name; a file's whole name where another submission has its stem (alice.cpp beside
-/// alice/); '_' before a name that would be hidden or one of the class folder's own files.
+/// The name each submission's student goes by, which names their row and folder, one per student:
+/// the file's stem or the folder's name; a file's whole name where another submission would have
+/// the same (alice.cpp beside alice/); a number after a name still shared (~2); '_' in place of a
+/// control character, and before a name that would be hidden or one of the class folder's own files.
 [[nodiscard]] std::vector<std::string> studentNames(const std::vector<std::filesystem::path>& submissions);
 
 /// A student of `dir`'s gradebook and their submission as graded, found by `path`: their submission
