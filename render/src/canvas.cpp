@@ -135,23 +135,31 @@ void Canvas::arc(const Vec2& c, double r, double a0, double a1, double width, Rg
   }
 }
 
-void Canvas::polygon(std::span<const Vec2> pts, Rgba8 col) {
+bool Canvas::polygon(std::span<const Vec2> pts, Rgba8 col) {
   const std::size_t n = pts.size();
-  if (n < 3) return;
-  // Ear clipping on indices; orientation decides which side is inside.
+  if (n < 3) return true;
+  // Ear clipping on indices; orientation decides which side is inside. Each ear's test looks at
+  // every corner left, so a frame's tests are counted against a budget: a picture made to be the
+  // worst case (O(n^3)) would otherwise take minutes a frame.
   double area = 0.0;
   for (std::size_t i = 0; i < n; ++i) area += cross(Vec2(0, 0), pts[i], pts[(i + 1) % n]);
   const double sign = area >= 0 ? 1.0 : -1.0;
   std::vector<std::size_t> idx(n);
   for (std::size_t i = 0; i < n; ++i) idx[i] = i;
-  std::size_t guard = 0;
-  while (idx.size() > 3 && guard++ < n * n) {
+  bool exact = true;
+  std::size_t k = 0;  // where the search for the next ear starts: next to the last one clipped
+  while (idx.size() > 3 && exact) {
     bool clipped = false;
-    for (std::size_t k = 0; k < idx.size(); ++k) {
+    for (std::size_t tried = 0; tried < idx.size() && !clipped; ++tried, k = (k + 1) % idx.size()) {
+      if (earTests_ >= kEarTestsPerFrame) {
+        exact = false;
+        break;
+      }
       const Vec2& a = pts[idx[(k + idx.size() - 1) % idx.size()]];
       const Vec2& b = pts[idx[k]];
       const Vec2& c = pts[idx[(k + 1) % idx.size()]];
       if (sign * cross(a, b, c) <= 0) continue;  // reflex corner
+      earTests_ += idx.size();
       bool inside = false;
       for (std::size_t m : idx) {
         const Vec2& p = pts[m];
@@ -164,12 +172,13 @@ void Canvas::polygon(std::span<const Vec2> pts, Rgba8 col) {
       if (inside) continue;
       triangle(a, b, c, col);
       idx.erase(idx.begin() + static_cast<std::ptrdiff_t>(k));
+      k = k % idx.size();
       clipped = true;
-      break;
     }
-    if (!clipped) break;  // degenerate (self-intersecting): draw the rest as a fan below
+    if (!clipped) exact = false;  // degenerate (self-intersecting), or past the budget: the rest as a fan below
   }
-  for (std::size_t k = 1; k + 1 < idx.size(); ++k) triangle(pts[idx[0]], pts[idx[k]], pts[idx[k + 1]], col);
+  for (std::size_t j = 1; j + 1 < idx.size(); ++j) triangle(pts[idx[0]], pts[idx[j]], pts[idx[j + 1]], col);
+  return exact;
 }
 
 void Canvas::arrow(const Vec2& tail, const Vec2& tip, double width, double head, Rgba8 col) {

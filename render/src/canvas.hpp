@@ -52,7 +52,11 @@ struct Run {
 
 class Canvas {
  public:
+  // Corners tested by polygon()'s ear clipping in a frame: some milliseconds' work.
+  static constexpr std::size_t kEarTestsPerFrame = std::size_t{1} << 22;
+
   void clear() {
+    earTests_ = 0;
     vertices_.clear();
     runs_.clear();
     overlay_.clear();
@@ -82,8 +86,9 @@ class Canvas {
   // A filled circular sector from angle a0 to a1 (radians, counter-clockwise on screen).
   void sector(const Vec2& c, double r, double a0, double a1, Rgba8 col);
   void arc(const Vec2& c, double r, double a0, double a1, double width, Rgba8 col);
-  // A filled simple polygon, convex or not (ear clipping).
-  void polygon(std::span<const Vec2> pts, Rgba8 col);
+  // A filled simple polygon, convex or not (ear clipping); false when it was filled as a fan instead:
+  // a self-intersecting one, or one past the frame's budget of ear tests.
+  bool polygon(std::span<const Vec2> pts, Rgba8 col);
   void arrow(const Vec2& tail, const Vec2& tip, double width, double head, Rgba8 col);
   // A 3D triangle (chase view).
   void triangle3(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, Rgba8 col);
@@ -100,6 +105,7 @@ class Canvas {
   std::vector<Run> runs_;
   std::vector<OverlayOp> overlay_;
   int clip_[4] = {-1 << 20, -1 << 20, 1 << 20, 1 << 20};
+  std::size_t earTests_ = 0;
 };
 
 }  // namespace frob::render::detail

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace frob::render::detail {
 namespace {
 
@@ -20,11 +22,28 @@ TEST(Canvas, ConcavePolygonIsTriangulatedWithoutSpill) {
   // An L shape: 3 x 3 square minus its 2 x 2 upper-right part, area 5, in either orientation.
   const std::vector<Vec2> l = {{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 3}, {0, 3}};
   Canvas c;
-  c.polygon(l, {});
+  EXPECT_TRUE(c.polygon(l, {}));
   EXPECT_NEAR(area(c), 5.0, 1e-9);
   Canvas r;
-  r.polygon(std::vector<Vec2>(l.rbegin(), l.rend()), {});
+  EXPECT_TRUE(r.polygon(std::vector<Vec2>(l.rbegin(), l.rend()), {}));
   EXPECT_NEAR(area(r), 5.0, 1e-9);
+}
+
+// The ear clipper's worst case (every corner convex and its triangle round the centre, where the
+// last half of the vertices cluster): a frame's budget of ear tests runs out and the rest is a fan,
+// n - 2 triangles all the same, instead of some 10^10 tests; the next frame has its budget again.
+TEST(Canvas, APolygonMadeToBeSlowToFillIsFilledWithinTheFramesBudget) {
+  std::vector<Vec2> worst;
+  for (int i = 0; i < 2048; ++i) worst.emplace_back(500 + 300 * std::cos(i * (M_PI + 0.01)), 500 + 300 * std::sin(i * (M_PI + 0.01)));
+  for (int j = 0; j < 2048; ++j) worst.emplace_back(500 + 0.1 * std::cos(M_PI / 2 * j / 2048), 500 + 0.1 * std::sin(M_PI / 2 * j / 2048));
+  const std::vector<Vec2> l = {{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 3}, {0, 3}};
+  Canvas c;
+  EXPECT_FALSE(c.polygon(worst, {}));
+  EXPECT_EQ(c.vertices().size(), 3 * (worst.size() - 2));
+  EXPECT_FALSE(c.polygon(l, {})) << "the frame's budget is spent";
+  c.clear();
+  EXPECT_TRUE(c.polygon(l, {}));
+  EXPECT_NEAR(area(c), 5.0, 1e-9);
 }
 
 TEST(Canvas, DiscAreaIsCloseToPiRSquared) {
