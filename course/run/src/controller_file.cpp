@@ -37,10 +37,13 @@ namespace {
 #define FROB_STRINGIFY(x) FROB_STRINGIFY2(x)
 constexpr const char* kEntrySymbol = FROB_STRINGIFY(FROB_CONTROLLER_SYMBOL);
 constexpr std::uintmax_t kModuleBytes = 64 << 20;  // largest compiled controller kept (a large one is 6 MB)
-constexpr std::uintmax_t kHeaderBytes = 1 << 20;   // largest header of its own a submission brings
-constexpr int kHeaders = 64;                       // most headers it brings
-constexpr std::uintmax_t kSourceBytes = 1 << 20;   // largest .cpp file compiled with a controller
-constexpr std::size_t kCompanions = 16;            // most .cpp files compiled with a controller
+// What clang says when a limit stopped it (strsignal's words for SIGXCPU and SIGXFSZ, and LLVM's when
+// memory ran out).
+constexpr const char* kLimitWords[] = {"CPU time limit exceeded", "File size limit exceeded", "LLVM ERROR: out of memory", "Allocation failed"};
+constexpr std::uintmax_t kHeaderBytes = 1 << 20;  // largest header of its own a submission brings
+constexpr int kHeaders = 64;                      // most headers it brings
+constexpr std::uintmax_t kSourceBytes = 1 << 20;  // largest .cpp file compiled with a controller
+constexpr std::size_t kCompanions = 16;           // most .cpp files compiled with a controller
 
 // Size and modification time of a file, as text: a rebuilt file changes it.
 std::string fileStamp(const std::string& path) {
@@ -328,7 +331,7 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
   SandboxedDef program{.command = {onPath(setup.compiler)},
                        .limits = {.cpuSeconds = static_cast<std::uint64_t>(setup.seconds),
                                   .memoryBytes = setup.memoryBytes,
-                                  .fileBytes = 512ULL << 20,
+                                  .fileBytes = setup.fileBytes,
                                   .openFiles = 256},
                        .namespaces = {.tasks = 64},
                        .files = {.read = compilerReads(setup, pch), .write = {work.string()}, .execute = {"/usr", "/bin"}},
@@ -369,10 +372,17 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
                            " s, so it was stopped (an #include or a macro that never ends?)");
   }
   const int status = run.value().status;
-  // The compiler crashed (killed by a signal, or it left a reproducer), or could not be run: no
-  // fault of the submission's, and no grade. Its
-  // output is kept whole at the end, where the crash is described (runSandboxed).
-  const bool crashed = WIFSIGNALED(status) ? WTERMSIG(status) != SIGXCPU && WTERMSIG(status) != SIGKILL : !fs::is_empty(crashReport, ec) && !ec;
+  // A compiler that ran into its limits of time, memory or file size failed on the submission's
+  // account, however it ended: killed by the limit's signal, or, where the signal reached the
+  // compiler's own process, a "crash" in which clang names the limit (words a source could print
+  // too, but only to make a crash of its own its failure).
+  const int signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+  const std::string& said = run.value().output;
+  const bool limited = signal == SIGXCPU || signal == SIGXFSZ || signal == SIGKILL ||
+                       std::any_of(std::begin(kLimitWords), std::end(kLimitWords), [&](const char* w) { return said.find(w) != std::string::npos; });
+  // Otherwise it crashed (another signal, or it left a reproducer), or could not be run: no fault of
+  // the submission's, and no grade. Its output is kept whole at the end, where the crash is described (runSandboxed).
+  const bool crashed = !limited && (signal != 0 || (!fs::is_empty(crashReport, ec) && !ec));
   if (crashed || (WIFEXITED(status) && WEXITSTATUS(status) == 127)) {
     cleanUp();
     return graderFailure(std::string(crashed ? "the compiler crashed" : "the compiler could not be run") + " compiling '" + source.string() + "' (" +
@@ -380,11 +390,11 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
   }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     cleanUp();
-    const bool limited = WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL);
-    return Status::failure("could not compile '" + source.string() + "' " +
-                           (limited               ? "within the compiler's limits of time and memory"
-                            : messages != nullptr ? "(the compiler's messages follow)"  // the caller puts them after this line
-                                                  : "(the compiler's messages are above)"));
+    return Status::failure(
+        "could not compile '" + source.string() + "' " +
+        (limited ? "within the compiler's limits of time, memory and file size (" + std::to_string(setup.fileBytes >> 20) + " MB a file)"
+         : messages != nullptr ? "(the compiler's messages follow)"  // the caller puts them after this line
+                               : "(the compiler's messages are above)"));
   }
   if (const std::uintmax_t bytes = fs::file_size(partial, ec); ec || bytes > kModuleBytes) {
     cleanUp();

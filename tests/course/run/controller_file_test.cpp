@@ -222,6 +222,25 @@ TEST(ControllerFile, AHugeModuleIsRefused) {
                            "': the compiled controller is 80 MB, more than the 64 MB allowed (a huge array, or a file pulled in with .incbin?)");
 }
 
+// A compile that runs into the compiler's limit of file size fails on the submission's account
+// with that reason, though the signal reached clang's own process, which then reported a crash
+// (its reproducer included): never "the compiler crashed", which gives no grade.
+TEST(ControllerFile, AnObjectPastTheFileLimitIsTheSubmissionsFailure) {
+  const fs::path dir = freshFolder("file_limit");
+  writeFile(
+      dir / "big.cpp",
+      std::string("asm(\".section .data\\n.zero 20000000\\n.text\");\n") +
+          "#include <frob/frob.hpp>\nfrob::Behavior<frob::Wheels> go(const frob::Robot&) { return frob::Wheels{0.1, 0.0}; }\nFROB_CONTROLLER(go)\n");
+  CompilerSetup setup = setupIn(dir);
+  setup.fileBytes = 8 << 20;
+  std::string messages;
+  const Result<CompiledController> c = compileControllerFile(dir / "big.cpp", setup, &messages);
+  ASSERT_FALSE(c.ok());
+  EXPECT_FALSE(isGraderFailure(c.status())) << c.error() << messages.substr(0, 400);
+  EXPECT_EQ(c.error(),
+            "could not compile '" + (dir / "big.cpp").string() + "' within the compiler's limits of time, memory and file size (8 MB a file)");
+}
+
 // The compiler reads copies of the files it compiles, not the folder they are in: a file beside a
 // controller that is not one of them (notes, a key, a classmate's work) is not there to pull in.
 TEST(ControllerFile, TheCompilerReadsCopiesOfTheControllersFilesNotItsFolder) {

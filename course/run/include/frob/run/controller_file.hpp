@@ -32,6 +32,7 @@ struct CompilerSetup {
   std::filesystem::path cacheDir;          ///< where compiled controllers are kept, named by a hash of what made them
   double seconds = 120.0;                  ///< wall-clock and CPU time a compile may take
   std::uint64_t memoryBytes = 4ULL << 30;  ///< address space of the compiler
+  std::uint64_t fileBytes = 128ULL << 20;  ///< largest file it may write (an object, the module): twice the largest module kept
   bool checked = false;                    ///< with AddressSanitizer, UBSan and the C++ library's checks (`frob run --check`)
 };
 
