@@ -24,6 +24,12 @@ void appendUtf8(std::string& out, char32_t c) {
 
 bool isControl(char32_t c) { return c < 0x20 || (c >= 0x7F && c <= 0x9F); }
 
+// Marks that reorder the text around them (right-to-left overrides and isolates): a reason could
+// show a line that reads otherwise than its bytes.
+namespace {
+bool reorders(char32_t c) { return c == 0x061C || c == 0x200E || c == 0x200F || (c >= 0x202A && c <= 0x202E) || (c >= 0x2066 && c <= 0x2069); }
+}  // namespace
+
 // An escape sequence (CSI, OSC, DCS, in 7 or 8 bits) or a bare carriage return from a controller's
 // message could recolour or clear the screen, write the clipboard or overwrite a line already shown.
 std::string terminalSafe(std::string_view text, bool lines) {
@@ -32,7 +38,7 @@ std::string terminalSafe(std::string_view text, bool lines) {
   forEachCodePoint(text, [&](char32_t c, std::size_t at, std::size_t) {
     if (c == kInvalidUtf8) {
       out += format("\\x%02x", static_cast<unsigned char>(text[at]));
-    } else if (c >= 0x80 && isControl(c)) {
+    } else if (c >= 0x80 && (isControl(c) || reorders(c))) {
       out += format("\\u%04x", static_cast<unsigned>(c));
     } else if (isControl(c) && c != '\t' && !(lines && c == '\n')) {
       out += format("\\x%02x", static_cast<unsigned>(c));

@@ -19,6 +19,10 @@ TEST(TerminalText, EveryKindOfEscapeIsShownNotActedOn) {
   EXPECT_EQ(terminalSafe("graded\rTotal 7 / 7"), "graded\\x0dTotal 7 / 7");  // a bare carriage return
   EXPECT_EQ(terminalSafe(std::string_view("\x7f\x08\x00", 3)), "\\x7f\\x08\\x00");
   EXPECT_EQ(terminalSafe("caf\xc3\xa9 \xe9t\xc3"), "caf\xc3\xa9 \\xe9t\\xc3");  // UTF-8 stays; malformed bytes are shown
+  // A right-to-left override or isolate would show "passed" for bytes that say "deliaf".
+  EXPECT_EQ(terminalSafe("\xe2\x80\xae"
+                         "deliaf \xe2\x81\xa7x\xe2\x81\xa9 \xe2\x80\x8f"),
+            "\\u202edeliaf \\u2067x\\u2069 \\u200f");
 }
 
 TEST(TerminalText, TabsStayAndLineFeedsWhenAsked) {

@@ -53,7 +53,7 @@ void forEachCodePoint(std::string_view text, F&& f) {
 void appendUtf8(std::string& out, char32_t c);
 /// Whether `c` is a control character: C0, DEL or C1.
 [[nodiscard]] bool isControl(char32_t c);
-/// `text` safe to print on a terminal: control characters and malformed bytes become visible
+/// `text` safe to print on a terminal: control characters, marks that reorder text (U+202E) and malformed bytes become visible
 /// escapes ("\x1b", "\u009b", "\xff"); tabs stay, and line feeds when `lines` (else "\x0a").
 [[nodiscard]] std::string terminalSafe(std::string_view text, bool lines = false);
 
