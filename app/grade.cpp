@@ -7,6 +7,7 @@
 #include "frob/grade/grade_report.hpp"
 #include "frob/grade/gradescope.hpp"
 #include "frob/run/format.hpp"
+#include "frob/run/scratch.hpp"
 #include "frob/run/terminal_text.hpp"
 #include "progress.hpp"
 
@@ -88,8 +89,16 @@ Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const cours
   const bool pages = !a.report.empty() || !a.videos.empty();
   std::error_code ec;
   fs::path dir;
+  course::Scratch films;  // the film's folder unless --videos keeps it: removed when done, and swept when a killed frob left it
   if (run != nullptr && g.compileError.empty() && (pages || !a.prairielearn.empty())) {
-    dir = a.videos.empty() ? fs::temp_directory_path() / ("frob-report-" + std::to_string(::getpid())) : fs::path(a.videos);
+    if (a.videos.empty()) {
+      const fs::path temp = fs::temp_directory_path();
+      course::removeStale(temp, "frob-report");
+      Result<course::Scratch> made = course::Scratch::make(temp, "frob-report");
+      if (!made) return made.status();
+      films = std::move(made.value());
+    }
+    dir = a.videos.empty() ? films.path() : fs::path(a.videos);
     fs::create_directories(dir, ec);
     const std::string stem = (dir / fs::path(run->log.empty() ? "first_failure" : run->log.stem().string())).string();
     course::RunOutputs out{
@@ -112,7 +121,6 @@ Status writeOutputs(const GradeArgs& a, const course::GradeDef& def, const cours
   Status s;
   if (!a.prairielearn.empty()) s = course::writePrairieLearn(g, a.prairielearn, images);
   if (s && !a.report.empty()) s = course::writeHtmlReport(g, media, a.report);
-  if (!dir.empty() && a.videos.empty()) fs::remove_all(dir, ec);
   return s;
 }
 

@@ -68,8 +68,12 @@ TEST(GradeCli, ASubmissionThatFailsStillExitsZeroWithItsScore) {
 TEST(GradeCli, TheReportShowsTheFailingRunInTheViewer) {
   const fs::path dir = assignment("grade_cli_report");
   std::ofstream(dir / "slow.cpp") << driver("0.1");
-  const FrobResult r = runFrob(dir, {"grade", "forward", "slow.cpp", "--report", "r.html"});
+  // A film's folder that a killed frob left (no one holds its lock) is swept, and this one's removed.
+  const fs::path temp = dir / "tmp";
+  fs::create_directories(temp / "frob-report-left");
+  const FrobResult r = runFrob(dir, {"grade", "forward", "slow.cpp", "--report", "r.html"}, FROB_TEST_CACHE_DIR, temp);
   ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::is_empty(temp)) << "a folder was left in " << temp;
   const std::string page = readFile(dir / "r.html");
   EXPECT_NE(page.find("<video controls src=\"data:video/mp4;base64,"), std::string::npos);
   EXPECT_NE(page.find("<iframe class=\"viewer\" sandbox=\"allow-scripts\""), std::string::npos);

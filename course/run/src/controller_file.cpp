@@ -2,10 +2,10 @@
 
 #include "controller_setup.inc"
 #include "frob/base/layout.hpp"
+#include "frob/run/scratch.hpp"
 #include "frob/worlds/fnv.hpp"
 #include "load_error.hpp"
 #include "sandboxed.hpp"
-#include "scratch.hpp"
 
 #include <cxxabi.h>
 #include <dlfcn.h>

@@ -4,11 +4,11 @@
 // drives runs with them.
 
 #include "frob/run/host.hpp"
+#include "frob/run/scratch.hpp"
 #include "frob/run/terminal_text.hpp"
 #include "frob/sandbox/channel.hpp"
 #include "sandboxed.hpp"
 #include "sanitizer_report.hpp"
-#include "scratch.hpp"
 
 #include <poll.h>
 #include <signal.h>

@@ -1,4 +1,4 @@
-#include "scratch.hpp"
+#include "frob/run/scratch.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>
