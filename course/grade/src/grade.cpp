@@ -232,40 +232,57 @@ using RunMaker = std::function<void(const Check& check, const WorldRef& ref, con
 
 // `g`'s checks, each of its runs made by `make` (after `failed`, a reason that stands for every run),
 // then the scores, the leaderboard and the lateness: grading and judging again share it.
+// One check's runs, each made by `make` (or failed for `failed`), and its score.
+CheckGrade scoreCheck(const GradeDef& def, const Check& check, const KeptWorlds& kept, std::map<std::string, Result<worlds::WorldDef>>& loaded,
+                      Grade& g, const RunMaker& make, const std::string& failed) {
+  CheckGrade cg{.name = check.name, .points = check.points, .visibility = check.visibility};
+  const std::vector<std::uint64_t> seeds = seedsOf(check, def.secret);
+  for (const WorldRef& w : worldsOf(check, def.secret, kept, g.submissionHash)) {
+    const std::string key = w.generated ? std::string(toString(*w.generated)) + " " + std::to_string(w.worldSeed) : w.name;
+    auto known = loaded.find(key);
+    if (known == loaded.end()) known = loaded.emplace(key, loadWorldRef(w)).first;
+    const Result<worlds::WorldDef>& world = known->second;
+    for (std::uint64_t seed : seeds) {
+      if (!g.graderFailure.empty()) break;
+      RunGrade& r = cg.runs.emplace_back(
+          RunGrade{.world = w.name, .seed = seed, .generator = w.generated ? format("%s --seed %" PRIu64, toString(*w.generated), w.worldSeed) : ""});
+      if (!failed.empty()) {
+        r.reason = r.kind = failed;
+      } else if (!world) {
+        r.reason = "the world could not be loaded: " + world.error();
+        r.kind = "the world could not be loaded";
+      } else {
+        const auto began = std::chrono::steady_clock::now();
+        make(check, w, world.value(), r, g);
+        r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+      }
+    }
+  }
+  const auto passed = std::count_if(cg.runs.begin(), cg.runs.end(), [](const RunGrade& r) { return r.passed; });
+  cg.score = cg.runs.empty() ? 0.0 : check.points * static_cast<double>(passed) / static_cast<double>(cg.runs.size());
+  return cg;
+}
+
 void scoreChecks(const GradeDef& def, Grade& g, const RunMaker& make, const std::string& failed = {}) {
   // Loaded once per world, not per name: two checks' "hidden world 1" are different draws.
   std::map<std::string, Result<worlds::WorldDef>> loaded;
   const KeptWorlds kept = def.kept.value_or(KeptWorlds{});
-  for (const Check& check : def.rubric.checks) {
-    if (def.visibleOnly && check.visibility != Visibility::Visible) continue;
-    if (!g.graderFailure.empty()) break;  // no grade: nothing more to run
-    CheckGrade cg{.name = check.name, .points = check.points, .visibility = check.visibility};
-    const std::vector<std::uint64_t> seeds = seedsOf(check, def.secret);
-    for (const WorldRef& w : worldsOf(check, def.secret, kept, g.submissionHash)) {
-      const std::string key = w.generated ? std::string(toString(*w.generated)) + " " + std::to_string(w.worldSeed) : w.name;
-      auto known = loaded.find(key);
-      if (known == loaded.end()) known = loaded.emplace(key, loadWorldRef(w)).first;
-      const Result<worlds::WorldDef>& world = known->second;
-      for (std::uint64_t seed : seeds) {
-        if (!g.graderFailure.empty()) break;
-        RunGrade& r = cg.runs.emplace_back(RunGrade{
-            .world = w.name, .seed = seed, .generator = w.generated ? format("%s --seed %" PRIu64, toString(*w.generated), w.worldSeed) : ""});
-        if (!failed.empty()) {
-          r.reason = r.kind = failed;
-        } else if (!world) {
-          r.reason = "the world could not be loaded: " + world.error();
-          r.kind = "the world could not be loaded";
-        } else {
-          const auto began = std::chrono::steady_clock::now();
-          make(check, w, world.value(), r, g);
-          r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-        }
-      }
+  // Every visible check's runs before any other's: whatever a controller could carry from one run to
+  // the next (what the kernel caches, a file's access time) never brings a hidden world into a run
+  // students see. The grades stay in the rubric's order.
+  std::vector<std::optional<CheckGrade>> made(def.rubric.checks.size());
+  for (const bool seen : {true, false}) {
+    for (std::size_t i = 0; i < def.rubric.checks.size(); ++i) {
+      const Check& check = def.rubric.checks[i];
+      if ((check.visibility == Visibility::Visible) != seen || (def.visibleOnly && !seen)) continue;
+      if (!g.graderFailure.empty()) break;  // no grade: nothing more to run
+      made[i] = scoreCheck(def, check, kept, loaded, g, make, failed);
     }
-    const auto passed = std::count_if(cg.runs.begin(), cg.runs.end(), [](const RunGrade& r) { return r.passed; });
-    cg.score = cg.runs.empty() ? 0.0 : check.points * static_cast<double>(passed) / static_cast<double>(cg.runs.size());
-    g.checks.push_back(std::move(cg));
   }
+  for (std::optional<CheckGrade>& c : made) {
+    if (c) g.checks.push_back(std::move(*c));
+  }
+  for (const LeaderboardMetric& m : def.rubric.leaderboard) g.leaderboard.push_back(leaderboardValue(m, g));
   for (const LeaderboardMetric& m : def.rubric.leaderboard) g.leaderboard.push_back(leaderboardValue(m, g));
   // Lateness takes its share of what the checks earned, for each day or part of one.
   if (def.daysLate && *def.daysLate > 0 && def.rubric.latePerDay > 0) {

@@ -3,6 +3,7 @@
 #include "frob/grade/grade.hpp"
 
 #include "frob/run/format.hpp"
+#include "frob/run/host.hpp"
 
 #include <gtest/gtest.h>
 
@@ -143,6 +144,45 @@ FROB_CONTROLLER(talks)
   ASSERT_EQ(g.checks.size(), 4u);
   EXPECT_EQ(g.checks[1].runs.size() + g.checks[2].runs.size() + g.checks[3].runs.size(), 4u);
   EXPECT_EQ(printed, "a run\na run\n");
+}
+
+// The runs students see are made before any hidden one, whatever the rubric's order: nothing a
+// controller leaves behind in a run (what the kernel caches, a file's access time) can carry a
+// hidden world into a visible one. The visible run prints how many hosts had started by then.
+TEST_F(Grading, EveryVisibleRunIsMadeBeforeAnyHiddenOne) {
+  std::ofstream(dir_ / "assignment" / "hidden_first.toml") << R"(title = "Hidden first"
+seconds = 1
+[[check]]
+name = "hidden"
+visibility = "hidden"
+worlds = ["worlds/field.toml"]
+secret_seeds = 1
+collisions = { max = 0 }
+[[check]]
+name = "visible"
+worlds = ["worlds/field.toml"]
+collisions = { max = 0 }
+)";
+  std::ofstream(dir_ / "talks.cpp") << R"(#include <frob/frob.hpp>
+#include <cstdio>
+using namespace frob;
+Behavior<Wheels> talks(const Robot&) {
+  return toBehavior(lift([](double t) { if (t == 0.0) std::printf("a run\n"); return Wheels{0.0, 0.0}; }, time()));
+}
+FROB_CONTROLLER(talks)
+)";
+  Result<Rubric> rubric = loadRubric(dir_ / "assignment" / "hidden_first.toml");
+  ASSERT_TRUE(rubric.ok()) << rubric.error();
+  def_.rubric = rubric.value();
+  const std::uint64_t before = ControllerHost::started();
+  std::uint64_t startedBeforeTheVisibleRun = 0;
+  def_.host.output = [&](std::string_view) { startedBeforeTheVisibleRun = ControllerHost::started() - before; };
+  const Grade g = grade(def_, dir_ / "talks.cpp");
+  ASSERT_EQ(g.compileError, "");
+  ASSERT_EQ(g.checks.size(), 2u);
+  EXPECT_EQ(g.checks[0].name, "hidden");  // reported in the rubric's order
+  EXPECT_EQ(ControllerHost::started() - before, 2u);
+  EXPECT_EQ(startedBeforeTheVisibleRun, 1u) << "a hidden run was made before the visible one";
 }
 
 // A class folder: each .cpp file in it is a submission alone, each subfolder a submission of
