@@ -239,6 +239,11 @@ TEST(ControllerFile, AnObjectPastTheFileLimitIsTheSubmissionsFailure) {
   EXPECT_FALSE(isGraderFailure(c.status())) << c.error() << messages.substr(0, 400);
   EXPECT_EQ(c.error(),
             "could not compile '" + (dir / "big.cpp").string() + "' within the compiler's limits of time, memory and file size (8 MB a file)");
+  // The limit's words in an ordinary error (a line of the source quoted) are no limit.
+  writeFile(dir / "says.cpp", "const char* why = \"File size limit exceeded\"; int x = why;\n");
+  const Result<CompiledController> says = compileControllerFile(dir / "says.cpp", setup, &messages);
+  ASSERT_FALSE(says.ok());
+  EXPECT_EQ(says.error(), "could not compile '" + (dir / "says.cpp").string() + "' (the compiler's messages follow)");
 }
 
 // The compiler reads copies of the files it compiles, not the folder they are in: a file beside a
