@@ -285,15 +285,16 @@ Layer restrictSyscalls(SyscallPolicy policy) {
                      SCMP_SYS(mq_timedsend), SCMP_SYS(mq_timedreceive), SCMP_SYS(mq_notify), SCMP_SYS(mq_getsetattr)}) {
       deny(call);
     }
-    // Nothing that reads or changes which pages of a file the kernel caches, nor watches files or the
-    // machine: a library every host may read would carry notes between hosts, and from one run to the
-    // next. Refused as not implemented. cachestat is 451 on every architecture (Linux 6.5), also where
-    // this libseccomp has no name for it.
+    // Nothing that reads or changes which pages of a file the kernel caches, nor watches files: a
+    // library every host may read would carry notes between hosts, and from one run to the next.
+    // Refused as not implemented. cachestat is 451 on every architecture (Linux 6.5), also where this
+    // libseccomp has no name for it. (Not sysinfo: glibc's qsort reads memory's size through it and
+    // would take garbage for it when refused, sorting differently from one run to the next.)
     int cachestat = ::seccomp_syscall_resolve_name("cachestat");
     if (cachestat == __NR_SCMP_ERROR) cachestat = 451;
     for (int call : {SCMP_SYS(mincore), SCMP_SYS(fadvise64), SCMP_SYS(readahead), cachestat, SCMP_SYS(preadv2), SCMP_SYS(pwritev2),
                      SCMP_SYS(io_setup), SCMP_SYS(io_submit), SCMP_SYS(inotify_init), SCMP_SYS(inotify_init1), SCMP_SYS(inotify_add_watch),
-                     SCMP_SYS(fanotify_init), SCMP_SYS(fanotify_mark), SCMP_SYS(sysinfo)}) {
+                     SCMP_SYS(fanotify_init), SCMP_SYS(fanotify_mark)}) {
       if (rc == 0) rc = ::seccomp_rule_add(ctx, SCMP_ACT_ERRNO(ENOSYS), call, 0);
     }
     for (const std::uint64_t advice : {MADV_COLD, MADV_PAGEOUT}) {  // evicting a file's clean pages from the cache

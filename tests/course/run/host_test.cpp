@@ -279,8 +279,8 @@ TEST(Sandbox, AHostSeesNothingOfAnotherProcessesSchedulingAndTakesNoLock) {
   EXPECT_EQ(o.lastWheels, (Wheels{0.1, 0.0}));
 }
 
-// Nor see or change which pages of a library every host may read the kernel caches, watch files,
-// or read the machine's counters: notes between hosts (robots, runs, students) again. The turn's
+// Nor see or change which pages of a library every host may read the kernel caches, or watch
+// files: notes between hosts (robots, runs, students) again. The turn's
 // bits name the calls the kernel carried out (sees_the_page_cache.cpp).
 TEST(Sandbox, AHostSeesNothingOfThePageCacheNorWatchesFiles) {
   const Outcome o = runHostile({"sees_the_page_cache"});

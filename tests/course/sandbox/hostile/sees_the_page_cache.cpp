@@ -1,5 +1,5 @@
-// Tries every way to see or change which pages of a library the kernel caches, to watch files, or to
-// read the machine's counters: two hosts (robots, runs or students) would pass notes through them.
+// Tries every way to see or change which pages of a library the kernel caches, or to watch files:
+// two hosts (robots, runs or students) would pass notes through them.
 // Drives at 0.1 m/s, turning 0.001 rad/s times the bits of the calls the kernel carried out rather
 // than refused as not implemented (bit k: the k-th call below).
 #include "misbehave.hpp"
@@ -9,7 +9,6 @@
 #include <sys/inotify.h>
 #include <sys/mman.h>
 #include <sys/syscall.h>
-#include <sys/sysinfo.h>
 #include <sys/uio.h>
 #include <unistd.h>
 
@@ -30,7 +29,6 @@ int notRefused() {
   } range{0, 4096};
   std::uint64_t stats[8] = {};
   aio_context_t aio = 0;
-  struct sysinfo machine {};
   int bits = 0, k = 0;
   const auto attempt = [&](long result) {  // errno read at once, before the next call
     if (!(result == -1 && errno == ENOSYS)) bits |= 1 << k;
@@ -48,7 +46,6 @@ int notRefused() {
   attempt(::syscall(SYS_io_setup, 1, &aio));
   attempt(::syscall(SYS_inotify_init1, 0));
   attempt(::syscall(SYS_fanotify_init, 0, 0));
-  attempt(::syscall(SYS_sysinfo, &machine));
   attempt(::syscall(SYS_madvise, page, 4096, MADV_PAGEOUT));
   attempt(::syscall(SYS_madvise, page, 4096, MADV_COLD));
   ::munmap(page, 4096);
