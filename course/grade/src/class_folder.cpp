@@ -80,10 +80,10 @@ std::string reasonsOf(const Grade& g) {
 }
 
 std::vector<std::string> studentNames(const std::vector<fs::path>& submissions) {
-  const auto usable = [](std::string name) {
-    for (char& c : name) {
-      if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '_';  // a control character would act on a terminal
-    }
+  const auto usable = [](const std::string& file) {
+    std::string name;  // a control character, which would act on a terminal, as its escape: a\x1b
+    for (const char c : file)
+      name += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? format("\\x%02x", static_cast<unsigned char>(c)) : std::string(1, c);
     return name.empty() || name.front() == '.' || reservedNames().contains(name) ? "_" + name : name;
   };
   // A folder is named by its name; a file by its stem, or its whole name where another submission

@@ -13,9 +13,10 @@ using support::chromium, support::Ran, support::requireChromium;
 TEST(ClassFolder, StudentsAreNamedByFileOrFolderEachOnce) {
   EXPECT_EQ(studentNames({"class/alice.cpp", "class/alice", "class/bob.cpp", "class/.hidden.cpp", "class/gradebook.csv.cpp", "class/summary.html"}),
             (std::vector<std::string>{"alice.cpp", "alice", "bob", "_.hidden", "_gradebook.csv", "_summary.html"}));
-  // A file whose stem is a folder's whole name; names that only differ by what becomes '_'.
-  EXPECT_EQ(studentNames({"class/dana.v2.cpp", "class/dana.v2", "class/e\x1b[2Jve.cpp", "class/e_[2Jve.cpp", "class/e\x01[2Jve"}),
-            (std::vector<std::string>{"dana.v2.cpp", "dana.v2", "e_[2Jve.cpp", "e_[2Jve.cpp~2", "e_[2Jve"}));
+  // A file whose stem is a folder's whole name; control characters as their escapes, so that a
+  // name that holds one never meets another student's; a name still shared takes a number.
+  EXPECT_EQ(studentNames({"class/dana.v2.cpp", "class/dana.v2", "class/e\x1b[2Jve.cpp", "class/e_[2Jve.cpp", "class/b\\x01.cpp", "class/b\x01.cpp"}),
+            (std::vector<std::string>{"dana.v2.cpp", "dana.v2", "e\\x1b[2Jve", "e_[2Jve", "b\\x01.cpp", "b\\x01.cpp~2"}));
 }
 
 TEST(ClassFolder, TheResultTellsACompileAHangAndACrashApart) {

@@ -30,8 +30,8 @@ namespace frob::course {
 
 /// The name each submission's student goes by, which names their row and folder, one per student:
 /// the file's stem or the folder's name; a file's whole name where another submission would have
-/// the same (alice.cpp beside alice/); a number after a name still shared (~2); '_' in place of a
-/// control character, and before a name that would be hidden or one of the class folder's own files.
+/// the same (alice.cpp beside alice/); a number after a name still shared (~2); a control character
+/// as its escape (\x1b), and '_' before a name that would be hidden or one of the class folder's own files.
 [[nodiscard]] std::vector<std::string> studentNames(const std::vector<std::filesystem::path>& submissions);
 
 /// A student of `dir`'s gradebook and their submission as graded, found by `path`: their submission
