@@ -84,6 +84,16 @@ Behavior<Wheels> crash(const Robot&) {
 FROB_CONTROLLER(crash)
 )";
 
+// Stands still, printing "a run" at its first step.
+constexpr const char* kTalks = R"(#include <frob/frob.hpp>
+#include <cstdio>
+using namespace frob;
+Behavior<Wheels> talks(const Robot&) {
+  return toBehavior(lift([](double t) { if (t == 0.0) std::printf("a run\n"); return Wheels{0.0, 0.0}; }, time()));
+}
+FROB_CONTROLLER(talks)
+)";
+
 class Grading : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -129,14 +139,7 @@ TEST_F(Grading, AGoodSubmissionGetsFullMarks) {
 // could print what it senses in a hidden world. Here it prints once a run: the two runs of the one
 // visible check, not those of the hidden and after-the-due-date ones (four more).
 TEST_F(Grading, WhatAControllerPrintsInAHiddenRunIsShownNowhere) {
-  std::ofstream(dir_ / "talks.cpp") << R"(#include <frob/frob.hpp>
-#include <cstdio>
-using namespace frob;
-Behavior<Wheels> talks(const Robot&) {
-  return toBehavior(lift([](double t) { if (t == 0.0) std::printf("a run\n"); return Wheels{0.0, 0.0}; }, time()));
-}
-FROB_CONTROLLER(talks)
-)";
+  std::ofstream(dir_ / "talks.cpp") << kTalks;
   std::string printed;
   def_.host.output = [&](std::string_view text) { printed += text; };
   const Grade g = grade(def_, dir_ / "talks.cpp");
@@ -148,7 +151,7 @@ FROB_CONTROLLER(talks)
 
 // The runs students see are made before any hidden one, whatever the rubric's order: nothing a
 // controller leaves behind in a run (what the kernel caches, a file's access time) can carry a
-// hidden world into a visible one. The visible run prints how many hosts had started by then.
+// hidden world into a visible one. When the visible run prints, one host has started, not two.
 TEST_F(Grading, EveryVisibleRunIsMadeBeforeAnyHiddenOne) {
   std::ofstream(dir_ / "assignment" / "hidden_first.toml") << R"(title = "Hidden first"
 seconds = 1
@@ -163,14 +166,7 @@ name = "visible"
 worlds = ["worlds/field.toml"]
 collisions = { max = 0 }
 )";
-  std::ofstream(dir_ / "talks.cpp") << R"(#include <frob/frob.hpp>
-#include <cstdio>
-using namespace frob;
-Behavior<Wheels> talks(const Robot&) {
-  return toBehavior(lift([](double t) { if (t == 0.0) std::printf("a run\n"); return Wheels{0.0, 0.0}; }, time()));
-}
-FROB_CONTROLLER(talks)
-)";
+  std::ofstream(dir_ / "talks.cpp") << kTalks;
   Result<Rubric> rubric = loadRubric(dir_ / "assignment" / "hidden_first.toml");
   ASSERT_TRUE(rubric.ok()) << rubric.error();
   def_.rubric = rubric.value();
