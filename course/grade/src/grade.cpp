@@ -283,7 +283,6 @@ void scoreChecks(const GradeDef& def, Grade& g, const RunMaker& make, const std:
     if (c) g.checks.push_back(std::move(*c));
   }
   for (const LeaderboardMetric& m : def.rubric.leaderboard) g.leaderboard.push_back(leaderboardValue(m, g));
-  for (const LeaderboardMetric& m : def.rubric.leaderboard) g.leaderboard.push_back(leaderboardValue(m, g));
   // Lateness takes its share of what the checks earned, for each day or part of one.
   if (def.daysLate && *def.daysLate > 0 && def.rubric.latePerDay > 0) {
     const double days = std::ceil(*def.daysLate - 1e-9), share = std::min(def.rubric.lateMost, def.rubric.latePerDay * days);

@@ -62,6 +62,12 @@ visibility = "hidden"
 seconds = 5
 generated = { kind = "rooms", seeds = [3], secret = 1 }
 collisions = { max = 1000 }
+
+[[leaderboard]]
+name = "Seconds to the goal"
+check = "reaches the goal"
+criterion = "goal"
+measure = "time"
 )";
 
 // Drives ahead until odometry says x > 4.8, then returns true (and the robot stops).
@@ -133,6 +139,11 @@ TEST_F(Grading, AGoodSubmissionGetsFullMarks) {
   EXPECT_EQ(g.checks[3].runs[1].world, "generated rooms, hidden world 1");
   EXPECT_DOUBLE_EQ(g.score(), 8.0);
   EXPECT_DOUBLE_EQ(g.maxScore(), 8.0);
+  // One place on the board per metric: the mean of the two runs' times.
+  ASSERT_EQ(g.leaderboard.size(), 1u);
+  EXPECT_EQ(g.leaderboard[0].name, "Seconds to the goal");
+  ASSERT_TRUE(g.leaderboard[0].value);
+  EXPECT_NEAR(*g.leaderboard[0].value, 9.55, 0.1);  // the margins above print each to a tenth
 }
 
 // What a controller prints reaches frob's output in the runs students see, and in no other: it
