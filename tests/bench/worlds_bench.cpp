@@ -104,6 +104,21 @@ BENCHMARK(Ours)
     ->UseRealTime()
     ->Unit(benchmark::kMicrosecond);
 
+// A robot standing still in the maze, as one is once its task has returned (half the steps of a
+// graded class came after it): no robot moved, so its cones are not cast again.
+void AtRest(benchmark::State& state) {
+  Simulation sim(mazeWith(1, 16, 5), {.dt = kDt});
+  const std::vector<Wheels> still(1);
+  auto step = [&] {
+    sim.sense();
+    sim.step(still);
+  };
+  for (int k = 0; k < kWarmUpSteps; ++k) step();
+  for (auto _ : state) step();
+  state.counters["rtf"] = benchmark::Counter(kDt, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(AtRest)->UseRealTime()->Unit(benchmark::kMicrosecond);
+
 // A 100 x 100 m hall with a 10 x 10 grid of 2 x 2 m blocks, and `robots` robots between them.
 WorldDef hallWith(int robots) {
   WorldDef w = maze();

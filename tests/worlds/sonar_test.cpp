@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace frob::worlds {
 namespace {
@@ -219,6 +220,70 @@ TEST(Sonar, TheDiagonalSonarsNeverHearAWallAlongside) {
   EXPECT_LT(s[5], 6.5);
   EXPECT_EQ(s[2], 6.5);
   EXPECT_EQ(s[6], 6.5);
+}
+
+// A robot that has not moved reads again what its cones met before, without casting them (while
+// no robot moves): a robot that turns on the spot, or one that others come near, must not.
+
+// Turning on the spot keeps the centre to the bit and changes what the cones meet. Beside a robot
+// driving far away (every cone cast anew each step), readings are those beside one standing still.
+TEST(Sonar, ARobotTurningOnTheSpotHearsAsIfEveryConeWereCastAnew) {
+  const auto readings = [](double farSpeed) {
+    Simulation sim(ideal(R"(
+      size = [30, 6]
+      seed = 3
+      [[wall]]
+      from = [0.5, 0]
+      to = [4, 6]
+      [[robot]]
+      start = [2, 2]
+      sonar = { noise = 0 }
+      [[robot]]
+      start = [25, 3]
+      sonar = { noise = 0 }
+    )"));
+    std::vector<std::vector<double>> out;
+    for (const double turn : {0.0, 0.8, 0.0, -0.5, 0.0}) {
+      for (int k = 0; k < 60; ++k) {
+        sim.sense();
+        out.push_back(sim.frame(0).sonar);
+        sim.step(std::vector<Wheels>{{0.0, turn}, {farSpeed, 0.0}});
+      }
+    }
+    EXPECT_EQ(sim.truePose(0).position, Point2(2.0f, 2.0f)) << "the robot left its spot: the test no longer turns on the spot";
+    return out;
+  };
+  const std::vector<std::vector<double>> still = readings(0.0), cast = readings(0.3);
+  ASSERT_EQ(still.size(), cast.size());
+  for (std::size_t k = 0; k < still.size(); ++k) {
+    ASSERT_EQ(still[k], cast[k]) << "step " << k;
+  }
+  EXPECT_NE(still.front(), still.back()) << "the turns changed nothing the sonars hear: the test proves nothing";
+}
+
+// Another robot driving up to one that stands still is heard coming.
+TEST(Sonar, AStillRobotHearsAnotherComeNear) {
+  Simulation sim(ideal(R"(
+    size = [12, 4]
+    enclosed = false
+    [[robot]]
+    start = [1, 2]
+    radius = 0.2
+    sonar = { angles_deg = [0], noise = 0 }
+    [[robot]]
+    start = [9, 2]
+    heading_deg = 180
+    radius = 0.3
+    sonar = { count = 0 }
+  )"));
+  for (int k = 0; k < 3000 && sim.truePose(1).position.x() > 3.0; ++k) {
+    sim.sense();
+    sim.step(std::vector<Wheels>{{}, {0.5, 0.0}});
+  }
+  sim.step(std::vector<Wheels>{{}, {}});  // one more step, so that no robot is where it was sensed last
+  sim.sense();
+  EXPECT_LT(sim.truePose(1).position.x(), 3.0);
+  EXPECT_NEAR(sim.frame(0).sonar[0], (sim.truePose(1).position.x() - 0.3) - 1.2, 1e-5);  // its near side
 }
 
 }  // namespace

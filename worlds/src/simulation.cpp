@@ -9,7 +9,9 @@
 #include <box2d/box2d.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <utility>
 
@@ -54,6 +56,9 @@ struct RobotState {
   std::size_t invalid = 0;
   detail::Rng sonarRng, odometryRng, slipRng;
   SensorFrame frame;
+  // The sonars' last echoes before noise, and the heading they were cast from (NaN: none yet).
+  std::vector<double> echoes;
+  double echoedHeading = NAN;
 };
 
 // A touching contact and the bumper it pressed.
@@ -61,6 +66,9 @@ struct Press {
   b2Contact* contact;
   int robot, bumper;
 };
+
+// Equal to the bit: -0 is not 0, and a NaN may equal itself.
+bool sameBits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 
 Pose2 poseOf(const b2Body* body) {
   const b2Vec2 p = body->GetPosition();
@@ -84,6 +92,7 @@ struct Simulation::Impl : b2ContactListener {
   std::int64_t steps = 0;
   std::vector<Point2> centres;
   std::vector<double> radii;
+  bool robotsMoved = true;                               // some robot's centre differs from the last sense()'s: every echo is cast anew
   double reach = 0.0;                                    // the farthest any sonar hears from its robot's centre: its range plus the rim
   std::vector<std::shared_ptr<const Rays>> rayPatterns;  // the distinct ones
   // The last step's dead reckoning is still to do. Each robot's is done as it is next sensed, in
@@ -289,21 +298,26 @@ struct Simulation::Impl : b2ContactListener {
     // The body has not moved since its odometry was last brought up to date.
     const Pose2& pose = r.previous;
     const double c = r.previousCos, sn = r.previousSin;
-    const Rays& rays = *r.rays;
-    std::vector<double>&worldX = scratch.worldX, &worldY = scratch.worldY;
-    worldX.resize(rays.x.size()), worldY.resize(rays.y.size());
-    for (std::size_t k = 0; k < rays.x.size(); ++k) {  // every ray at once: the compiler vectorises it
-      worldX[k] = c * rays.x[k] - sn * rays.y[k];
-      worldY[k] = sn * rays.x[k] + c * rays.y[k];
-    }
-    scratch.origins.clear();
-    for (const Vec2& o : r.sonarOffsets) scratch.origins.emplace_back(pose.position + Vec2(c * o.x() - sn * o.y(), sn * o.x() + c * o.y()));
-    if (!scratch.origins.empty()) {
+    if (!robotsMoved && sameBits(pose.heading, r.echoedHeading)) {
+      // No robot moved and this one has not turned: the cones would meet what they met before.
+      std::copy(r.echoes.begin(), r.echoes.end(), f.sonar.begin());
+    } else if (!r.sonarOffsets.empty()) {
+      const Rays& rays = *r.rays;
+      std::vector<double>&worldX = scratch.worldX, &worldY = scratch.worldY;
+      worldX.resize(rays.x.size()), worldY.resize(rays.y.size());
+      for (std::size_t k = 0; k < rays.x.size(); ++k) {  // every ray at once: the compiler vectorises it
+        worldX[k] = c * rays.x[k] - sn * rays.y[k];
+        worldY[k] = sn * rays.x[k] + c * rays.y[k];
+      }
+      scratch.origins.clear();
+      for (const Vec2& o : r.sonarOffsets) scratch.origins.emplace_back(pose.position + Vec2(c * o.x() - sn * o.y(), sn * o.x() + c * o.y()));
       // Rays run from the cone's axis outwards, each only as far as the nearest echo so far: a
       // surface beyond it cannot change the reading, and the shorter walk saves most of the work.
       // A hit whose cosIncidence is below the cutoff is reflected away and does not echo.
       caster.gather(pose.position, r.def.radius, s.maxRange, static_cast<int>(i), scratch.near);
       caster.castCones(scratch.origins, worldX, worldY, rays.spread, s.maxRange, r.cosCutoff, scratch.near, f.sonar);
+      r.echoes.assign(f.sonar.begin(), f.sonar.end());
+      r.echoedHeading = pose.heading;
     }
     for (double& reading : f.sonar) {
       const double noise = r.sonarRng.gaussian();  // drawn for every sonar so the stream never depends on hits
@@ -377,14 +391,17 @@ Simulation& Simulation::operator=(Simulation&&) noexcept = default;
 
 void Simulation::sense() {
   Impl& s = *impl_;
+  s.robotsMoved = s.centres.size() != s.robots.size();
   s.centres.resize(s.robots.size());
   s.radii.resize(s.robots.size());
   for (std::size_t i = 0; i < s.robots.size(); ++i) {
     const b2Vec2 p = s.robots[i].body->GetPosition();
-    s.centres[i] = Point2(p.x, p.y);
+    const Point2 centre(p.x, p.y);
+    s.robotsMoved = s.robotsMoved || !sameBits(centre.x(), s.centres[i].x()) || !sameBits(centre.y(), s.centres[i].y());
+    s.centres[i] = centre;
     s.radii[i] = s.robots[i].def.radius;
   }
-  s.caster.setRobots(s.centres, s.radii, s.reach);
+  if (s.robotsMoved) s.caster.setRobots(s.centres, s.radii, s.reach);
   // Ray casting is read-only on shared state and each robot has its own random stream, so robots
   // may be sensed on any thread in any order with bit-identical results.
   const auto keysNow = std::lower_bound(s.keys.begin(), s.keys.end(), s.steps, [](const auto& k, std::int64_t step) { return k.first < step; });
