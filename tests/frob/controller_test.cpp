@@ -57,6 +57,27 @@ TEST(RunningController, FailsOnNonFiniteWheelsAndStopsFromThenOn) {
   EXPECT_EQ(c.step(clock.advance()).forward, 0.0);
 }
 
+// Finished means "a stop for ever" (the host is then asked no more): a controller function's task
+// that returned, never a behavior that runs a task of its own and goes on after it.
+TEST(RunningController, IsFinishedOnceItsTaskHasReturnedAndOnlyThen) {
+  const auto finishedAt = [](const Controller& make) {
+    Robot r = scripted();
+    RunningController c(make, r);
+    Clock clock(0.25);
+    std::vector<bool> finished;
+    for (int i = 0; i < 7; ++i) {
+      (void)c.step(i == 0 ? clock.now() : clock.advance());
+      finished.push_back(c.finished());
+    }
+    return finished;
+  };
+  // The range is under 1 m from t = 1.25 (the sixth step): the task ends there.
+  EXPECT_EQ(finishedAt(makeController(followTask)), (std::vector<bool>{false, false, false, false, false, true, true}));
+  EXPECT_EQ(finishedAt(makeController(follow)), std::vector<bool>(7, false));
+  const auto goesOn = [](const Robot& r) { return runTask(TaskState(r), followTask(), Behavior<Wheels>(Wheels{0.5, 0.0})); };
+  EXPECT_EQ(finishedAt(goesOn), std::vector<bool>(7, false));
+}
+
 TEST(RunningController, ABuildThatThrowsOrAnAllocationThatFailsIsAReason) {
   Robot r = scripted();
   RunningController bad([](const Robot&) -> Behavior<Wheels> { throw std::runtime_error("no sonar"); }, r);

@@ -27,7 +27,8 @@ class HostDriver final : public worlds::ControllerDriver {
         pictures_(pictures),
         timelines_(robots_.size()),
         budgets_(robots_.size()),
-        stopped_(robots_.size(), false) {
+        stopped_(robots_.size(), false),
+        finished_(robots_.size(), false) {
     const auto n = static_cast<std::uint32_t>(robots_.size());
     FROB_ASSERT(!host.driving, "a controller host drives one run");
     FROB_ASSERT(modules.size() == 1 || modules.size() == n, "give one module per robot, or one for all");
@@ -60,7 +61,7 @@ class HostDriver final : public worlds::ControllerDriver {
 
   // Hands the host its robots' frames and asks it for their wheels.
   void send(const Instant& now) {
-    if (!lost_ || dead_) return;
+    if (!lost_ || dead_ || idle()) return;
     sandbox::Header& h = host_.header();
     for (std::uint32_t k = 0; k < robots_.size(); ++k) {
       sandbox::Writer w(host_.channel.frameArea(k));
@@ -77,6 +78,13 @@ class HostDriver final : public worlds::ControllerDriver {
   void receive(const Instant& now, std::span<Wheels> wheels, std::span<Picture> pictures, std::vector<std::pair<std::size_t, std::string>>& failed) {
     if (!lost_) return fail(failed, lost_.error());
     if (dead_) return;
+    // A robot whose task returned stands still and shows nothing, as its host would say from then on.
+    for (std::uint32_t k = 0; k < robots_.size(); ++k) {
+      if (!finished_[k]) continue;
+      wheels[robots_[k]] = Wheels{};
+      if (pictures_) pictures[robots_[k]] = Picture{};
+    }
+    if (idle()) return;
     const auto at = [&] {  // formatted only for a failure: a step's budget is a few microseconds
       char text[48];
       std::snprintf(text, sizeof text, " at t = %.2f s", now.time);
@@ -85,7 +93,7 @@ class HostDriver final : public worlds::ControllerDriver {
     if (Status s = host_.await(++host_.sequence, host_.def.stepSeconds, false); !s) return fail(failed, s.error() + at());
     if (Status s = host_.refusal(); !s) return fail(failed, s.error() + at());
     for (std::uint32_t k = 0; k < robots_.size(); ++k) {
-      if (stopped_[k]) continue;
+      if (stopped_[k] || finished_[k]) continue;
       const std::uint32_t i = robots_[k];
       if (Status s = readReply(k, wheels[i], pictures[i], failed); !s) {
         stopped_[k] = true;
@@ -103,6 +111,14 @@ class HostDriver final : public worlds::ControllerDriver {
   }
 
  private:
+  // Every robot is stopped or done: the host has nothing left to think about.
+  [[nodiscard]] bool idle() const {
+    for (std::size_t k = 0; k < robots_.size(); ++k) {
+      if (!stopped_[k] && !finished_[k]) return false;
+    }
+    return true;
+  }
+
   // The host is gone or lost: the robot it claims it was driving fails, the others stop.
   void fail(std::vector<std::pair<std::size_t, std::string>>& failed, const std::string& why) {
     const std::uint32_t k = host_.header().robot;
@@ -130,6 +146,9 @@ class HostDriver final : public worlds::ControllerDriver {
         timeline.end(t.id, t.end, t.how, std::move(t.detail));
       }
     }
+    // Its task returned: the host is asked no more for this robot. Claimed falsely, it only stops
+    // its own robot, as an honest one that is done would.
+    if (reply_.state == sandbox::StepReply::State::Done) finished_[k] = true;
     if (pictures_ && reply_.hasPicture) picture = std::move(reply_.picture);
     // Only the controller's own word stops it.
     wheels = reply_.state == sandbox::StepReply::State::Running && isFinite(reply_.wheels) ? reply_.wheels : Wheels{};
@@ -144,7 +163,8 @@ class HostDriver final : public worlds::ControllerDriver {
   std::vector<Timeline> timelines_;  // each numbers its tasks as the host's does: the budget checks the order
   std::vector<sandbox::RunBudget> budgets_;
   std::vector<bool> stopped_;
-  Status lost_;  // why the host could not build the controllers, reported at the first step
+  std::vector<bool> finished_;  // its task returned: it stands still, and its host is not asked
+  Status lost_;                 // why the host could not build the controllers, reported at the first step
   bool dead_ = false;
   std::int64_t steps_ = 0;
   std::vector<std::byte> copy_;

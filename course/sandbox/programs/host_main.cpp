@@ -117,12 +117,16 @@ void step(const Channel& channel, std::vector<Driven>& driven, const Instant& no
     reply.wheels = d.controller->step(now, &reply.picture);
     const bool failed = d.controller->failed() && !d.reported;
     d.reported = d.controller->failed();
-    reply.state = failed ? StepReply::State::FailedNow : wasFailed ? StepReply::State::FailedBefore : StepReply::State::Running;
     reply.failure = failed ? d.controller->failure() : std::string();
     // At most a step's worth of records; the rest go with the next reply.
     const std::size_t sent = std::min<std::size_t>(d.records.size(), kRecordsPerStep);
     reply.records.assign(d.records.begin(), d.records.begin() + static_cast<std::ptrdiff_t>(sent));
     d.records.erase(d.records.begin(), d.records.begin() + static_cast<std::ptrdiff_t>(sent));
+    const bool done = d.controller->finished() && d.records.empty();
+    reply.state = failed      ? StepReply::State::FailedNow
+                  : wasFailed ? StepReply::State::FailedBefore
+                  : done      ? StepReply::State::Done
+                              : StepReply::State::Running;
     reply.hasPicture = true;
     writeFramed(channel.replyArea(i), reply);  // a reply too large for its area is cut: the trusted side reports it
   }

@@ -186,7 +186,7 @@ void write(Writer& w, const StepReply& reply) {
 
 bool read(Reader& r, StepReply& reply) {
   if (!r.get(reply.state)) return false;
-  if (reply.state > StepReply::State::FailedBefore) return r.fail("a controller state of no known kind");
+  if (reply.state > StepReply::State::Done) return r.fail("a controller state of no known kind");
   if (!r.get(reply.wheels.forward) || !r.get(reply.wheels.turn)) return false;
   if (reply.state == StepReply::State::FailedNow && !r.get(reply.failure, kMessageBytes, "a failure")) return false;
   if (!readList(r, reply.records, kRecordsPerStep, "task starts and ends in one step", [&](TaskRecord& t) { return read(r, t); })) return false;

@@ -59,6 +59,8 @@ class RunningController {
   Wheels step(const Instant& now, Picture* picture = nullptr);
   /// True once it has failed.
   [[nodiscard]] bool failed() const { return !behavior_; }
+  /// True once its task has returned: it commands a stop from then on, whatever the frames.
+  [[nodiscard]] bool finished() const { return behavior_ && robot_.debugChannel()->finished(); }
   /// Why it failed, e.g. "the controller commanded non-finite wheels ... at t = 1.000 s"; "" while it runs.
   [[nodiscard]] const std::string& failure() const { return failure_; }
   /// The robot it drives (its debug channel holds the task timeline).

@@ -74,6 +74,24 @@ TEST(Sandbox, AWellBehavedControllerDrivesBitIdenticallyInAndOutOfTheSandbox) {
   EXPECT_EQ(there.timeline(0).current(), here.timeline(0).current());
 }
 
+// A controller whose task has returned stands still for ever, so its host is asked no more: a host
+// killed then is never missed, and the run is bit-identical to one that samples it at every step.
+TEST(Sandbox, AControllerWhoseTaskReturnedIsAskedNoMore) {
+  const worlds::WorldDef world = *worlds::loadReferenceWorld("empty");
+  const fs::path visit = testing::exampleModule("04_drive_to");  // its task returns at 20.34 s
+  worlds::Run here(world, {}, {inProcess(visit)}, {.keepSteps = false});
+  here.runUntil(30.0);
+  std::shared_ptr<ControllerHost> host = startHost({visit});
+  ASSERT_NE(host, nullptr);
+  worlds::Run there(world, {}, host->driver({0}, true), {.keepSteps = false});
+  there.runUntil(25.0);
+  ASSERT_EQ(there.timeline(0).current(), "");
+  ASSERT_EQ(::kill(host->processId(), SIGKILL), 0);
+  there.runUntil(30.0);
+  EXPECT_TRUE(there.failures().empty()) << there.failures()[0].message;
+  EXPECT_EQ(there.recorder().trajectoryHash(), here.recorder().trajectoryHash());
+}
+
 // A 4 x 3 m room with one robot, or two.
 worlds::WorldDef room(int robots = 1) {
   std::string text = "size = [4.0, 3.0]\nseed = 7\n[[robot]]\nname = \"ada\"\nstart = [1.0, 1.0]\n";
@@ -414,6 +432,13 @@ TEST(Sandbox, TheHeaderReadsTheSameInEveryKindOfRun) {
   EXPECT_GT(seen[0].forward, 0.0) << "it could not read the header, so this proves nothing";
   EXPECT_EQ(seen[1], seen[0]);
   EXPECT_EQ(seen[2], seen[0]);
+}
+
+// Saying its task returned, and then driving on, only stops the robot: it is not asked again.
+TEST(Sandbox, AHostThatSaysItIsDoneStandsStillWhateverItSaysNext) {
+  const Outcome o = runHostile({"claims_done"});
+  EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
+  EXPECT_EQ(o.lastWheels, (Wheels{}));
 }
 
 TEST(Sandbox, ThreadsAreAllowed) {

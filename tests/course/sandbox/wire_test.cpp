@@ -118,7 +118,7 @@ TEST(Wire, AReplyPastACapOfAStepFailsWithTheCapNamed) {
   std::memcpy(tooLong.data(), &past, 4);
   EXPECT_EQ(readForged(tooLong), "a reply longer than its area");
   std::vector<std::byte> badState = forged(1, 1);
-  badState[4] = std::byte{7};
+  badState[4] = std::byte{4};  // one past Done, the last
   EXPECT_EQ(readForged(badState), "a controller state of no known kind");
 }
 

@@ -21,7 +21,7 @@
 namespace frob::sandbox {
 
 inline constexpr std::uint32_t kMagic = 0x424f5246;  // "FROB"
-inline constexpr std::uint32_t kVersion = 3;
+inline constexpr std::uint32_t kVersion = 4;         // 4: a reply may say Done
 /// How long the host spins on the request before it sleeps: the same in every kind of run (it
 /// yields the core meanwhile), so that nothing a controller can read tells one kind from another.
 inline constexpr std::uint64_t kHostSpinNanoseconds = 50'000;

@@ -113,7 +113,8 @@ struct BuildRequest {
 
 /// One robot's answer to a Step.
 struct StepReply {
-  enum class State : std::uint8_t { Running, FailedNow, FailedBefore };
+  /// Done: its task returned and every record has been sent; it stands still from now on, unasked.
+  enum class State : std::uint8_t { Running, FailedNow, FailedBefore, Done };
   State state = State::Running;
   Wheels wheels;
   std::string failure;              ///< FailedNow: why
