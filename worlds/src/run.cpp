@@ -36,6 +36,7 @@ class InProcessDriver final : public ControllerDriver {
   }
 
   Timeline& timeline(std::size_t i) override { return controllers_.at(i).robot().debugChannel()->timeline(); }
+  bool finished(std::size_t i) const override { return controllers_.at(i).finished(); }
 
  private:
   std::vector<RunningController> controllers_;

@@ -64,6 +64,7 @@ class ForkDriver final : public worlds::ControllerDriver {
     controllers_->decide(now, wheels, pictures, failed);
   }
   Timeline& timeline(std::size_t i) override { return controllers_->timeline(i); }
+  bool finished(std::size_t i) const override { return controllers_->finished(i); }
 
  private:
   const ForkPoint& fork_;

@@ -104,13 +104,17 @@ class HostDriver final : public worlds::ControllerDriver {
     if (++steps_ % 64 == 0) host_.drainOutput();  // a student's prints appear as the run goes
   }
 
-  Timeline& timeline(std::size_t i) override {
-    const auto k = std::find(robots_.begin(), robots_.end(), i);
-    FROB_ASSERT(k != robots_.end(), "this host does not drive that robot");
-    return timelines_[static_cast<std::size_t>(k - robots_.begin())];
-  }
+  Timeline& timeline(std::size_t i) override { return timelines_[indexOf(i)]; }
+  bool finished(std::size_t i) const override { return finished_[indexOf(i)]; }
 
  private:
+  // Robot `i` of the run as this host numbers it.
+  [[nodiscard]] std::size_t indexOf(std::size_t i) const {
+    const auto k = std::find(robots_.begin(), robots_.end(), i);
+    FROB_ASSERT(k != robots_.end(), "this host does not drive that robot");
+    return static_cast<std::size_t>(k - robots_.begin());
+  }
+
   // Every robot is stopped or done: the host has nothing left to think about.
   [[nodiscard]] bool idle() const {
     for (std::size_t k = 0; k < robots_.size(); ++k) {
@@ -184,6 +188,7 @@ class PerRobotDriver final : public worlds::ControllerDriver {
   }
 
   Timeline& timeline(std::size_t i) override { return drivers_.at(i)->timeline(i); }
+  bool finished(std::size_t i) const override { return drivers_.at(i)->finished(i); }
 
  private:
   std::vector<std::unique_ptr<HostDriver>> drivers_;

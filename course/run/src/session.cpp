@@ -100,6 +100,7 @@ struct RobotWatch {
   RobotSummary summary;
   std::deque<TaskRecord> lastEnded;  // the newest kLastTasks ended tasks
   std::vector<TaskRecord> all;       // every task, when a timeline or page is written
+  std::optional<double> returnedAt;  // when a task at the top last returned
   std::optional<Point2> previous;    // last true position
 };
 
@@ -267,12 +268,14 @@ Result<Summary> runSession(const RunDef& def) {
       for (TaskRecord& ended : timeline.drainEnded()) {
         diagnosis.taskEnded(i, ended);
         if (recorder) recorder->taskEnded(i, ended, sim.time());
-        // The top task returning with nothing left running: this controller is done.
-        if (ended.parent < 0 && ended.how == TaskEnd::Returned && timeline.running().empty()) w.summary.finishedAt = ended.end;
+        if (ended.parent < 0 && ended.how == TaskEnd::Returned) w.returnedAt = ended.end;
         if (allTasks) w.all.push_back(ended);
         w.lastEnded.push_back(std::move(ended));
         if (w.lastEnded.size() > kLastTasks) w.lastEnded.pop_front();
       }
+      // Done (its task returned, a stop for ever): not merely a task at the top that returned, as
+      // in a behavior that runs a task and then goes on.
+      if (!w.summary.finishedAt && run.finished(i)) w.summary.finishedAt = w.returnedAt.value_or(rec.time);
       if (trace) trace->row(rec.time, i, r, timeline.current());
       allFinished = allFinished && w.summary.finishedAt.has_value();
     }

@@ -68,6 +68,15 @@ TEST(Session, EndsWhenTheControllerTaskReturns) {
   EXPECT_EQ(r.lastTasks[0].how, TaskEnd::Returned);
 }
 
+// A behavior that runs a task and drives on after it is never done: its run goes the whole time.
+TEST(Session, ABehaviorThatGoesOnAfterItsTaskRunsTheWholeTime) {
+  const auto goesOn = [](const Robot& r) { return runTask(TaskState(r), forwardFor(1.5), Behavior<Wheels>(Wheels{0.2, 0.0})); };
+  Result<Summary> s = runSession({.world = room(), .worldName = "room", .controllers = {inlineController(goesOn)}, .seconds = 3});
+  ASSERT_TRUE(s.ok()) << s.error();
+  EXPECT_EQ(s.value().steps, 300);
+  EXPECT_FALSE(s.value().robots.at(0).finishedAt.has_value());
+}
+
 // After the last task returns, a settle time: the run goes on with the robot commanded still, so that
 // "stands still 2 s after" can be seen; the summary says when the tasks had all returned.
 TEST(Session, ASettleTimeKeepsTheRunGoingWithTheRobotStill) {

@@ -37,6 +37,8 @@ class ControllerDriver {
                       std::vector<std::pair<std::size_t, std::string>>& failed) = 0;
   /// Robot `i`'s task timeline as its controller reports it.
   [[nodiscard]] virtual Timeline& timeline(std::size_t i) = 0;
+  /// Whether robot `i`'s controller is done: its task returned, and it commands a stop for ever.
+  [[nodiscard]] virtual bool finished(std::size_t /*i*/) const { return false; }
 };
 
 /// Makes the driver of a run once its simulation is built.
@@ -65,6 +67,8 @@ class Run {
   [[nodiscard]] const Recorder& recorder() const { return recorder_; }
   /// Robot `i`'s task timeline, as its controller reports it.
   [[nodiscard]] Timeline& timeline(std::size_t i) const { return driver_->timeline(i); }
+  /// Whether robot `i`'s controller is done: its task returned, and it stands still from then on.
+  [[nodiscard]] bool finished(std::size_t i) const { return driver_->finished(i); }
   /// The wheels applied at the last step, one per robot (a failed controller's robot stands still).
   [[nodiscard]] const std::vector<Wheels>& commands() const { return wheels_; }
   /// The controllers that failed, in the order they did.
