@@ -25,19 +25,6 @@ std::string currentMessage() {
 
 }  // namespace
 
-namespace detail {
-
-Behavior<Wheels> finishedStop(const Robot& r) {
-  return lift(
-      [debug = r.debugChannel()](double) {
-        debug->finish();
-        return Wheels{};
-      },
-      time());
-}
-
-}  // namespace detail
-
 RunningController::RunningController(const Controller& make, const Robot& robot) : robot_(robot) {
   try {
     behavior_.emplace(make(robot_));

@@ -76,6 +76,11 @@ TEST(RunningController, IsFinishedOnceItsTaskHasReturnedAndOnlyThen) {
   EXPECT_EQ(finishedAt(makeController(follow)), std::vector<bool>(7, false));
   const auto goesOn = [](const Robot& r) { return runTask(TaskState(r), followTask(), Behavior<Wheels>(Wheels{0.5, 0.0})); };
   EXPECT_EQ(finishedAt(goesOn), std::vector<bool>(7, false));
+  // A behavior that is runTask(robot, task) is a task's controller; one that holds it inside another is not.
+  const auto runsIt = [](const Robot& r) { return runTask(r, followTask()); };
+  EXPECT_EQ(finishedAt(runsIt), (std::vector<bool>{false, false, false, false, false, true, true}));
+  const auto holdsIt = [](const Robot& r) { return toBehavior(lift([](const Wheels& w, double) { return w; }, runTask(r, followTask()), time())); };
+  EXPECT_EQ(finishedAt(holdsIt), std::vector<bool>(7, false));
 }
 
 TEST(RunningController, ABuildThatThrowsOrAnAllocationThatFailsIsAReason) {

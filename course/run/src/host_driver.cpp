@@ -1,5 +1,6 @@
 // Runs driven by controller hosts: each step the robots' frames go out and their replies come back,
-// read against the caps of a step and of a run. A run gives each robot a host of its own.
+// read against the caps of a step and of a run (once every robot of a host is done, only every
+// kIdleAsk steps). A run gives each robot a host of its own.
 #include "frob/sandbox/wire.hpp"
 #include "host_cores.hpp"
 #include "host_impl.hpp"
@@ -13,6 +14,10 @@ namespace frob::course {
 using namespace host_detail;
 
 namespace {
+
+// A host whose robots are all done is asked only every this many steps: whatever it still does (a
+// thread, a picture it published) is checked for crashes and limits, but its answer, a stop, is known.
+constexpr std::int64_t kIdleAsk = 64;
 
 // Controllers sampled in the host: each step the frames go out and the replies come back. It drives
 // the robots `robots` of the run (their indices in it), robot k of them with module modules[k].
@@ -61,7 +66,8 @@ class HostDriver final : public worlds::ControllerDriver {
 
   // Hands the host its robots' frames and asks it for their wheels.
   void send(const Instant& now) {
-    if (!lost_ || dead_ || idle()) return;
+    asked_ = lost_ && !dead_ && (!idle() || now.step % kIdleAsk == 0);
+    if (!asked_) return;
     sandbox::Header& h = host_.header();
     for (std::uint32_t k = 0; k < robots_.size(); ++k) {
       sandbox::Writer w(host_.channel.frameArea(k));
@@ -78,13 +84,12 @@ class HostDriver final : public worlds::ControllerDriver {
   void receive(const Instant& now, std::span<Wheels> wheels, std::span<Picture> pictures, std::vector<std::pair<std::size_t, std::string>>& failed) {
     if (!lost_) return fail(failed, lost_.error());
     if (dead_) return;
-    // A robot whose task returned stands still and shows nothing, as its host would say from then on.
+    if (now.step % 64 == 0) host_.drainOutput();  // a student's prints appear as the run goes
+    // A robot that is done stands still whatever its host says (its picture is the last one sent).
     for (std::uint32_t k = 0; k < robots_.size(); ++k) {
-      if (!finished_[k]) continue;
-      wheels[robots_[k]] = Wheels{};
-      if (pictures_) pictures[robots_[k]] = Picture{};
+      if (finished_[k]) wheels[robots_[k]] = Wheels{};
     }
-    if (idle()) return;
+    if (!asked_) return;
     const auto at = [&] {  // formatted only for a failure: a step's budget is a few microseconds
       char text[48];
       std::snprintf(text, sizeof text, " at t = %.2f s", now.time);
@@ -93,15 +98,15 @@ class HostDriver final : public worlds::ControllerDriver {
     if (Status s = host_.await(++host_.sequence, host_.def.stepSeconds, false); !s) return fail(failed, s.error() + at());
     if (Status s = host_.refusal(); !s) return fail(failed, s.error() + at());
     for (std::uint32_t k = 0; k < robots_.size(); ++k) {
-      if (stopped_[k] || finished_[k]) continue;
+      if (stopped_[k]) continue;
       const std::uint32_t i = robots_[k];
-      if (Status s = readReply(k, wheels[i], pictures[i], failed); !s) {
+      Wheels said;
+      if (Status s = readReply(k, finished_[k] ? said : wheels[i], pictures[i], failed); !s) {
         stopped_[k] = true;
         wheels[i] = Wheels{};
         failed.emplace_back(i, "its controller host sent a reply that cannot be read: " + s.error());
       }
     }
-    if (++steps_ % 64 == 0) host_.drainOutput();  // a student's prints appear as the run goes
   }
 
   Timeline& timeline(std::size_t i) override { return timelines_[indexOf(i)]; }
@@ -150,8 +155,8 @@ class HostDriver final : public worlds::ControllerDriver {
         timeline.end(t.id, t.end, t.how, std::move(t.detail));
       }
     }
-    // Its task returned: the host is asked no more for this robot. Claimed falsely, it only stops
-    // its own robot, as an honest one that is done would.
+    // Its task returned: the robot stands still from now on, and once all of the host's are done,
+    // the host is asked only now and then. Claimed falsely, it only stops its own robot.
     if (reply_.state == sandbox::StepReply::State::Done) finished_[k] = true;
     if (pictures_ && reply_.hasPicture) picture = std::move(reply_.picture);
     // Only the controller's own word stops it.
@@ -170,7 +175,7 @@ class HostDriver final : public worlds::ControllerDriver {
   std::vector<bool> finished_;  // its task returned: it stands still, and its host is not asked
   Status lost_;                 // why the host could not build the controllers, reported at the first step
   bool dead_ = false;
-  std::int64_t steps_ = 0;
+  bool asked_ = false;  // this step's frames went to the host
   std::vector<std::byte> copy_;
   sandbox::StepReply reply_;
 };

@@ -59,8 +59,9 @@ class RunningController {
   Wheels step(const Instant& now, Picture* picture = nullptr);
   /// True once it has failed.
   [[nodiscard]] bool failed() const { return !behavior_; }
-  /// True once its task has returned: it commands a stop from then on, whatever the frames.
-  [[nodiscard]] bool finished() const { return behavior_ && robot_.debugChannel()->finished(); }
+  /// True once it is done: its behavior is runTask(robot, task) (a controller function that gives
+  /// a Task) and the task has returned, so it commands a stop from then on, whatever the frames.
+  [[nodiscard]] bool finished() const { return behavior_ && behavior_->node()->stoppedForGood(); }
   /// Why it failed, e.g. "the controller commanded non-finite wheels ... at t = 1.000 s"; "" while it runs.
   [[nodiscard]] const std::string& failure() const { return failure_; }
   /// The robot it drives (its debug channel holds the task timeline).

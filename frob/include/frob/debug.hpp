@@ -87,14 +87,7 @@ class DebugChannel {
   /// Withdraws a published picture.
   void withdraw(std::int64_t handle);
 
-  /// Marks the controller done: its task returned, and it commands a stop for ever (runTask's end
-  /// for a controller function that gives a Task).
-  void finish() { finished_ = true; }
-  /// Whether the controller is done.
-  [[nodiscard]] bool finished() const { return finished_; }
-
  private:
-  bool finished_ = false;
   std::int64_t nextPicture_ = 0;
   std::vector<std::pair<std::int64_t, Behavior<Picture>>> pictures_;
   Timeline timeline_;

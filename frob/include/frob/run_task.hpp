@@ -14,10 +14,11 @@ template <class A, class B>
   return Behavior<A>(detail::makeNode<detail::RunnerNode<A, B>>(std::move(ts), std::move(t), std::move(final)));
 }
 
-/// runTask for robot `r` from where it stands; after the task ends the output is zero (stop).
+/// runTask for robot `r` from where it stands; after the task returns the output is zero for good
+/// (a stop: a controller that gives it is then done).
 template <class A, class B>
 [[nodiscard]] Behavior<A> runTask(const Robot& r, Task<A, B> t) {
-  return runTask(TaskState(r), std::move(t), Behavior<A>(zeroOf<A>()));
+  return Behavior<A>(detail::makeNode<detail::RunnerNode<A, B>>(TaskState(r), std::move(t), Behavior<A>(zeroOf<A>()), -1, false, true));
 }
 
 }  // namespace frob

@@ -74,22 +74,25 @@ TEST(Sandbox, AWellBehavedControllerDrivesBitIdenticallyInAndOutOfTheSandbox) {
   EXPECT_EQ(there.timeline(0).current(), here.timeline(0).current());
 }
 
-// A controller whose task has returned stands still for ever, so its host is asked no more: a host
-// killed then is never missed, and the run is bit-identical to one that samples it at every step.
-TEST(Sandbox, AControllerWhoseTaskReturnedIsAskedNoMore) {
+// A controller whose task has returned stands still for ever, so its host is asked only every 64
+// steps (whatever it still does is checked then): the run is bit-identical to one that samples it
+// at every step, and a host killed after is missed until the next time it is asked.
+TEST(Sandbox, AControllerWhoseTaskReturnedIsAskedOnlyNowAndThen) {
   const worlds::WorldDef world = *worlds::loadReferenceWorld("empty");
   const fs::path visit = testing::exampleModule("04_drive_to");  // its task returns at 20.34 s
   worlds::Run here(world, {}, {inProcess(visit)}, {.keepSteps = false});
-  here.runUntil(30.0);
+  here.runUntil(25.0);
   std::shared_ptr<ControllerHost> host = startHost({visit});
   ASSERT_NE(host, nullptr);
   worlds::Run there(world, {}, host->driver({0}, true), {.keepSteps = false});
   there.runUntil(25.0);
-  ASSERT_EQ(there.timeline(0).current(), "");
-  ASSERT_EQ(::kill(host->processId(), SIGKILL), 0);
-  there.runUntil(30.0);
+  EXPECT_TRUE(there.finished(0));
   EXPECT_TRUE(there.failures().empty()) << there.failures()[0].message;
   EXPECT_EQ(there.recorder().trajectoryHash(), here.recorder().trajectoryHash());
+  ASSERT_EQ(::kill(host->processId(), SIGKILL), 0);
+  there.runUntil(30.0);
+  ASSERT_EQ(there.failures().size(), 1u);
+  EXPECT_NEAR(there.failures()[0].time, 25.6, 1e-9) << there.failures()[0].message;  // step 2560, the first of 64 after
 }
 
 // A 4 x 3 m room with one robot, or two.

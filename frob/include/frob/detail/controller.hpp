@@ -17,16 +17,11 @@ struct IsTask : std::false_type {};
 template <class A, class B>
 struct IsTask<Task<A, B>> : std::true_type {};
 
-// The stop a controller's task ends in: zero wheels, and its robot's debug channel marked finished
-// at the first instant of it.
-[[nodiscard]] Behavior<Wheels> finishedStop(const Robot& r);
-
-// A controller's result as wheels: a task is run from where the robot stands, then stops for ever;
-// a behavior is taken as it is.
+// A controller's result as wheels: a task is run from where the robot stands, a behavior taken as it is.
 template <class R>
 Behavior<Wheels> controllerWheels(const Robot& r, R&& result) {
   if constexpr (IsTask<std::remove_cvref_t<R>>::value) {
-    return runTask(TaskState(r), std::forward<R>(result), finishedStop(r));
+    return runTask(r, std::forward<R>(result));
   } else {
     static_assert(BehaviorType<R> && std::is_same_v<frob::ValueOf<R>, Wheels>,
                   "FROB_CONTROLLER: the function must give a Behavior<Wheels> or a Task<Wheels, ...>");

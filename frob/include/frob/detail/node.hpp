@@ -108,6 +108,8 @@ class NodeBase {
   [[nodiscard]] virtual bool strict() const { return false; }
   // True if the node holds one value from its creation: plans leave it out.
   [[nodiscard]] virtual bool constant() const { return false; }
+  // True once the node's value is its type's zero for ever: a controller whose task has returned.
+  [[nodiscard]] virtual bool stoppedForGood() const { return false; }
   // Appends the nodes a strict node reads at every instant, in the order it reads them. Other
   // nodes (switches, events) read their inputs only sometimes and pull them themselves.
   virtual void strictInputs(std::vector<Input>& out) const { (void)out; }

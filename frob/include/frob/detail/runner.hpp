@@ -21,13 +21,15 @@ class RunnerNode final : public BehaviorNode<A> {
   // A run of `task` then `final`. A run inside another (parallel tasks) hangs its timeline under
   // `parentRecord` and, with `holdRoboErrs`, keeps an uncaught RoboErr in result() for the other
   // branch to catch; any other exception ends the whole run, as it would at the top.
-  RunnerNode(TaskState ts, Task<A, B> task, Behavior<A> final, std::int64_t parentRecord = -1, bool holdRoboErrs = false)
+  // `stops`: `final` is zero for ever, so that once the task has returned the run has stopped for good.
+  RunnerNode(TaskState ts, Task<A, B> task, Behavior<A> final, std::int64_t parentRecord = -1, bool holdRoboErrs = false, bool stops = false)
       : ctx_(std::move(ts)),
         name_(task.name()),
         task_(std::move(task)),
         final_(std::move(final)),
         parentRecord_(parentRecord),
-        holdRoboErrs_(holdRoboErrs) {}
+        holdRoboErrs_(holdRoboErrs),
+        stops_(stops) {}
   RunnerNode(const RunnerNode&) = delete;
   RunnerNode& operator=(const RunnerNode&) = delete;
   ~RunnerNode() override {
@@ -42,6 +44,7 @@ class RunnerNode final : public BehaviorNode<A> {
   [[nodiscard]] const std::optional<Instant>& endedAt() const { return endedAt_; }
   /// The name of the task it runs.
   [[nodiscard]] const std::string& taskName() const { return name_; }
+  [[nodiscard]] bool stoppedForGood() const override { return stops_ && slot_.value.has_value(); }
   /// Records the run's output from its first sample on, for lastOutput.
   void recordOutput() { (void)ctx_.delayedOutput(); }
   /// At the instant the task ended, its output at the sample before (none if it ended as it began).
@@ -162,6 +165,7 @@ class RunnerNode final : public BehaviorNode<A> {
   std::exception_ptr failure_;
   std::int64_t parentRecord_;
   bool holdRoboErrs_;
+  bool stops_;
   std::optional<Instant> endedAt_;
   Instant here_;  // the instant sampled, with the lag of what starts in it
   std::uint64_t startedAt_ = 0;
