@@ -19,7 +19,8 @@ namespace {
 // thread, a picture it published) is checked for crashes and limits, but its answer, a stop, is known.
 constexpr std::int64_t kIdleAsk = 64;
 
-// Controllers sampled in the host: each step the frames go out and the replies come back. It drives
+// Controllers sampled in the host: each step (while any is not done) the frames go out and the
+// replies come back. It drives
 // the robots `robots` of the run (their indices in it), robot k of them with module modules[k].
 class HostDriver final : public worlds::ControllerDriver {
  public:

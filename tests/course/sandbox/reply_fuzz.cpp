@@ -107,7 +107,7 @@ void recipes(FuzzedDataProvider& in) {
   RobotRun run;
   std::int64_t next = 0;
   for (int step = 0; step < 64 && in.remaining_bytes() > 0; ++step) {
-    StepReply reply{.state = static_cast<StepReply::State>(in.ConsumeIntegralInRange<int>(0, 3)),
+    StepReply reply{.state = static_cast<StepReply::State>(in.ConsumeIntegralInRange<int>(0, static_cast<int>(StepReply::State::Done))),
                     .wheels = {in.ConsumeFloatingPoint<double>(), in.ConsumeFloatingPoint<double>()}};
     if (reply.state == StepReply::State::FailedNow) reply.failure = in.ConsumeRandomLengthString(5000);
     reply.records.resize(in.ConsumeIntegralInRange<std::size_t>(0, 16));

@@ -21,6 +21,14 @@ std::string roundTrip(const StepReply& reply, StepReply& back, std::size_t bytes
   return s ? "" : s.error();
 }
 
+TEST(Wire, EveryStateComesBack) {
+  for (const auto state : {StepReply::State::Running, StepReply::State::FailedNow, StepReply::State::FailedBefore, StepReply::State::Done}) {
+    StepReply back;
+    ASSERT_EQ(roundTrip({.state = state}, back), "");
+    EXPECT_EQ(back.state, state);
+  }
+}
+
 TEST(Wire, AStepReplyComesBackAsItWasWritten) {
   StepReply reply{.state = StepReply::State::FailedNow,
                   .wheels = {0.25, -0.5},
