@@ -20,8 +20,8 @@ namespace {
 constexpr std::int64_t kIdleAsk = 64;
 
 // Controllers sampled in the host: each step (while any is not done) the frames go out and the
-// replies come back. It drives
-// the robots `robots` of the run (their indices in it), robot k of them with module modules[k].
+// replies come back. It drives the robots `robots` of the run (their indices in it), robot k of
+// them with module modules[k].
 class HostDriver final : public worlds::ControllerDriver {
  public:
   HostDriver(std::shared_ptr<ControllerHost> owner, ControllerHost::Impl& host, const worlds::Simulation& sim, std::vector<std::uint32_t> robots,
@@ -173,7 +173,7 @@ class HostDriver final : public worlds::ControllerDriver {
   std::vector<Timeline> timelines_;  // each numbers its tasks as the host's does: the budget checks the order
   std::vector<sandbox::RunBudget> budgets_;
   std::vector<bool> stopped_;
-  std::vector<bool> finished_;  // its task returned: it stands still, and its host is not asked
+  std::vector<bool> finished_;  // its task returned: it stands still, whatever its host says
   Status lost_;                 // why the host could not build the controllers, reported at the first step
   bool dead_ = false;
   bool asked_ = false;  // this step's frames went to the host
