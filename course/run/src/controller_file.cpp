@@ -3,13 +3,13 @@
 #include "controller_setup.inc"
 #include "frob/base/layout.hpp"
 #include "frob/run/scratch.hpp"
-#include "frob/worlds/fnv.hpp"
 #include "load_error.hpp"
 #include "sandboxed.hpp"
 
 #include <cxxabi.h>
 #include <dlfcn.h>
 #include <fcntl.h>
+#include <openssl/evp.h>
 #include <signal.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -37,6 +37,10 @@ namespace {
 #define FROB_STRINGIFY(x) FROB_STRINGIFY2(x)
 constexpr const char* kEntrySymbol = FROB_STRINGIFY(FROB_CONTROLLER_SYMBOL);
 constexpr std::uintmax_t kModuleBytes = 64 << 20;  // largest compiled controller kept (a large one is 6 MB)
+// The compiler's stack: clang's parser recurses once per level of nesting (an `else if` chain of a few
+// thousand overflows the usual 8 MB, a crash that gives no grade); this much takes any nesting a
+// source within the size limit can hold, bar a chain of unary operators of 800 000 or more.
+constexpr std::uint64_t kCompilerStackBytes = 1ULL << 30;
 // What clang says when a limit stopped it (strsignal's words for SIGXCPU and SIGXFSZ, and LLVM's when
 // memory ran out).
 constexpr const char* kLimitWords[] = {"CPU time limit exceeded", "File size limit exceeded", "LLVM ERROR: out of memory", "Allocation failed"};
@@ -269,6 +273,32 @@ std::string marked(const std::string& text, const fs::path& shown) {
   return (marks ? std::string(bom) : std::string()) + line + "\"\n" + (marks ? text.substr(bom.size()) : text);
 }
 
+// What the cache knows a compile by: SHA-256 of its fields, each after its length, so that no two
+// different compiles share a module (a 64-bit FNV could be made to collide in minutes: a file that
+// does nothing graded with another's module).
+class CacheKey {
+ public:
+  CacheKey() : ctx_(EVP_MD_CTX_new(), EVP_MD_CTX_free) { EVP_DigestInit_ex(ctx_.get(), EVP_sha256(), nullptr); }
+  CacheKey& add(std::string_view field) {
+    const std::uint64_t size = field.size();
+    EVP_DigestUpdate(ctx_.get(), &size, sizeof size);
+    EVP_DigestUpdate(ctx_.get(), field.data(), field.size());
+    return *this;
+  }
+  // The first 128 bits in hex: a module's name.
+  [[nodiscard]] std::string hex() {
+    unsigned char digest[EVP_MAX_MD_SIZE];
+    unsigned int length = 0;
+    EVP_DigestFinal_ex(ctx_.get(), digest, &length);
+    char out[33] = {};
+    for (unsigned int i = 0; i < 16 && i < length; ++i) std::snprintf(out + 2 * i, 3, "%02x", digest[i]);
+    return out;
+  }
+
+ private:
+  std::unique_ptr<EVP_MD_CTX, void (*)(EVP_MD_CTX*)> ctx_;
+};
+
 // Compiles `text`, the contents of `source`, with `companions` (the .cpp files among them are
 // compiled too), from copies in a folder of the compiler's own: it reads no file of the submission's,
 // only these texts (what the cache knows it by), and its messages name each file as `shown` and
@@ -277,15 +307,13 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
                                    const CompilerSetup& setup, std::string* messages) {
   // The cache key: the source and the files beside it, how it is compiled, and the headers and program it is compiled for.
   const bool pch = !setup.precompiledHeader.empty() && fs::exists(setup.precompiledHeader);
-  worlds::Fnv1a key;
-  key.add(std::string_view(text)).add(std::string_view(setup.compiler));
-  for (const Companion& c : companions)
-    key.add(std::string_view("\n")).add(std::string_view(c.file.filename().string())).add(std::string_view(c.text));
-  for (const std::string& f : setup.flags) key.add(std::string_view("\n")).add(std::string_view(f));
-  key.add(std::string_view(pch ? fileStamp(setup.precompiledHeader) : "no pch"));
-  key.add(std::string_view(fileStamp("/proc/self/exe")));
-  char name[32];
-  std::snprintf(name, sizeof name, "%016llx", static_cast<unsigned long long>(key.value()));
+  CacheKey key;
+  key.add(text).add(setup.compiler);
+  for (const Companion& c : companions) key.add(c.file.filename().string()).add(c.text);
+  for (const std::string& f : setup.flags) key.add(f);
+  key.add(pch ? fileStamp(setup.precompiledHeader) : "no pch");
+  key.add(fileStamp("/proc/self/exe"));
+  const std::string name = key.hex();
   const fs::path module = setup.cacheDir / (source.stem().string() + "-" + name + ".so");
   const CompiledController compiled{.module = module, .source = source.string(), .compiled = true, .checked = setup.checked};
   // The compiler's warnings are kept beside the module and shown again on every cached run.
@@ -332,7 +360,8 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
                        .limits = {.cpuSeconds = static_cast<std::uint64_t>(setup.seconds),
                                   .memoryBytes = setup.memoryBytes,
                                   .fileBytes = setup.fileBytes,
-                                  .openFiles = 256},
+                                  .openFiles = 256,
+                                  .stackBytes = kCompilerStackBytes},
                        .namespaces = {.tasks = 64},
                        .files = {.read = compilerReads(setup, pch), .write = {work.string()}, .execute = {"/usr", "/bin"}},
                        .cwd = work.string(),

@@ -39,6 +39,7 @@ Result<Sandboxed> Sandboxed::start(const SandboxedDef& def) {
   if (!kSanitizedBuild) add("--memory", def.limits.memoryBytes);
   add("--file-size", def.limits.fileBytes);
   add("--open-files", def.limits.openFiles);
+  add("--stack", def.limits.stackBytes);
   add("--tasks", def.namespaces.tasks);
   if (!def.namespaces.scratch.empty()) {
     args.insert(args.end(), {"--scratch", def.namespaces.scratch});

@@ -58,6 +58,7 @@ int main(int argc, char** argv) {
   cli.add_option("--memory", limits.memoryBytes, "address space, bytes");
   cli.add_option("--file-size", limits.fileBytes, "largest file written, bytes");
   cli.add_option("--open-files", limits.openFiles, "open file descriptors");
+  cli.add_option("--stack", limits.stackBytes, "the main thread's stack, bytes");
   cli.add_option("--tasks", namespaces.tasks, "processes and threads at once, in a user namespace of its own");
   cli.add_option("--scratch", namespaces.scratch, "a folder to cover with a tmpfs of its own");
   cli.add_option("--scratch-bytes", namespaces.scratchBytes, "the size of that tmpfs");

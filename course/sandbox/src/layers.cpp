@@ -76,6 +76,7 @@ Layer limitResources(const Limits& limits) {
   rlimit cpu{limits.cpuSeconds, limits.cpuSeconds + 1};
   const bool ok = set(RLIMIT_CORE, 0, "no core files") && set(RLIMIT_AS, limits.memoryBytes, "memory") &&
                   set(RLIMIT_FSIZE, limits.fileBytes, "file size") && set(RLIMIT_NOFILE, limits.openFiles, "open files") &&
+                  set(RLIMIT_STACK, limits.stackBytes, "stack") &&
                   (limits.cpuSeconds == 0 || ::setrlimit(RLIMIT_CPU, &cpu) == 0 || (layer.note = errorText("cpu"), false));
   // When the machine runs short of memory (a grader's container may hold less than the limit), the
   // kernel kills the controller first, never frob; raising one's own score needs no privilege.

@@ -42,6 +42,14 @@ frob::Behavior<frob::Wheels> go(const frob::Robot&) { return frob::Wheels{kSpeed
 FROB_CONTROLLER(go)
 )";
 
+// Two controllers whose texts share a 64-bit FNV-1a hash (0xcba683c9e46f4199).
+constexpr const char* kCollidingDrives =
+    "#include <frob/frob.hpp>\nfrob::Behavior<frob::Wheels> go(const frob::Robot&) { return frob::Wheels{0.3, 0.0}; "
+    "}\nFROB_CONTROLLER(go)\n//24Rt802QksB";
+constexpr const char* kCollidingStandsStill =
+    "#include <frob/frob.hpp>\nfrob::Behavior<frob::Wheels> go(const frob::Robot&) { return frob::Wheels{0.0, 0.0}; "
+    "}\nFROB_CONTROLLER(go)\n//sJ$ku$W4zIG";
+
 TEST(ControllerFile, CompilesWithHeadersFromItsOwnFolderAndCachesTheModule) {
   const fs::path dir = freshFolder("own_folder");
   writeFile(dir / "go.cpp", kController);
@@ -352,6 +360,39 @@ TEST(ControllerFile, ACompileThatNeverEndsIsStoppedAtItsTimeLimit) {
   ASSERT_FALSE(c.ok());
   EXPECT_EQ(c.error(),
             "compiling '" + (dir / "bomb.cpp").string() + "' took longer than 2 s, so it was stopped (an #include or a macro that never ends?)");
+}
+
+// An `else if` chain of 8000 branches (160 KB) overflows the 8 MB stack clang's parser usually has: a
+// compiler crash, which gives no grade, so any student could turn a zero into "not graded". With the
+// compiler's own large stack it compiles.
+TEST(ControllerFile, ADeepNestingCompilesInsteadOfCrashingTheCompiler) {
+  const fs::path dir = freshFolder("deep");
+  std::string chain = "int chain(int x) {\n  int y = 0;\n  if (x == 0) y = 0;\n";
+  for (int i = 1; i < 8000; ++i) chain += "  else if (x == " + std::to_string(i) + ") y = " + std::to_string(i % 7) + ";\n";
+  writeFile(dir / "deep.cpp",
+            "#include <frob/frob.hpp>\n" + chain +
+                "  return y;\n}\nfrob::Behavior<frob::Wheels> go(const frob::Robot&) { return frob::Wheels{0.1 * chain(3), 0.0}; }\n"
+                "FROB_CONTROLLER(go)\n");
+  std::string messages;
+  Result<CompiledController> c = compileControllerFile(dir / "deep.cpp", setupIn(dir), &messages);
+  ASSERT_TRUE(c.ok()) << c.error() << messages.substr(0, 2000);
+  EXPECT_TRUE(fs::exists(c.value().module));
+}
+
+// The cache knows a compile by SHA-256: these two files (a robot that drives, one that stands still)
+// share a 64-bit FNV-1a hash, which the cache was once keyed by, so the second was given the first's
+// module (the comments at their ends were searched for, in two minutes, to make them collide).
+TEST(ControllerFile, TwoFilesWhoseFnvHashesCollideCompileToTheirOwnModules) {
+  const fs::path dir = freshFolder("collide");
+  const CompilerSetup setup = setupIn(dir);
+  writeFile(dir / "go.cpp", kCollidingDrives);
+  Result<CompiledController> drives = compileControllerFile(dir / "go.cpp", setup);
+  ASSERT_TRUE(drives.ok()) << drives.error();
+  writeFile(dir / "go.cpp", kCollidingStandsStill);
+  Result<CompiledController> still = compileControllerFile(dir / "go.cpp", setup);
+  ASSERT_TRUE(still.ok()) << still.error();
+  EXPECT_TRUE(still.value().compiled) << "the cache gave it the other file's module";
+  EXPECT_NE(still.value().module, drives.value().module);
 }
 
 }  // namespace
