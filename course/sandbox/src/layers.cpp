@@ -14,6 +14,8 @@
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/syscall.h>
+#include <sys/sysinfo.h>
+#include <ucontext.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -289,8 +291,7 @@ Layer restrictSyscalls(SyscallPolicy policy) {
     // Nothing that reads or changes which pages of a file the kernel caches, nor watches files: a
     // library every host may read would carry notes between hosts, and from one run to the next.
     // Refused as not implemented. cachestat is 451 on every architecture (Linux 6.5), also where this
-    // libseccomp has no name for it. (Not sysinfo: glibc's qsort reads memory's size through it and
-    // would take garbage for it when refused, sorting differently from one run to the next.)
+    // libseccomp has no name for it.
     int cachestat = ::seccomp_syscall_resolve_name("cachestat");
     if (cachestat == __NR_SCMP_ERROR) cachestat = 451;
     for (int call : {SCMP_SYS(mincore), SCMP_SYS(fadvise64), SCMP_SYS(readahead), cachestat, SCMP_SYS(preadv2), SCMP_SYS(pwritev2),
@@ -307,6 +308,10 @@ Layer restrictSyscalls(SyscallPolicy policy) {
       const scmp_arg_cmp asks{.arg = 1, .op = SCMP_CMP_EQ, .datum_a = command, .datum_b = 0};
       if (rc == 0) rc = ::seccomp_rule_add_array(ctx, refuse, SCMP_SYS(fcntl), 1, &asks);
     }
+    // sysinfo counts every thread of the machine (one host starts threads, another sees the count
+    // move) and shows its memory, uptime and load: it traps, and the handler answers it with fixed
+    // figures (refused, glibc's qsort would take garbage for memory's size and sort differently).
+    if (rc == 0) rc = ::seccomp_rule_add(ctx, SCMP_ACT_TRAP, SCMP_SYS(sysinfo), 0);
     // Threads may start; processes may not. clone3 hides its flags from the filter, so it reports
     // "not implemented" and the C library falls back to clone.
     const scmp_arg_cmp noThread{.arg = 0, .op = SCMP_CMP_MASKED_EQ, .datum_a = CLONE_THREAD, .datum_b = 0};
@@ -333,7 +338,27 @@ Layer restrictSyscalls(SyscallPolicy policy) {
 namespace {
 volatile std::int32_t* trappedSyscall = nullptr;
 
-void onSigsys(int, siginfo_t* info, void*) {
+// The same answer to sysinfo in every host: 4 GiB of memory, half of it free, one process, just started.
+bool answerSysinfo(void* context) {
+  auto* uc = static_cast<ucontext_t*>(context);
+#if defined(__x86_64__)
+  greg_t& arg = uc->uc_mcontext.gregs[REG_RDI];
+  greg_t& result = uc->uc_mcontext.gregs[REG_RAX];
+#elif defined(__aarch64__)
+  auto& arg = uc->uc_mcontext.regs[0];
+  auto& result = uc->uc_mcontext.regs[0];
+#else
+  return false;
+#endif
+  auto* out = reinterpret_cast<struct sysinfo*>(arg);
+  __builtin_memset(out, 0, sizeof *out);
+  out->totalram = 4UL << 30, out->freeram = 2UL << 30, out->procs = 1, out->mem_unit = 1;
+  result = 0;
+  return true;
+}
+
+void onSigsys(int, siginfo_t* info, void* context) {
+  if (info->si_syscall == SYS_sysinfo && answerSysinfo(context)) return;
   if (trappedSyscall != nullptr) *trappedSyscall = info->si_syscall;
   ::signal(SIGSYS, SIG_DFL);  // the signal is blocked in this handler; it kills once the handler returns
   ::raise(SIGSYS);

@@ -300,6 +300,13 @@ TEST(Sandbox, AHostSeesNothingOfAnotherProcessesSchedulingAndTakesNoLock) {
   EXPECT_EQ(o.lastWheels, (Wheels{0.1, 0.0}));
 }
 
+// Nor count the machine's threads, or read its uptime and load: sysinfo gives every host the same figures.
+TEST(Sandbox, AHostCountsNoThreadsButItsOwnThroughSysinfo) {
+  const Outcome o = runHostile({"counts_threads_by_sysinfo"});
+  EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
+  EXPECT_EQ(o.lastWheels, (Wheels{0.1, 0.0}));
+}
+
 // Nor see or change which pages of a library every host may read the kernel caches, or watch
 // files: notes between hosts (robots, runs, students) again. The turn's
 // bits name the calls the kernel carried out (sees_the_page_cache.cpp).
