@@ -6,11 +6,16 @@
 #include "load_error.hpp"
 
 #include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
 #include <cmath>
+#include <map>
 #include <mutex>
+#include <sstream>
 
 namespace frob::course {
 
@@ -19,6 +24,51 @@ namespace {
 constexpr std::size_t kSetupBytes = 1 << 20;
 constexpr std::size_t kFrameBytes = 64 << 10;   // a frame: its sonars, bumps and keys
 constexpr std::size_t kReplyBytes = 256 << 10;  // a reply: wheels, task records, a picture
+
+// The files the dynamic loader maps for `program` (after `preload`, if any), as it lists them when
+// asked to trace (what ldd shows): all a host may read of the system, with the loader's cache. Not
+// /usr whole: the first read of a file whose access time is older than its change moves that time,
+// a note that outlives the run for a later host (another student's) to read. Empty if the loader
+// would not say.
+std::vector<std::string> loadedFiles(const std::string& program, const std::string& preload) {
+  static std::mutex guard;
+  static std::map<std::pair<std::string, std::string>, std::vector<std::string>> known;
+  const std::lock_guard<std::mutex> lock(guard);
+  if (const auto k = known.find({program, preload}); k != known.end()) return k->second;
+  std::vector<std::string> files;
+  int fds[2];
+  if (::pipe2(fds, O_CLOEXEC) != 0) return files;
+  sandbox::Fd read(fds[0]), write(fds[1]);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, write.get(), STDOUT_FILENO);
+  std::string trace = "LD_TRACE_LOADED_OBJECTS=1", preloaded = "LD_PRELOAD=" + preload;
+  std::vector<char*> env{trace.data()};
+  if (!preload.empty()) env.push_back(preloaded.data());
+  env.push_back(nullptr);
+  std::string name = program;
+  char* argv[] = {name.data(), nullptr};
+  pid_t pid = 0;
+  const bool spawned = ::posix_spawn(&pid, program.c_str(), &actions, nullptr, argv, env.data()) == 0;
+  posix_spawn_file_actions_destroy(&actions);
+  write.reset();
+  std::string out;
+  for (char buffer[4096]; spawned;) {
+    const ssize_t n = ::read(read.get(), buffer, sizeof buffer);
+    if (n <= 0) break;
+    out.append(buffer, static_cast<std::size_t>(n));
+  }
+  int status = 0;
+  if (!spawned || ::waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) return files;
+  // Lines such as "libc.so.6 => /lib/x86_64-linux-gnu/libc.so.6 (0x...)" and "/lib64/ld-linux-x86-64.so.2 (0x...)".
+  std::istringstream lines(out);
+  for (std::string line; std::getline(lines, line);) {
+    const std::size_t at = line.find(" => /") != std::string::npos ? line.find(" => /") + 4 : line.find_first_not_of(" \t");
+    const std::size_t end = line.find(" (0x", at);
+    if (at != std::string::npos && end != std::string::npos && line[at] == '/') files.push_back(line.substr(at, end - at));
+  }
+  return known[{program, preload}] = files;
+}
 
 }  // namespace
 
@@ -81,7 +131,7 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
                                   .fileBytes = d.fileBytes,
                                   .openFiles = 64},
                        .namespaces = {.tasks = d.tasks, .scratch = work.string(), .scratchBytes = d.scratchBytes},
-                       .files = {.read = {"/usr", "/lib", "/lib64", "/etc/ld.so.cache", folder.string()}, .write = {work.string()}},
+                       .files = {.read = {"/etc/ld.so.cache", folder.string()}, .write = {work.string()}},
                        .cwd = work.string(),
                        .own = {work.string()},
                        .fds = {-1, out.value().write.get(), out.value().write.get(), impl->channel.fd(), wake.value().write.get()}};
@@ -102,6 +152,14 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
         "ASAN_OPTIONS=detect_leaks=0:handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_abort=0:symbolize=0:"
         "detect_stack_use_after_return=0"};
   }
+  // Of the system, it reads only what the loader maps for it (else, if the loader would not say, the system's folders).
+  std::string preload;
+  for (const std::string& e : program.env) {
+    if (e.starts_with("LD_PRELOAD=")) preload = e.substr(11);
+  }
+  std::vector<std::string> system = loadedFiles(command.front(), preload);
+  if (system.empty()) system = {"/usr", "/lib", "/lib64"};
+  program.files.read.insert(program.files.read.begin(), system.begin(), system.end());
   // AddressSanitizer reserves terabytes of address space: then memory is watched by its size instead of limited.
   impl->memoryLimited = !kSanitizedBuild && !d.checked;
   if (!impl->memoryLimited) program.limits.memoryBytes = 0, program.files.read.push_back("/proc");

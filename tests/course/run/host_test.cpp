@@ -174,6 +174,7 @@ INSTANTIATE_TEST_SUITE_P(
              "allowed) at t = 0.50 s"},
         Case{"signals_by_file", "ada: tried to ask for signals on a file (fcntl F_SETOWN, F_SETSIG or F_SETLEASE) (not allowed) at t = 0.50 s"},
         Case{"reads_outside", "ada: tried to read /etc/passwd (not allowed) at t = 0.50 s"},
+        Case{"leaves_a_note_in_usr", "ada: tried to read /usr/include/stdio.h (not allowed) at t = 0.50 s"},
         Case{"writes_outside", "ada: tried to write /tmp/frob-hostile-was-here (not allowed) at t = 0.50 s"},
         Case{"forged_exit",
              "ada: ended its program with exit status 0 (a controller must not call exit; its results would "
