@@ -128,7 +128,22 @@ void step(const Channel& channel, std::vector<Driven>& driven, const Instant& no
                   : done      ? StepReply::State::Done
                               : StepReply::State::Running;
     reply.hasPicture = true;
-    writeFramed(channel.replyArea(i), reply);  // a reply too large for its area is cut: the trusted side reports it
+    if (!writeFramed(channel.replyArea(i), reply) && !wasFailed) {
+      // A picture too large for the reply fails its robot, saying so (a reply that is still too large is
+      // cut, and the trusted side reports it).
+      std::size_t points = 0;
+      for (const Shape& shape : reply.picture.shapes()) points += shape.points.size();
+      char why[320];
+      std::snprintf(why, sizeof why,
+                    "drew a picture too large to send in one step (%zu shapes, %zu points; a step's reply holds %zu KB): draw fewer "
+                    "points, such as a trail of the last few seconds, at t = %.2f s",
+                    reply.picture.shapes().size(), points, channel.replyArea(i).size() >> 10, now.time);
+      reply.picture = Picture();
+      reply.state = StepReply::State::FailedNow;
+      reply.failure = why;
+      d.reported = true;
+      writeFramed(channel.replyArea(i), reply);
+    }
   }
 }
 

@@ -180,6 +180,9 @@ INSTANTIATE_TEST_SUITE_P(
              "ada: ended its program with exit status 0 (a controller must not call exit; its results would "
              "not count) at t = 0.50 s"},
         Case{"throws_int", "ada: an exception of unknown type"},
+        Case{"draws_too_much",
+             "ada: drew a picture too large to send in one step (5 shapes, 20480 points; a step's reply holds 256 KB): draw fewer points, "
+             "such as a trail of the last few seconds, at t = 0.50 s"},
         Case{"commands_nan", "ada: the controller commanded non-finite wheels {forward nan m/s, turn 0.000 rad/s} at t = 0.500 s"}),
     [](const ::testing::TestParamInfo<Case>& info) { return info.param.module; });
 
