@@ -8,6 +8,7 @@
 #include "frob/frob.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/world_file.hpp"
+#include "host_testing.hpp"
 #include "sandbox_user.hpp"
 
 #include <dlfcn.h>
@@ -35,14 +36,6 @@ Controller inProcess(const fs::path& module) {
   EXPECT_NE(handle, nullptr) << ::dlerror();
   using Entry = const ControllerEntry* (*)();
   return reinterpret_cast<Entry>(::dlsym(handle, "frob_controller_v1"))()->make;
-}
-
-std::shared_ptr<ControllerHost> startHost(const std::vector<fs::path>& modules, HostDef def = {}) {
-  std::vector<std::string> sources;
-  for (const fs::path& m : modules) sources.push_back(m.stem().string());
-  Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start(modules, sources, std::move(def));
-  EXPECT_TRUE(host.ok()) << host.error();
-  return host.ok() ? host.value() : nullptr;
 }
 
 TEST(Sandbox, AWellBehavedControllerDrivesBitIdenticallyInAndOutOfTheSandbox) {
@@ -93,49 +86,6 @@ TEST(Sandbox, AControllerWhoseTaskReturnedIsAskedOnlyNowAndThen) {
   there.runUntil(30.0);
   ASSERT_EQ(there.failures().size(), 1u);
   EXPECT_NEAR(there.failures()[0].time, 25.6, 1e-9) << there.failures()[0].message;  // step 2560, the first of 64 after
-}
-
-// A 4 x 3 m room with one robot, or two.
-worlds::WorldDef room(int robots = 1) {
-  std::string text = "size = [4.0, 3.0]\nseed = 7\n[[robot]]\nname = \"ada\"\nstart = [1.0, 1.0]\n";
-  if (robots >= 2) text += "[[robot]]\nname = \"bob\"\nstart = [3.0, 2.0]\nheading_deg = 180\n";
-  if (robots >= 3) text += "[[robot]]\nname = \"cy\"\nstart = [1.0, 2.0]\n";
-  if (robots >= 4) text += "[[robot]]\nname = \"di\"\nstart = [3.0, 1.0]\nheading_deg = 180\n";
-  return *worlds::parseWorld(text, "room.toml");
-}
-
-// What became of a hostile submission run for at most two simulated seconds.
-struct Outcome {
-  std::string startError;                           // why the host could not start, if it could not
-  std::vector<worlds::ControllerFailure> failures;  // as the run reports them
-  std::string output;                               // what it printed, as passed on
-  std::vector<std::string> notes;
-  Wheels lastWheels;
-  std::vector<sandbox::Layer> layers;
-};
-
-Outcome runHostile(const std::vector<std::string>& names, HostDef def = {}) {
-  Outcome o;
-  def.output = [&o](std::string_view text) { o.output.append(text); };
-  def.robots = static_cast<std::uint32_t>(names.size());
-  std::vector<fs::path> modules;
-  for (const std::string& n : names) modules.push_back(testing::hostileModule(n));
-  Result<std::shared_ptr<ControllerHost>> host = ControllerHost::start(modules, names, std::move(def));
-  if (!host) {
-    o.startError = host.error();
-    return o;
-  }
-  std::vector<std::size_t> modulePerRobot;
-  for (std::size_t m = 0; m < names.size(); ++m) modulePerRobot.push_back(m);
-  {
-    worlds::Run run(room(static_cast<int>(names.size())), {}, host.value()->driver(modulePerRobot, true));
-    while (run.failures().empty() && run.simulation().time() < 2.0) run.step();
-    o.failures = run.failures();
-    o.lastWheels = run.recorder().steps().back().robots[0].wheels;
-  }
-  o.notes = host.value()->notes();
-  o.layers = host.value()->layers();
-  return o;
 }
 
 struct Case {
@@ -199,20 +149,6 @@ TEST(Sandbox, AHostThatClosesItsOutputIsWaitedForWithoutSpinning) {
   const double cpu = seconds(after.ru_utime) - seconds(before.ru_utime) + seconds(after.ru_stime) - seconds(before.ru_stime);
   // The step's 1 s wait: a busy loop spends most of it on the CPU, a poll with a timer next to none.
   EXPECT_LT(cpu, 0.4) << "the grader spun while it waited";
-}
-
-TEST(Sandbox, NothingOutsideItsScratchFolderIsReadOrWritten) {
-  fs::remove("/tmp/frob-hostile-was-here");
-  EXPECT_EQ(runHostile({"writes_outside"}).failures.size(), 1u);
-  EXPECT_FALSE(fs::exists("/tmp/frob-hostile-was-here"));
-  const Outcome read = runHostile({"reads_outside"});
-  EXPECT_EQ(read.output.find("root:"), std::string::npos) << read.output;
-}
-
-TEST(Sandbox, ItsOwnScratchFolderCanBeWrittenAndReadBack) {
-  const Outcome o = runHostile({"writes_scratch"});
-  EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
-  EXPECT_EQ(o.lastWheels, (Wheels{0.25, 0.0}));
 }
 
 // A value a task plots (withPlot) crosses from the host with the pictures, as it is in this process.
@@ -296,30 +232,6 @@ TEST(Sandbox, EscapeSequencesAControllerPrintsAreShownNotActedOn) {
   EXPECT_EQ(o.output, "\\x1b[2J\\x1b]52;c;ZXZpbA==\\x07\\x1bPq#0\\x1b\\\\u009b31m\\x0dTotal 7 / 7 \\xe9\ncaf\xc3\xa9\n");
 }
 
-// A host cannot read what the kernel shows of another process's scheduling, nor lock a file every
-// host may read: two hosts could pass notes through either.
-TEST(Sandbox, AHostSeesNothingOfAnotherProcessesSchedulingAndTakesNoLock) {
-  const Outcome o = runHostile({"reads_others_scheduling"});
-  EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
-  EXPECT_EQ(o.lastWheels, (Wheels{0.1, 0.0}));
-}
-
-// Nor count the machine's threads, or read its uptime and load: sysinfo gives every host the same figures.
-TEST(Sandbox, AHostCountsNoThreadsButItsOwnThroughSysinfo) {
-  const Outcome o = runHostile({"counts_threads_by_sysinfo"});
-  EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
-  EXPECT_EQ(o.lastWheels, (Wheels{0.1, 0.0}));
-}
-
-// Nor see or change which pages of a library every host may read the kernel caches, or watch
-// files: notes between hosts (robots, runs, students) again. The turn's
-// bits name the calls the kernel carried out (sees_the_page_cache.cpp).
-TEST(Sandbox, AHostSeesNothingOfThePageCacheNorWatchesFiles) {
-  const Outcome o = runHostile({"sees_the_page_cache"});
-  EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
-  EXPECT_EQ(o.lastWheels, (Wheels{0.1, 0.0}));
-}
-
 // A controller that answers each step just inside its deadline falls behind the run's pace and
 // fails within seconds, not after the run's 600 s.
 TEST(Sandbox, AControllerThatSleepsInEveryStepFallsBehindAndFails) {
@@ -334,30 +246,6 @@ TEST(Sandbox, AControllerThatSleepsInEveryStepFallsBehindAndFails) {
 
 // Why the namespaces layer was not applied on this machine (a container that forbids user
 // namespaces), or "" when it was.
-std::string withoutNamespaces(const Outcome& o) {
-  for (const sandbox::Layer& l : o.layers) {
-    if (l.name == "namespaces") return l.applied ? "" : l.note;
-  }
-  return "no namespaces layer";
-}
-
-// Its working folder holds 64 MB in all, whatever the size of each file.
-TEST(Sandbox, TheScratchFolderIsBoundedInTotal) {
-  const Outcome o = runHostile({"fills_scratch"});
-  if (const std::string why = withoutNamespaces(o); !why.empty()) GTEST_SKIP() << "the namespaces layer is not applied here: " << why;
-  EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
-  // The 64 MiB tmpfs takes four 15 MB files and 4 MB of the fifth (a megabyte is a whole write).
-  EXPECT_NEAR(o.lastWheels.forward / 0.01, 64.0, 1e-9);
-}
-
-// Processes and threads at once are bounded: 64, the host's own thread among them.
-TEST(Sandbox, ThreadsAreBoundedInNumber) {
-  const Outcome o = runHostile({"starts_many_threads"});
-  if (const std::string why = withoutNamespaces(o); !why.empty()) GTEST_SKIP() << "the namespaces layer is not applied here: " << why;
-  EXPECT_TRUE(o.failures.empty()) << o.failures[0].message;
-  EXPECT_NEAR(o.lastWheels.forward / 0.001, 63.0, 1e-6);
-}
-
 // Where frob runs as root, each host runs as a user and group of its own (#48 item 6): the two robots
 // of one run and a run beside them, so that none can signal, renice, re-pin or read another.
 TEST(Sandbox, EveryHostRunsAsAUserOfItsOwn) {
@@ -418,34 +306,6 @@ TEST(Sandbox, HostsThatCannotHaveACoreEachLeaveTheGradersCoreToIt) {
   ASSERT_TRUE(run.failures().empty()) << run.failures()[0].message;
   for (std::size_t i = 0; i < 4; ++i)
     EXPECT_EQ(run.recorder().steps().back().robots[i].wheels, (Wheels{0.01 * left, 0.0})) << "robot " << i << ", " << cores << " cores";
-}
-
-// Pictures are sampled in every run, filmed or not: a controller cannot drive one way for the film
-// and another for the grade.
-TEST(Sandbox, AControllerCannotTellAFilmedRunFromAGradedOne) {
-  for (const bool filmed : {false, true}) {
-    std::shared_ptr<ControllerHost> host = startHost({testing::hostileModule("careful_when_filmed")});
-    ASSERT_NE(host, nullptr);
-    worlds::Run run(room(), {}, host->driver({0}, filmed));
-    run.runUntil(0.5);
-    EXPECT_EQ(run.recorder().steps().back().robots[0].wheels, (Wheels{0.1, 0.0})) << (filmed ? "filmed" : "graded");
-  }
-}
-
-// Nor from what the channel's header says: it reads the same in a run graded alone, one graded in a
-// class (where the grader does not spin) and a filmed one. (The grader's spin was in it once.)
-TEST(Sandbox, TheHeaderReadsTheSameInEveryKindOfRun) {
-  std::vector<Wheels> seen;
-  for (const auto& [spin, filmed] : {std::pair{50'000, false}, std::pair{0, false}, std::pair{50'000, true}}) {
-    std::shared_ptr<ControllerHost> host = startHost({testing::hostileModule("reads_header")}, {.spinNanoseconds = std::uint64_t(spin)});
-    ASSERT_NE(host, nullptr);
-    worlds::Run run(room(), {}, host->driver({0}, filmed));
-    run.runUntil(0.5);
-    seen.push_back(run.recorder().steps().back().robots[0].wheels);
-  }
-  EXPECT_GT(seen[0].forward, 0.0) << "it could not read the header, so this proves nothing";
-  EXPECT_EQ(seen[1], seen[0]);
-  EXPECT_EQ(seen[2], seen[0]);
 }
 
 // Saying its task returned, and then driving on, only stops the robot: it is not asked again.
