@@ -11,6 +11,7 @@
 #include <fcntl.h>
 #include <openssl/evp.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -37,10 +38,11 @@ namespace {
 #define FROB_STRINGIFY(x) FROB_STRINGIFY2(x)
 constexpr const char* kEntrySymbol = FROB_STRINGIFY(FROB_CONTROLLER_SYMBOL);
 constexpr std::uintmax_t kModuleBytes = 64 << 20;  // largest compiled controller kept (a large one is 6 MB)
-// The compiler's stack: clang's parser recurses once per level of nesting (an `else if` chain of a few
-// thousand overflows the usual 8 MB, a crash that gives no grade); this much takes any nesting a
-// source within the size limit can hold, bar a chain of unary operators of 800 000 or more.
-constexpr std::uint64_t kCompilerStackBytes = 1ULL << 30;
+// The compiler's stack: bounded by its memory only. Clang's parser recurses once per level of nesting
+// (an `else if` chain of a few thousand overflows the usual 8 MB, a crash that gives no grade).
+// Unlimited, not merely large: glibc gives each thread a stack the size of a finite limit, and lld's
+// threads, one per core, would not fit in the compiler's memory; without a limit, 32 MB each.
+constexpr std::uint64_t kCompilerStackBytes = RLIM_INFINITY;
 // What clang says when a limit stopped it (strsignal's words for SIGXCPU and SIGXFSZ, and LLVM's when
 // memory ran out).
 constexpr const char* kLimitWords[] = {"CPU time limit exceeded", "File size limit exceeded", "LLVM ERROR: out of memory", "Allocation failed"};

@@ -379,6 +379,20 @@ TEST(ControllerFile, ADeepNestingCompilesInsteadOfCrashingTheCompiler) {
   EXPECT_TRUE(fs::exists(c.value().module));
 }
 
+// The compiler's large stack is not every thread's: a linker that starts a thread per core (lld, the
+// linker where there is no gold) links, as it did not when the stack was limited to 1 GB (glibc
+// gives each thread a stack the size of a finite limit, past the compiler's memory).
+TEST(ControllerFile, ALinkerWithAThreadPerCoreLinksBesideTheCompilersLargeStack) {
+  if (::access("/usr/bin/ld.lld", X_OK) != 0) GTEST_SKIP() << "no lld here";
+  const fs::path dir = freshFolder("lld_threads");
+  writeFile(dir / "go.cpp", kCollidingDrives);
+  CompilerSetup setup = setupIn(dir);
+  setup.flags.insert(setup.flags.end(), {"--ld-path=/usr/bin/ld.lld", "-Wl,--threads=16"});
+  std::string messages;
+  Result<CompiledController> c = compileControllerFile(dir / "go.cpp", setup, &messages);
+  ASSERT_TRUE(c.ok()) << c.error() << messages.substr(0, 2000);
+}
+
 // The cache knows a compile by SHA-256: these two files (a robot that drives, one that stands still)
 // share a 64-bit FNV-1a hash, which the cache was once keyed by, so the second was given the first's
 // module (the comments at their ends were searched for, in two minutes, to make them collide).

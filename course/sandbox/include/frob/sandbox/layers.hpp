@@ -24,7 +24,7 @@ struct Limits {
   std::uint64_t memoryBytes = 0;  ///< address space (malloc and new fail past it)
   std::uint64_t fileBytes = 0;    ///< largest file it may write (SIGXFSZ past it)
   std::uint64_t openFiles = 0;    ///< open file descriptors
-  std::uint64_t stackBytes = 0;   ///< the main thread's stack (0: as inherited)
+  std::uint64_t stackBytes = 0;   ///< the main thread's stack, at most its hard limit (0: as inherited)
 };
 
 /// Namespaces of its own: a user namespace (in which `tasks` counts only its own processes and
