@@ -311,7 +311,9 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
   const bool pch = !setup.precompiledHeader.empty() && fs::exists(setup.precompiledHeader);
   CacheKey key;
   key.add(text).add(setup.compiler);
+  key.add(std::to_string(companions.size()));
   for (const Companion& c : companions) key.add(c.file.filename().string()).add(c.text);
+  key.add(std::to_string(setup.flags.size()));
   for (const std::string& f : setup.flags) key.add(f);
   key.add(pch ? fileStamp(setup.precompiledHeader) : "no pch");
   key.add(fileStamp("/proc/self/exe"));

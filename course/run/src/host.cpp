@@ -55,11 +55,15 @@ std::vector<std::string> loadedFiles(const std::string& program, const std::stri
   std::string out;
   for (char buffer[4096]; spawned;) {
     const ssize_t n = ::read(read.get(), buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;
     out.append(buffer, static_cast<std::size_t>(n));
   }
   int status = 0;
-  if (!spawned || ::waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) return files;
+  pid_t reaped = -1;
+  while (spawned && (reaped = ::waitpid(pid, &status, 0)) < 0 && errno == EINTR) {
+  }
+  if (reaped != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) return files;
   // Lines such as "libc.so.6 => /lib/x86_64-linux-gnu/libc.so.6 (0x...)" and "/lib64/ld-linux-x86-64.so.2 (0x...)".
   std::istringstream lines(out);
   for (std::string line; std::getline(lines, line);) {
@@ -158,7 +162,8 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
     if (e.starts_with("LD_PRELOAD=")) preload = e.substr(11);
   }
   std::vector<std::string> system = loadedFiles(command.front(), preload);
-  if (system.empty()) system = {"/usr", "/lib", "/lib64"};
+  const bool listed = !system.empty();
+  if (!listed) system = {"/usr", "/lib", "/lib64"};
   program.files.read.insert(program.files.read.begin(), system.begin(), system.end());
   // AddressSanitizer reserves terabytes of address space: then memory is watched by its size instead of limited.
   impl->memoryLimited = !kSanitizedBuild && !d.checked;
@@ -170,6 +175,9 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
   impl->process = std::move(process.value());
   hostsStarted.fetch_add(1, std::memory_order_relaxed);
   impl->layers = impl->process.layers();
+  for (sandbox::Layer& l : impl->layers) {
+    if (l.name == "landlock" && !listed) l.note += "; the system's folders whole (the loader did not list the host's libraries)";
+  }
   impl->runDeadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(d.runSeconds));
 
   // It loads the modules at once and answers what they declared.

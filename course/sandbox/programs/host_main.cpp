@@ -128,9 +128,9 @@ void step(const Channel& channel, std::vector<Driven>& driven, const Instant& no
                   : done      ? StepReply::State::Done
                               : StepReply::State::Running;
     reply.hasPicture = true;
-    if (!writeFramed(channel.replyArea(i), reply) && !wasFailed) {
-      // A picture too large for the reply fails its robot, saying so (a reply that is still too large is
-      // cut, and the trusted side reports it).
+    if (!writeFramed(channel.replyArea(i), reply) && !wasFailed && reply.failure.empty() && !reply.picture.shapes().empty()) {
+      // A picture too large for the reply fails its robot, saying so (a reply still too large without it,
+      // its task records, is cut, and the trusted side reports it).
       std::size_t points = 0;
       for (const Shape& shape : reply.picture.shapes()) points += shape.points.size();
       char why[320];

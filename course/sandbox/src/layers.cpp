@@ -335,7 +335,8 @@ Layer restrictSyscalls(SyscallPolicy policy) {
   if (rc == 0) rc = ::seccomp_load(ctx);
   ::seccomp_release(ctx);
   layer.applied = rc == 0;
-  layer.note = rc == 0 ? (controller ? "no sockets, exec, processes, tracing, IPC objects, file locks, or signals to or scheduling of others"
+  layer.note = rc == 0 ? (controller ? "no sockets, exec, processes, tracing, IPC objects, file locks, or signals to or scheduling of others; "
+                                       "sysinfo the same for all"
                                      : "no sockets, tracing or scheduling of others")
                        : std::string("not applied: ") + std::strerror(-rc);
   return layer;
@@ -364,7 +365,8 @@ bool answerSysinfo(void* context) {
 }
 
 void onSigsys(int, siginfo_t* info, void* context) {
-  if (info->si_syscall == SYS_sysinfo && answerSysinfo(context)) return;
+  constexpr int kSentBySeccomp = 1;  // SYS_SECCOMP, the si_code of a trap (not a SIGSYS a controller raised itself)
+  if (info->si_code == kSentBySeccomp && info->si_syscall == SYS_sysinfo && answerSysinfo(context)) return;
   if (trappedSyscall != nullptr) *trappedSyscall = info->si_syscall;
   ::signal(SIGSYS, SIG_DFL);  // the signal is blocked in this handler; it kills once the handler returns
   ::raise(SIGSYS);
