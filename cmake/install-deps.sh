@@ -6,7 +6,6 @@ packages=(
   clangd-16                                        # editor completion (frob init's test)
   clang-16 libclang-rt-16-dev                      # the compiler (see README: GCC 12 breaks coroutines), its sanitizers
   binutils                                         # addr2line: names the line in a checked run's report
-  lld                                              # the linker where there is no gold (Debian 13): a test links with it
   libeigen3-dev libbox2d-dev libassimp-dev         # maths, physics, meshes
   libseccomp-dev                                   # the controller host's system-call filter
   libzip-dev                                       # the Gradescope autograder zip
