@@ -1,5 +1,6 @@
 #include "frob/run/controller_file.hpp"
 
+#include "cache_key.hpp"
 #include "controller_setup.inc"
 #include "frob/base/layout.hpp"
 #include "frob/run/scratch.hpp"
@@ -9,7 +10,6 @@
 #include <cxxabi.h>
 #include <dlfcn.h>
 #include <fcntl.h>
-#include <openssl/evp.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -274,32 +274,6 @@ std::string marked(const std::string& text, const fs::path& shown) {
   const bool marks = text.starts_with(bom);
   return (marks ? std::string(bom) : std::string()) + line + "\"\n" + (marks ? text.substr(bom.size()) : text);
 }
-
-// What the cache knows a compile by: SHA-256 of its fields, each after its length, so that no two
-// different compiles share a module (a 64-bit FNV could be made to collide in minutes: a file that
-// does nothing graded with another's module).
-class CacheKey {
- public:
-  CacheKey() : ctx_(EVP_MD_CTX_new(), EVP_MD_CTX_free) { EVP_DigestInit_ex(ctx_.get(), EVP_sha256(), nullptr); }
-  CacheKey& add(std::string_view field) {
-    const std::uint64_t size = field.size();
-    EVP_DigestUpdate(ctx_.get(), &size, sizeof size);
-    EVP_DigestUpdate(ctx_.get(), field.data(), field.size());
-    return *this;
-  }
-  // The first 128 bits in hex: a module's name.
-  [[nodiscard]] std::string hex() {
-    unsigned char digest[EVP_MAX_MD_SIZE];
-    unsigned int length = 0;
-    EVP_DigestFinal_ex(ctx_.get(), digest, &length);
-    char out[33] = {};
-    for (unsigned int i = 0; i < 16 && i < length; ++i) std::snprintf(out + 2 * i, 3, "%02x", digest[i]);
-    return out;
-  }
-
- private:
-  std::unique_ptr<EVP_MD_CTX, void (*)(EVP_MD_CTX*)> ctx_;
-};
 
 // Compiles `text`, the contents of `source`, with `companions` (the .cpp files among them are
 // compiled too), from copies in a folder of the compiler's own: it reads no file of the submission's,
