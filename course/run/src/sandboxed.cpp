@@ -65,19 +65,22 @@ Result<Sandboxed> Sandboxed::start(const SandboxedDef& def) {
   args.push_back("--");
   args.insert(args.end(), def.command.begin(), def.command.end());
 
-  // Each descriptor goes to a high number first, so that no target overwrites a later source.
+  // Each descriptor, the report's too, goes first to a number above all of them, then to its own:
+  // no copy overwrites a source still to be copied, wherever the sources are (the report's pipe
+  // takes the lowest free numbers, which another thread may just have freed below `keep`).
+  std::vector<int> sources = def.fds;
+  sources.push_back(report.value().write.get());
+  const int high = std::max(keep + 1, *std::max_element(sources.begin(), sources.end()) + 1);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  constexpr int kHigh = 200;
-  for (int k = 0; k < keep; ++k) {
-    if (def.fds[k] < 0) {
-      posix_spawn_file_actions_addopen(&actions, kHigh + k, "/dev/null", O_RDWR, 0);
+  for (int k = 0; k <= keep; ++k) {
+    if (sources[k] < 0) {
+      posix_spawn_file_actions_addopen(&actions, high + k, "/dev/null", O_RDWR, 0);
     } else {
-      posix_spawn_file_actions_adddup2(&actions, def.fds[k], kHigh + k);
+      posix_spawn_file_actions_adddup2(&actions, sources[k], high + k);
     }
   }
-  for (int k = 0; k < keep; ++k) posix_spawn_file_actions_adddup2(&actions, kHigh + k, k);
-  posix_spawn_file_actions_adddup2(&actions, report.value().write.get(), keep);
+  for (int k = 0; k <= keep; ++k) posix_spawn_file_actions_adddup2(&actions, high + k, k);
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
