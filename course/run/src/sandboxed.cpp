@@ -111,7 +111,10 @@ Result<Sandboxed> Sandboxed::start(const SandboxedDef& def) {
     const std::string flags = line.substr(a + 1, b - a - 1);  // applied, then required
     j.layers_.push_back({line.substr(0, a), flags.starts_with("1"), flags.ends_with("1"), line.substr(b + 1)});
   }
-  if (j.layers_.empty()) return graderFailure("the sandbox " + layout().sandbox.string() + " did not start: status " + std::to_string(j.wait()));
+  if (j.layers_.empty()) {  // no report: whatever runs is unconfirmed, and is killed (one that had ended keeps its status)
+    j.kill();
+    return graderFailure("the sandbox " + layout().sandbox.string() + " did not start: status " + std::to_string(j.wait()));
+  }
   return j;
 }
 
