@@ -174,15 +174,8 @@ void runCheck(const GradeDef& def, const CompiledController& compiled, const Che
   }
   std::optional<Ran> own;
   if (ran == nullptr) {
-    struct Slot {  // one of the class's run slots, held for the run
-      std::counting_semaphore<>* slots;
-      explicit Slot(std::counting_semaphore<>* s) : slots(s) {
-        if (slots != nullptr) slots->acquire();
-      }
-      ~Slot() {
-        if (slots != nullptr) slots->release();
-      }
-    } slot(def.runSlots.get());
+    std::optional<RunCores::Held> core;  // the core of its own this run of a class holds
+    if (def.runCores) core.emplace(def.runCores->take());
     // What a controller prints in a check students do not see goes nowhere: it could print what it
     // senses in a hidden world, for whoever reads frob's output (a CI log) to see.
     const bool seen = check.visibility == Visibility::Visible;

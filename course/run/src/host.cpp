@@ -115,6 +115,7 @@ Result<std::shared_ptr<ControllerHost>> ControllerHost::start(const std::vector<
 
   if (Status s = impl->channel.create(kSetupBytes, std::max<std::uint32_t>(impl->def.robots, 1), kFrameBytes, kReplyBytes); !s)
     return failure(s.error());
+  impl->header().hostSpinNanoseconds = impl->def.hostSpinNanoseconds;
   // The wake-up is a pipe, not an object both sides hold: the grader's end is an open file of its
   // own, whose non-blocking flag nothing in the host can clear (fcntl, ioctl FIONBIO), nor can it read
   // the wake-ups meant for the grader.

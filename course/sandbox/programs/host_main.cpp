@@ -172,7 +172,7 @@ int main(int argc, char** argv) {
   std::vector<Driven> driven;
   Clock clock(1.0);
   for (;;) {
-    waitFutex(header->request, sequence, kHostSpinNanoseconds);
+    waitFutex(header->request, sequence, header->hostSpinNanoseconds);
     if (header->command == Command::Build) {
       clock = Clock(header->dt);
       driven = build(channel, entries);

@@ -258,9 +258,16 @@ Layer restrictSyscalls(SyscallPolicy policy) {
     const scmp_arg_cmp other{.arg = arg, .op = SCMP_CMP_NE, .datum_a = 0, .datum_b = 0};
     if (rc == 0) rc = ::seccomp_rule_add_array(ctx, action, call, 1, &other);
   };
-  for (int call : {SCMP_SYS(sched_setaffinity), SCMP_SYS(sched_setscheduler), SCMP_SYS(sched_setparam), SCMP_SYS(sched_setattr), SCMP_SYS(prlimit64),
-                   SCMP_SYS(migrate_pages), SCMP_SYS(move_pages)}) {
+  for (int call : {SCMP_SYS(sched_setscheduler), SCMP_SYS(sched_setparam), SCMP_SYS(sched_setattr), SCMP_SYS(prlimit64), SCMP_SYS(migrate_pages),
+                   SCMP_SYS(move_pages)}) {
     onlySelf(refuse, call, 0);
+  }
+  // A controller keeps to the cores its run was given (a class's runs share the cores a run each):
+  // its threads, spinning on another run's core, would slow that run until it fell behind.
+  if (controller) {
+    deny(SCMP_SYS(sched_setaffinity));
+  } else {
+    onlySelf(refuse, SCMP_SYS(sched_setaffinity), 0);
   }
   for (int call : {SCMP_SYS(setpriority), SCMP_SYS(ioprio_set)}) {
     onlySelf(refuse, call, 1);  // who
@@ -401,8 +408,9 @@ std::string describeSyscall(std::int32_t number) {
           SCMP_SYS(mq_timedreceive), SCMP_SYS(mq_notify), SCMP_SYS(mq_getsetattr)}))
     return "make a kernel object shared between processes (System V IPC or a POSIX message queue)";
   if (is({SCMP_SYS(fcntl)})) return "ask for signals on a file (fcntl F_SETOWN, F_SETSIG or F_SETLEASE)";
-  if (is({SCMP_SYS(sched_setaffinity), SCMP_SYS(sched_setscheduler), SCMP_SYS(sched_setparam), SCMP_SYS(sched_setattr), SCMP_SYS(prlimit64),
-          SCMP_SYS(migrate_pages), SCMP_SYS(move_pages), SCMP_SYS(setpriority), SCMP_SYS(ioprio_set)}))
+  if (is({SCMP_SYS(sched_setaffinity)})) return "choose the cores it runs on";
+  if (is({SCMP_SYS(sched_setscheduler), SCMP_SYS(sched_setparam), SCMP_SYS(sched_setattr), SCMP_SYS(prlimit64), SCMP_SYS(migrate_pages),
+          SCMP_SYS(move_pages), SCMP_SYS(setpriority), SCMP_SYS(ioprio_set)}))
     return "change the scheduling, priority or limits of another process";
   char* name = ::seccomp_syscall_resolve_num_arch(SCMP_ARCH_NATIVE, number);
   std::string what = std::string("make the system call ") + (name != nullptr ? name : std::to_string(number).c_str());

@@ -6,6 +6,7 @@
 #include "../../support/unloadable_program.hpp"
 #include "../sandbox/hostile.hpp"
 #include "frob/frob.hpp"
+#include "frob/run/run_cores.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/world_file.hpp"
 #include "host_testing.hpp"
@@ -119,6 +120,7 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"opens_socket", "ada: tried to open a network socket (not allowed) at t = 0.50 s"},
         Case{"signals_parent", "ada: tried to signal another process (not allowed) at t = 0.50 s"},
         Case{"renices_others", "ada: tried to change the scheduling, priority or limits of another process (not allowed) at t = 0.50 s"},
+        Case{"repins_itself", "ada: tried to choose the cores it runs on (not allowed) at t = 0.50 s"},
         Case{"shares_memory",
              "ada: tried to make a kernel object shared between processes (System V IPC or a POSIX message queue) (not "
              "allowed) at t = 0.50 s"},
@@ -305,7 +307,28 @@ TEST(Sandbox, HostsThatCannotHaveACoreEachLeaveTheGradersCoreToIt) {
   run.runUntil(0.1);
   ASSERT_TRUE(run.failures().empty()) << run.failures()[0].message;
   for (std::size_t i = 0; i < 4; ++i)
-    EXPECT_EQ(run.recorder().steps().back().robots[i].wheels, (Wheels{0.01 * left, 0.0})) << "robot " << i << ", " << cores << " cores";
+    EXPECT_EQ(run.recorder().steps().back().robots[i].wheels.forward, 0.01 * left) << "robot " << i << ", " << cores << " cores";
+}
+
+// A run of a class holds a core of its own (run_cores.hpp): its hosts run there alone with its
+// grader, sleeping while it simulates, and the grader's thread has its cores back when the hold ends.
+TEST(Sandbox, TheHostsOfARunThatHoldsACoreRunOnItAlone) {
+  cpu_set_t before, after;
+  ASSERT_EQ(::sched_getaffinity(0, sizeof before, &before), 0);
+  RunCores cores;
+  {
+    const RunCores::Held held = cores.take();
+    // One host: left to itself, it could run on every core.
+    Result<RobotHosts> hosts =
+        RobotHosts::start({testing::hostileModule("counts_its_cores")}, {"counts_its_cores"}, {0}, 1, {.hostSpinNanoseconds = 0});
+    ASSERT_TRUE(hosts.ok()) << hosts.error();
+    worlds::Run run(room(1), {}, hosts.value().driver(false));
+    run.runUntil(0.1);
+    ASSERT_TRUE(run.failures().empty()) << run.failures()[0].message;
+    EXPECT_EQ(run.recorder().steps().back().robots[0].wheels, (Wheels{0.01, 0.001 * (held.core() + 1)}));
+  }
+  ASSERT_EQ(::sched_getaffinity(0, sizeof after, &after), 0);
+  EXPECT_TRUE(CPU_EQUAL(&before, &after));
 }
 
 // Saying its task returned, and then driving on, only stops the robot: it is not asked again.

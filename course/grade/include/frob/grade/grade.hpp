@@ -11,6 +11,7 @@
 #include "frob/grade/rubric.hpp"
 #include "frob/grade/wheel_log.hpp"
 #include "frob/run/host.hpp"
+#include "frob/run/run_cores.hpp"
 #include "frob/run/session.hpp"
 
 #include <cstdint>
@@ -18,7 +19,6 @@
 #include <functional>
 #include <memory>
 #include <optional>
-#include <semaphore>
 #include <string>
 #include <vector>
 
@@ -36,10 +36,9 @@ struct GradeDef {
   std::optional<double> daysLate;  ///< how long after its due date it was submitted, days (submissionLateness()); unset: not known
   CompilerSetup compiler = compilerSetup();
   std::optional<KeptWorlds> kept;  ///< the secret's hidden worlds to grade in; unset: those of fairHiddenWorlds()
-  /// Runs allowed at once, shared by the grades of a class (gradeAll sets it): a run's processes
-  /// spin while they wait for each other, so runs that share a core slow each other down more than
-  /// they gain; compiles are not limited. Unset: any number.
-  std::shared_ptr<std::counting_semaphore<>> runSlots;
+  /// The cores the runs of a class share, a core each (gradeAll sets it when runs cannot have two
+  /// cores each: see run_cores.hpp); compiles are not limited. Unset: runs go anywhere, any number.
+  std::shared_ptr<RunCores> runCores;
 };
 
 /// The hidden worlds no student can find unfair: for each check that draws worlds from the secret,
@@ -147,7 +146,8 @@ struct ClassHooks {
 };
 
 /// Grades each of `submissions` (a class), `jobs` at a time, in their order; `progress(done, total)`
-/// is told after each. With more runs than cores, the controller hosts sleep rather than spin.
+/// is told after each. When runs cannot have two cores each, each takes one of its own, where its
+/// controller hosts sleep while the grader simulates, rather than spin.
 [[nodiscard]] std::vector<Grade> gradeAll(GradeDef def, const std::vector<std::filesystem::path>& submissions, int jobs,
                                           const std::function<void(std::size_t done, std::size_t total)>& progress = {},
                                           const ClassHooks& hooks = {});

@@ -38,6 +38,8 @@ struct HostDef {
   std::uint64_t scratchBytes = 64ULL << 20;      ///< all the files it writes there
   std::uint64_t tasks = 64;                      ///< its processes and threads at once
   std::uint64_t spinNanoseconds = 50'000;        ///< the grader spins this long for a reply before it sleeps
+  std::uint64_t hostSpinNanoseconds = 50'000;    ///< the host spins this long for its next frame before it sleeps: the same in
+                                                 ///< every run of a grade, so that no controller can tell a hidden run by it
   std::function<void(std::string_view)> output;  ///< where its output goes; empty: this process's stderr
   std::filesystem::path program;                 ///< the host program; empty: frob-controller-host (frob::layout())
   bool checked = false;                          ///< its modules were compiled with compilerSetup(true): load the sanitizers' runtime,

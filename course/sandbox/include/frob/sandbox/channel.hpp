@@ -21,10 +21,7 @@
 namespace frob::sandbox {
 
 inline constexpr std::uint32_t kMagic = 0x424f5246;  // "FROB"
-inline constexpr std::uint32_t kVersion = 4;         // 4: a reply may say Done
-/// How long the host spins on the request before it sleeps: the same in every kind of run (it
-/// yields the core meanwhile), so that nothing a controller can read tells one kind from another.
-inline constexpr std::uint64_t kHostSpinNanoseconds = 50'000;
+inline constexpr std::uint32_t kVersion = 5;         // 5: the trusted side sets the host's spin
 /// The file descriptors a host finds its channel on.
 inline constexpr int kChannelFd = 3, kWakeFd = 4;
 
@@ -46,12 +43,13 @@ struct Header {
   std::uint32_t version = kVersion;
   // Written by the trusted side before it rings the request.
   Command command = Command::Load;
-  std::uint32_t robots = 0;      ///< robot areas in the channel
-  std::uint64_t setupBytes = 0;  ///< size of the setup area
-  std::uint64_t inBytes = 0;     ///< size of each robot's frame area
-  std::uint64_t outBytes = 0;    ///< size of each robot's reply area
-  std::int64_t step = 0;         ///< the step to sample (Step)
-  double dt = 0.0;               ///< the run's step, seconds (Build)
+  std::uint32_t robots = 0;               ///< robot areas in the channel
+  std::uint64_t setupBytes = 0;           ///< size of the setup area
+  std::uint64_t inBytes = 0;              ///< size of each robot's frame area
+  std::uint64_t outBytes = 0;             ///< size of each robot's reply area
+  std::int64_t step = 0;                  ///< the step to sample (Step)
+  double dt = 0.0;                        ///< the run's step, seconds (Build)
+  std::uint64_t hostSpinNanoseconds = 0;  ///< how long the host spins on the request before it sleeps (it yields the core meanwhile)
   Doorbell request;
   Doorbell reply;
   // Written by the host: what it was doing, and what it tried that was refused.
