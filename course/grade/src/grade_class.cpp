@@ -22,6 +22,10 @@ namespace fs = std::filesystem;
 std::vector<Grade> gradeAll(GradeDef def, const std::vector<fs::path>& submissions, int jobs,
                             const std::function<void(std::size_t, std::size_t)>& progress, const ClassHooks& hooks) {
   jobs = std::clamp(jobs, 1, std::max<int>(1, static_cast<int>(submissions.size())));
+  std::vector<Grade> grades(submissions.size());
+  if (!def.kept) {  // the hidden worlds are checked once for the class; where that fails, each grade says why
+    if (Result<KeptWorlds> fair = fairHiddenWorlds(def)) def.kept = fair.value();
+  }
   // Each run is the grader and a host per robot, taking turns. With two cores a run they spin while
   // they wait, and a step's handover costs nothing; runs that share the cores so would take them from
   // each other at every step, so then each run holds a core of its own, where its hosts sleep while
@@ -29,10 +33,6 @@ std::vector<Grade> gradeAll(GradeDef def, const std::vector<fs::path>& submissio
   if (auto cores = std::make_shared<RunCores>(); 2 * static_cast<std::size_t>(jobs) > cores->size()) {
     def.runCores = std::move(cores);
     def.host.hostSpinNanoseconds = 0;
-  }
-  std::vector<Grade> grades(submissions.size());
-  if (!def.kept) {  // the hidden worlds are checked once for the class; where that fails, each grade says why
-    if (Result<KeptWorlds> fair = fairHiddenWorlds(def)) def.kept = fair.value();
   }
   std::atomic<std::size_t> next{0};
   std::size_t done = 0;

@@ -1,5 +1,7 @@
 #include "frob/run/run_cores.hpp"
 
+#include <unistd.h>
+
 #include <utility>
 
 namespace frob::course {
@@ -36,7 +38,8 @@ RunCores::Held RunCores::take() {
   cpu_set_t one;
   CPU_ZERO(&one);
   CPU_SET(h.core_, &one);
-  h.pinned_ = ::sched_getaffinity(0, sizeof h.before_, &h.before_) == 0 && ::sched_setaffinity(0, sizeof one, &one) == 0;
+  h.thread_ = ::gettid();
+  h.pinned_ = ::sched_getaffinity(h.thread_, sizeof h.before_, &h.before_) == 0 && ::sched_setaffinity(h.thread_, sizeof one, &one) == 0;
   return h;
 }
 
@@ -49,6 +52,7 @@ RunCores::Held& RunCores::Held::operator=(Held&& o) noexcept {
     release();
     from_ = std::exchange(o.from_, nullptr);
     core_ = std::exchange(o.core_, -1);
+    thread_ = std::exchange(o.thread_, 0);
     pinned_ = std::exchange(o.pinned_, false);
     before_ = o.before_;
   }
@@ -57,7 +61,7 @@ RunCores::Held& RunCores::Held::operator=(Held&& o) noexcept {
 
 void RunCores::Held::release() {
   if (from_ == nullptr) return;
-  if (pinned_) ::sched_setaffinity(0, sizeof before_, &before_);
+  if (pinned_) ::sched_setaffinity(thread_, sizeof before_, &before_);
   {
     const std::lock_guard<std::mutex> lock(from_->mutex_);
     from_->free_.push_back(core_);

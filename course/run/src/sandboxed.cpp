@@ -65,22 +65,28 @@ Result<Sandboxed> Sandboxed::start(const SandboxedDef& def) {
   args.push_back("--");
   args.insert(args.end(), def.command.begin(), def.command.end());
 
-  // Each descriptor, the report's too, goes first to a number above all of them, then to its own:
-  // no copy overwrites a source still to be copied, wherever the sources are (the report's pipe
-  // takes the lowest free numbers, which another thread may just have freed below `keep`).
+  // Each descriptor, the report's too, is copied here to a number above `keep` (the lowest free
+  // ones, so within the open-files limit), and the program's copies made from those: no copy
+  // overwrites a source, wherever the sources are (the report's pipe takes the lowest free numbers,
+  // which another thread may just have freed below `keep`). Ours close-on-exec, and when we return.
   std::vector<int> sources = def.fds;
   sources.push_back(report.value().write.get());
-  const int high = std::max(keep + 1, *std::max_element(sources.begin(), sources.end()) + 1);
+  std::vector<sandbox::Fd> copies;
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  for (int k = 0; k <= keep; ++k) {
+  int added = 0;
+  for (int k = 0; k <= keep && added == 0; ++k) {
     if (sources[k] < 0) {
-      posix_spawn_file_actions_addopen(&actions, high + k, "/dev/null", O_RDWR, 0);
+      added = posix_spawn_file_actions_addopen(&actions, k, "/dev/null", O_RDWR, 0);
     } else {
-      posix_spawn_file_actions_adddup2(&actions, sources[k], high + k);
+      copies.emplace_back(::fcntl(sources[k], F_DUPFD_CLOEXEC, keep + 1));
+      added = copies.back().valid() ? posix_spawn_file_actions_adddup2(&actions, copies.back().get(), k) : errno;
     }
   }
-  for (int k = 0; k <= keep; ++k) posix_spawn_file_actions_adddup2(&actions, high + k, k);
+  if (added != 0) {
+    posix_spawn_file_actions_destroy(&actions);
+    return graderFailure("cannot give the sandbox its descriptors: " + std::string(std::strerror(added)));
+  }
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -89,7 +95,8 @@ Result<Sandboxed> Sandboxed::start(const SandboxedDef& def) {
   j.user_ = std::move(user.value());
   const int err = ::posix_spawn(&j.pid_, argv[0], &actions, nullptr, argv.data(), noEnv);
   posix_spawn_file_actions_destroy(&actions);
-  report.value().write.reset();  // so that the report ends when frob-sandbox closes its copy
+  report.value().write.reset();  // ours, and the copies: the report ends when frob-sandbox closes its own
+  copies.clear();
   if (err != 0) {
     j.pid_ = 0;
     return graderFailure("cannot start the sandbox " + layout().sandbox.string() + ": " + std::strerror(err));

@@ -37,20 +37,25 @@ std::string echoed(std::vector<int> fds, sandbox::Pipe& out) {
 // takes them, below the descriptors the program is given, and must still be the report.
 TEST(Sandboxed, TheReportArrivesWhenItsPipeTakesANumberTheProgramIsGiven) {
   sandbox::Pipe out;
-  {  // at 20 and up, clear of the numbers below
+  {  // at 30 and up, clear of the numbers below
     Result<sandbox::Pipe> made = sandbox::openPipe("test");
     ASSERT_TRUE(made.ok());
-    out.read.reset(::fcntl(made.value().read.get(), F_DUPFD_CLOEXEC, 20));
-    out.write.reset(::fcntl(made.value().write.get(), F_DUPFD_CLOEXEC, 20));
+    out.read.reset(::fcntl(made.value().read.get(), F_DUPFD_CLOEXEC, 30));
+    out.write.reset(::fcntl(made.value().write.get(), F_DUPFD_CLOEXEC, 30));
   }
-  // Hold every number up to 9 that is free, then free the two lowest of them: the report's pipe
-  // takes those two, below the 10 descriptors the program is given.
+  // Hold every number up to 19 that is free, then free the two lowest of them: the report's pipe
+  // takes those two, below the 20 descriptors the program is given.
   std::vector<sandbox::Fd> held;
-  while (held.empty() || held.back().get() < 9) held.emplace_back(::open("/dev/null", O_RDONLY | O_CLOEXEC));
-  ASSERT_GE(held.size(), 3u);
+  while (held.empty() || held.back().get() < 19) {
+    held.emplace_back(::open("/dev/null", O_RDONLY | O_CLOEXEC));
+    ASSERT_TRUE(held.back().valid());
+  }
+  ASSERT_GE(held.size(), 3u) << "this test's process holds most numbers below 20 already";
   held[0].reset(), held[1].reset();
   const int w = out.write.get(), null = held.back().get();
-  EXPECT_EQ(echoed({-1, w, w, null, null, null, null, null, null, null}, out), "started\n");
+  std::vector<int> fds(20, null);
+  fds[0] = -1, fds[1] = fds[2] = w;
+  EXPECT_EQ(echoed(fds, out), "started\n");
 }
 
 // Descriptors given at high numbers, where copies are made on the way, arrive as themselves.

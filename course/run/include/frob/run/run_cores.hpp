@@ -5,6 +5,7 @@
 /// they take them from each other at every step's handover.
 
 #include <sched.h>
+#include <sys/types.h>
 
 #include <condition_variable>
 #include <cstddef>
@@ -23,7 +24,8 @@ class RunCores {
   RunCores& operator=(const RunCores&) = delete;
 
   /// A core held by a run. The thread that took it runs on that core alone, and so does every program
-  /// it starts meanwhile (its hosts), until the hold ends and the thread's cores are what they were.
+  /// it starts meanwhile (its hosts), until the hold ends (on any thread) and that thread's cores
+  /// are what they were.
   class Held {
    public:
     Held() = default;
@@ -38,6 +40,7 @@ class RunCores {
     void release();
     RunCores* from_ = nullptr;
     int core_ = -1;
+    pid_t thread_ = 0;     // the thread that took it, whose cores are put back
     bool pinned_ = false;  // the thread's cores were changed (best effort: a refusal leaves it where it was)
     cpu_set_t before_{};
   };
