@@ -302,20 +302,22 @@ Ran replayed(const WheelLog& log, const worlds::WorldDef& world, double dt, std:
 }  // namespace
 
 Grade grade(const GradeDef& def, const fs::path& submission) {
+  return gradeWith(def, submission, [&]() -> Result<KeptWorlds> { return def.kept ? *def.kept : fairHiddenWorlds(def); });
+}
+
+Grade detail::gradeWith(const GradeDef& def, const fs::path& submission, const std::function<Result<KeptWorlds>()>& kept) {
   const auto start = std::chrono::steady_clock::now();
   Grade g{.assignment = def.assignment, .submission = submission.string(), .submissionHash = submissionHash(submission), .startedAt = utcNow()};
-  GradeDef checked = def;
-  if (!def.kept) {
-    if (Result<KeptWorlds> fair = fairHiddenWorlds(def)) {
-      checked.kept = fair.value();
-    } else {
-      g.notes.push_back("the hidden worlds were not checked against the reference solution: " + fair.error());
-    }
-  }
   std::string messages;
   Result<CompiledController> compiled = compileSubmission(submission, def.compiler, &messages);
   if (!compiled)
     (isGraderFailure(compiled.status()) ? g.graderFailure : g.compileError) = compiled.error() + (messages.empty() ? "" : "\n" + messages);
+  GradeDef checked = def;
+  if (Result<KeptWorlds> fair = kept()) {
+    checked.kept = fair.value();
+  } else {
+    g.notes.push_back("the hidden worlds were not checked against the reference solution: " + fair.error());
+  }
   SharedRuns shared;
   for (const Check& check : checked.rubric.checks) {
     if (checked.visibleOnly && check.visibility != Visibility::Visible) continue;

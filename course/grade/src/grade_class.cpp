@@ -7,11 +7,13 @@
 #include "frob/run/format.hpp"
 #include "frob/worlds/registry.hpp"
 #include "frob/worlds/world_file.hpp"
+#include "runs.hpp"
 
 #include <algorithm>
 #include <atomic>
 #include <cinttypes>
 #include <fstream>
+#include <future>
 #include <mutex>
 #include <thread>
 
@@ -23,9 +25,6 @@ std::vector<Grade> gradeAll(GradeDef def, const std::vector<fs::path>& submissio
                             const std::function<void(std::size_t, std::size_t)>& progress, const ClassHooks& hooks) {
   jobs = std::clamp(jobs, 1, std::max<int>(1, static_cast<int>(submissions.size())));
   std::vector<Grade> grades(submissions.size());
-  if (!def.kept) {  // the hidden worlds are checked once for the class; where that fails, each grade says why
-    if (Result<KeptWorlds> fair = fairHiddenWorlds(def)) def.kept = fair.value();
-  }
   // Each run is the grader and a host per robot, taking turns. With two cores a run they spin while
   // they wait, and a step's handover costs nothing; runs that share the cores so would take them from
   // each other at every step, so then each run holds a core of its own, where its hosts sleep while
@@ -34,6 +33,11 @@ std::vector<Grade> gradeAll(GradeDef def, const std::vector<fs::path>& submissio
     def.runCores = std::move(cores);
     def.host.hostSpinNanoseconds = 0;
   }
+  // The hidden worlds are checked once for the class, beside the jobs' first compiles (its runs too
+  // hold a core); where that fails, each grade says why.
+  std::shared_future<Result<KeptWorlds>> fair;
+  if (!def.kept && !submissions.empty()) fair = std::async(std::launch::async, [&def] { return fairHiddenWorlds(def); }).share();
+  const auto kept = [&]() -> Result<KeptWorlds> { return def.kept ? *def.kept : fair.get(); };
   std::atomic<std::size_t> next{0};
   std::size_t done = 0;
   std::mutex told;
@@ -42,9 +46,9 @@ std::vector<Grade> gradeAll(GradeDef def, const std::vector<fs::path>& submissio
       if (hooks.logs) {
         GradeDef own = def;
         own.logs = hooks.logs(k);
-        grades[k] = grade(own, submissions[k]);
+        grades[k] = detail::gradeWith(own, submissions[k], kept);
       } else {
-        grades[k] = grade(def, submissions[k]);
+        grades[k] = detail::gradeWith(def, submissions[k], kept);
       }
       if (hooks.graded) hooks.graded(k, grades[k]);
       const std::lock_guard<std::mutex> lock(told);

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
 #include <tuple>
@@ -39,6 +40,10 @@ struct SharedRuns {
 /// judged again instead of made twice.
 void runCheck(const GradeDef& def, const CompiledController& compiled, const Check& check, const WorldRef& ref, const worlds::WorldDef& world,
               RunGrade& r, Grade& g, SharedRuns* shared = nullptr);
+
+/// grade(), in the hidden worlds `kept` gives: asked once the submission has compiled, so that a
+/// class compiles while they are checked.
+[[nodiscard]] Grade gradeWith(const GradeDef& def, const std::filesystem::path& submission, const std::function<Result<KeptWorlds>()>& kept);
 
 /// A file's bytes; empty when it cannot be read.
 [[nodiscard]] std::string fileText(const std::filesystem::path& file);

@@ -19,14 +19,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A controller that stands still.
+constexpr const char* kStill = "#include <frob/frob.hpp>\nusing namespace frob;\nBehavior<Wheels> still(const Robot&) { return wheels(0.0, 0.0); }\n"
+                               "FROB_CONTROLLER(still)\n";
+
 class HiddenWorlds : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::path(::testing::TempDir()) / "hidden_worlds_test" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::remove_all(dir_);
     fs::create_directories(dir_ / "assignment");
-    std::ofstream(dir_ / "assignment" / "still.cpp") << "#include <frob/frob.hpp>\nusing namespace frob;\nBehavior<Wheels> still(const Robot&) { "
-                                                        "return wheels(0.0, 0.0); }\nFROB_CONTROLLER(still)\n";
+    std::ofstream(dir_ / "assignment" / "still.cpp") << kStill;
     def_ = {.assignment = "hidden", .secret = "test-secret"};
     def_.compiler.cacheDir = fs::path(FROB_TEST_CACHE_DIR);
   }
@@ -83,6 +86,12 @@ TEST_F(HiddenWorlds, AreTheFirstDrawsTheReferencePasses) {
   EXPECT_EQ(kept.value(), (KeptWorlds{{"near the centre", expected}}));
   const Grade g = grade(def, dir_ / "assignment" / "still.cpp");
   EXPECT_EQ(g.score(), g.maxScore()) << g.checks[0].output();
+  // A class grades in them too, each student in draws of their own (checked beside the compiles).
+  fs::create_directories(dir_ / "class");
+  for (const char* student : {"ann", "ben", "cat"})
+    std::ofstream(dir_ / "class" / (std::string(student) + ".cpp")) << "// " << student << "\n" << kStill;
+  fs::remove_all(dir_ / "cache" / "hidden-worlds");
+  for (const Grade& k : gradeAll(def, submissionsIn(dir_ / "class"), 2)) EXPECT_EQ(k.score(), k.maxScore()) << k.submission << k.checks[0].output();
 
   // Kept for this reference and this simulation: what another build of the simulation kept is drawn anew.
   const fs::path cache = keptWorldsFile(def);
@@ -110,6 +119,12 @@ TEST_F(HiddenWorlds, AreTheFirstDrawsTheReferencePasses) {
   def.rubric = rubricWith(0.01);
   EXPECT_EQ(fairHiddenWorlds(def).error(),
             "only 0 of the 40 worlds drawn for check 'near the centre' from this secret let the reference solution pass: choose another secret");
+  // In a class, each grade says so.
+  for (const Grade& k : gradeAll(def, submissionsIn(dir_ / "class"), 2)) {
+    EXPECT_EQ(k.notes.at(0),
+              "the hidden worlds were not checked against the reference solution: only 0 of the 40 worlds drawn for check 'near the centre' "
+              "from this secret let the reference solution pass: choose another secret");
+  }
 
   // Nor may a hidden world let the starter pass: one that stands still as well passes every draw
   // the reference does, so none is kept.
