@@ -20,8 +20,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // A controller that stands still.
-constexpr const char* kStill = "#include <frob/frob.hpp>\nusing namespace frob;\nBehavior<Wheels> still(const Robot&) { return wheels(0.0, 0.0); }\n"
-                               "FROB_CONTROLLER(still)\n";
+constexpr const char* kStill =
+    "#include <frob/frob.hpp>\nusing namespace frob;\nBehavior<Wheels> still(const Robot&) { return wheels(0.0, 0.0); }\n"
+    "FROB_CONTROLLER(still)\n";
 
 class HiddenWorlds : public ::testing::Test {
  protected:
