@@ -315,6 +315,8 @@ Grade detail::gradeWith(const GradeDef& def, const fs::path& submission, const s
   GradeDef checked = def;
   if (Result<KeptWorlds> fair = kept()) {
     checked.kept = fair.value();
+  } else if (isGraderFailure(fair.status())) {
+    if (g.graderFailure.empty()) g.graderFailure = fair.error();  // no grade stands on hidden worlds no one could check
   } else {
     g.notes.push_back("the hidden worlds were not checked against the reference solution: " + fair.error());
   }

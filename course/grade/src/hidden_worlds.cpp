@@ -78,11 +78,13 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
 
   std::string messages;
   Result<CompiledController> compiled = compileSubmission(rubric.reference, def.compiler, &messages);
+  if (!compiled && isGraderFailure(compiled.status())) return compiled.status();
   if (!compiled)
     return Status::failure("the reference solution " + rubric.reference.string() + " does not compile: " + compiled.error() + "\n" + messages);
   std::optional<CompiledController> starter;
   if (!rubric.starter.empty()) {
     Result<CompiledController> s = compileSubmission(rubric.starter, def.compiler, &messages);
+    if (!s && isGraderFailure(s.status())) return s.status();
     if (!s) return Status::failure("the starter " + rubric.starter.string() + " does not compile: " + s.error() + "\n" + messages);
     starter = s.value();
   }

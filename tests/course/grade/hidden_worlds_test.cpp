@@ -136,6 +136,30 @@ TEST_F(HiddenWorlds, AreTheFirstDrawsTheReferencePasses) {
             "solution pass and the starter fail: choose another secret");
 }
 
+// Where frob or the machine keeps the hidden worlds from being checked (here no controller host can
+// start), no grade stands on worlds no one checked, not even a 0 for a file that does not compile.
+TEST_F(HiddenWorlds, AGraderFailureInTheirCheckLeavesNoGrade) {
+  std::ofstream(dir_ / "assignment" / "fair.toml") << "title = \"Fair\"\nreference = \"still.cpp\"\nseconds = 0.5\n[[check]]\nname = \"anywhere\"\n"
+                                                      "visibility = \"hidden\"\ngenerated = { kind = \"crossing\", secret = 1 }\n"
+                                                      "goal = { point = \"centre\", within = 100, by = 60 }\n";
+  std::ofstream(dir_ / "broken.cpp") << "not C++\n";
+  GradeDef def = def_;
+  def.rubric = loadRubric(dir_ / "assignment" / "fair.toml").value();
+  def.compiler.cacheDir = dir_ / "cache";
+  def.host.program = dir_ / "no-such-host";
+  const Result<KeptWorlds> kept = fairHiddenWorlds(def);
+  ASSERT_FALSE(kept.ok());
+  EXPECT_TRUE(isGraderFailure(kept.status())) << kept.error();
+  for (const Grade& g : {grade(def, dir_ / "broken.cpp"), gradeAll(def, {dir_ / "broken.cpp"}, 1).at(0)}) {
+    const std::string cause = "the grader failed: cannot run " + def.host.program.string() + ": No such file or directory";
+    EXPECT_EQ(g.graderFailure.substr(0, cause.size()), cause);
+    EXPECT_TRUE(g.checks.empty());
+  }
+  // So too where the reference cannot be compiled for want of a compiler.
+  def.compiler.compiler = (dir_ / "no-such-compiler").string();
+  EXPECT_TRUE(isGraderFailure(fairHiddenWorlds(def).status())) << fairHiddenWorlds(def).error();
+}
+
 // Two checks that draw worlds of one kind from the secret run each in its own draws: one check's
 // "hidden world 1" is not the other's (they were once loaded by name, so the second check ran in
 // the first one's worlds, not in those the reference was checked in). A robot standing still at

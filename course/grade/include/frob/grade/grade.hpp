@@ -47,7 +47,8 @@ struct GradeDef {
 /// without the skill (at most ten times as many are tried). Computed once per rubric, secret,
 /// reference and starter source and simulation, and kept in the controller cache (where a reference
 /// solution is absent, as in a Gradescope zip, what the cache holds is used). None without a
-/// secret, a reference, or a cache.
+/// secret, a reference, or a cache. A failure of frob or the machine is a graderFailure(), and then
+/// no grade stands (grade() sets Grade::graderFailure).
 [[nodiscard]] Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def);
 /// Where fairHiddenWorlds keeps what it found for `def`'s rubric and secret, under the controller cache.
 [[nodiscard]] std::filesystem::path keptWorldsFile(const GradeDef& def);
