@@ -272,7 +272,8 @@ int gradeCommand(const GradeArgs& a) {
   if (!a.gradescopeZip.empty()) {
     // The hidden worlds are checked against the reference solution here, once, and shipped found.
     const course::GradeDef check{.rubric = rubric.value(), .secret = secret.value()};
-    if (Result<course::KeptWorlds> fair = course::fairHiddenWorlds(check); !fair) return fail(fair.error(), 2);
+    if (Result<course::KeptWorlds> fair = course::fairHiddenWorlds(check); !fair)
+      return fail(fair.error(), course::isGraderFailure(fair.status()) ? 1 : 2);
     if (Status s = course::writeGradescopeZip({.rubric = rubricFile.value(),
                                                .assignment = fs::path(rubricFile.value()).parent_path().filename().string(),
                                                .secret = secret.value(),
@@ -300,7 +301,7 @@ int gradeCommand(const GradeArgs& a) {
   }
   if (!def.visibleOnly) {  // no student meets a hidden world the reference solution fails
     Result<course::KeptWorlds> fair = course::fairHiddenWorlds(def);
-    if (!fair) return fail(fair.error(), 2);
+    if (!fair) return fail(fair.error(), course::isGraderFailure(fair.status()) ? 1 : 2);  // 1: the grader failed
     def.kept = fair.value();
     // Told to staff (stderr: the job's log on Gradescope and PrairieLearn), never to students.
     const course::Rubric& r = def.rubric;

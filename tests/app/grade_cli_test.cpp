@@ -53,6 +53,21 @@ TEST(GradeCli, ARubricMistakeIsOneLineAndStatus2) {
             "frob: unknown assignment 'nowhere': not a folder of assignments/ (see frob list), and no rubric.toml there\n");
 }
 
+// The hidden worlds cannot be checked for a fault of the machine (a controller cache that cannot be
+// made, so the reference cannot be compiled): the grader's failure, status 1, not a rubric's mistake.
+TEST(GradeCli, AGraderFailureCheckingTheHiddenWorldsIsStatus1) {
+  const fs::path dir = assignment("grade_cli_unchecked");
+  std::ofstream(dir / "forward" / "rubric.toml")
+      << "reference = \"reference.cpp\"\n[[check]]\nname = \"hidden\"\nvisibility = \"hidden\"\n"
+         "generated = { kind = \"crossing\", secret = 1 }\ngoal = { point = \"centre\", within = 100, by = 60 }\n";
+  std::ofstream(dir / "forward" / "reference.cpp") << driver("0.5");
+  std::ofstream(dir / "sub.cpp") << driver("0.5");
+  std::ofstream(dir / "secret.txt") << "course secret\n";
+  const FrobResult r = runFrob(dir, {"grade", "forward", "sub.cpp", "--secret", "secret.txt"}, "/dev/null/cache");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_EQ(r.err.rfind("frob: the grader failed: cannot create the controller cache '/dev/null/cache'", 0), 0u) << r.err;
+}
+
 TEST(GradeCli, ASubmissionThatFailsStillExitsZeroWithItsScore) {
   const fs::path dir = assignment("grade_cli_one");
   std::ofstream(dir / "slow.cpp") << driver("0.1");

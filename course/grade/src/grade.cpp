@@ -313,7 +313,8 @@ Grade detail::gradeWith(const GradeDef& def, const fs::path& submission, const s
   if (!compiled)
     (isGraderFailure(compiled.status()) ? g.graderFailure : g.compileError) = compiled.error() + (messages.empty() ? "" : "\n" + messages);
   GradeDef checked = def;
-  if (Result<KeptWorlds> fair = kept()) {
+  // Graded in the visible checks alone, it needs no hidden worlds.
+  if (Result<KeptWorlds> fair = def.visibleOnly ? Result<KeptWorlds>(KeptWorlds{}) : kept()) {
     checked.kept = fair.value();
   } else if (isGraderFailure(fair.status())) {
     if (g.graderFailure.empty()) g.graderFailure = fair.error();  // no grade stands on hidden worlds no one could check

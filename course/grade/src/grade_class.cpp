@@ -13,8 +13,8 @@
 #include <atomic>
 #include <cinttypes>
 #include <fstream>
-#include <future>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 namespace frob::course {
@@ -25,6 +25,11 @@ std::vector<Grade> gradeAll(GradeDef def, const std::vector<fs::path>& submissio
                             const std::function<void(std::size_t, std::size_t)>& progress, const ClassHooks& hooks) {
   jobs = std::clamp(jobs, 1, std::max<int>(1, static_cast<int>(submissions.size())));
   std::vector<Grade> grades(submissions.size());
+  // The hidden worlds are checked once for the class, before its runs take cores; where that fails,
+  // each grade says why.
+  std::optional<Result<KeptWorlds>> fair;
+  if (!def.kept && !def.visibleOnly && !submissions.empty()) fair.emplace(fairHiddenWorlds(def));
+  const auto kept = [&]() -> Result<KeptWorlds> { return def.kept ? *def.kept : *fair; };
   // Each run is the grader and a host per robot, taking turns. With two cores a run they spin while
   // they wait, and a step's handover costs nothing; runs that share the cores so would take them from
   // each other at every step, so then each run holds a core of its own, where its hosts sleep while
@@ -33,11 +38,6 @@ std::vector<Grade> gradeAll(GradeDef def, const std::vector<fs::path>& submissio
     def.runCores = std::move(cores);
     def.host.hostSpinNanoseconds = 0;
   }
-  // The hidden worlds are checked once for the class, beside the jobs' first compiles (its runs too
-  // hold a core); where that fails, each grade says why.
-  std::shared_future<Result<KeptWorlds>> fair;
-  if (!def.kept && !submissions.empty()) fair = std::async(std::launch::async, [&def] { return fairHiddenWorlds(def); }).share();
-  const auto kept = [&]() -> Result<KeptWorlds> { return def.kept ? *def.kept : fair.get(); };
   std::atomic<std::size_t> next{0};
   std::size_t done = 0;
   std::mutex told;

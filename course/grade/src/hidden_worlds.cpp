@@ -61,7 +61,7 @@ Result<KeptWorlds> fairHiddenWorlds(const GradeDef& def) {
   const Rubric& rubric = def.rubric;
   if (def.secret.empty() || rubric.reference.empty() || !rubric.needsSecret()) return KeptWorlds{};
   const fs::path cache = keptWorldsFile(def);
-  if (!fs::is_regular_file(rubric.reference)) return readKept(cache, "").value_or(KeptWorlds{});
+  if (std::error_code ec; !fs::is_regular_file(rubric.reference, ec)) return readKept(cache, "").value_or(KeptWorlds{});
   // Kept for this reference, starter, simulation and generator (each check's first draw stands for
   // it): a change of any may change which draws are fair.
   const auto hashOf = [](const fs::path& file) { return file.empty() ? 0 : worlds::Fnv1a().add(std::string_view(fileText(file))).value(); };

@@ -41,8 +41,8 @@ struct SharedRuns {
 void runCheck(const GradeDef& def, const CompiledController& compiled, const Check& check, const WorldRef& ref, const worlds::WorldDef& world,
               RunGrade& r, Grade& g, SharedRuns* shared = nullptr);
 
-/// grade(), in the hidden worlds `kept` gives: asked once the submission has compiled, so that a
-/// class compiles while they are checked.
+/// grade(), in the hidden worlds `kept` gives (a class's, checked once for all its grades; not asked
+/// when only the visible checks are graded).
 [[nodiscard]] Grade gradeWith(const GradeDef& def, const std::filesystem::path& submission, const std::function<Result<KeptWorlds>()>& kept);
 
 /// A file's bytes; empty when it cannot be read.

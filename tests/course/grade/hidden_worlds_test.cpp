@@ -155,6 +155,12 @@ TEST_F(HiddenWorlds, AGraderFailureInTheirCheckLeavesNoGrade) {
     EXPECT_EQ(g.graderFailure.substr(0, cause.size()), cause);
     EXPECT_TRUE(g.checks.empty());
   }
+  // Graded in the visible checks alone, it needs no hidden worlds: its compile error stands.
+  def.visibleOnly = true;
+  for (const Grade& g : {grade(def, dir_ / "broken.cpp"), gradeAll(def, {dir_ / "broken.cpp"}, 1).at(0)}) {
+    EXPECT_EQ(g.graderFailure, "");
+    EXPECT_NE(g.compileError, "");
+  }
   // So too where the reference cannot be compiled for want of a compiler.
   def.compiler.compiler = (dir_ / "no-such-compiler").string();
   EXPECT_TRUE(isGraderFailure(fairHiddenWorlds(def).status())) << fairHiddenWorlds(def).error();
