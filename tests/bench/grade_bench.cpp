@@ -61,7 +61,7 @@ void OneSubmissionTenRuns(benchmark::State& state) {
 // submissions (tests/assignments/<name>/), round after round, with one decimal number of its code
 // changed by a few percent (number k / sources, by 1% more each time it comes round again). Graded as an
 // instructor grades a class, hidden checks included (a benchmark secret), compile included, two at a
-// time.
+// time. Its counters split the jobs' seconds between the runs and the rest (mostly the compiles).
 std::vector<std::string> distinctSubmissions(const std::string& assignment, int n) {
   std::vector<std::string> sources;
   const auto read = [&](const fs::path& file) {
@@ -118,9 +118,17 @@ void Class(benchmark::State& state) {
     fs::remove_all(def.compiler.cacheDir);  // compile and the hidden worlds' check included
     state.ResumeTiming();
     const std::vector<course::Grade> grades = course::gradeAll(def, submissions, 2);
+    double graded = 0.0, runs = 0.0;  // a job's seconds on each grade, and on its runs
     for (const course::Grade& g : grades) {
       if (!g.compileError.empty()) return state.SkipWithError(("a submission did not compile: " + g.compileError).c_str());
+      graded += g.wallSeconds;
+      for (const course::CheckGrade& c : g.checks) {
+        for (const course::RunGrade& r : c.runs) runs += r.wallSeconds;
+      }
     }
+    // Where the jobs' time went: their runs, and the rest (mostly compiles), in seconds of a job.
+    state.counters["runs_s"] = runs;
+    state.counters["compiles_s"] = graded - runs;
   }
   state.counters["submissions"] = static_cast<double>(submissions.size());
 }
