@@ -301,11 +301,13 @@ Ran replayed(const WheelLog& log, const worlds::WorldDef& world, double dt, std:
 
 }  // namespace
 
-Grade grade(const GradeDef& def, const fs::path& submission) {
-  return gradeWith(def, submission, [&]() -> Result<KeptWorlds> { return def.kept ? *def.kept : fairHiddenWorlds(def); });
+Grade grade(const GradeDef& def, const fs::path& submission) { return gradeWith(def, submission, hiddenWorldsOf(def)); }
+
+Result<KeptWorlds> detail::hiddenWorldsOf(const GradeDef& def) {
+  return def.kept ? *def.kept : def.visibleOnly ? KeptWorlds{} : fairHiddenWorlds(def);  // the visible checks alone need none
 }
 
-Grade detail::gradeWith(const GradeDef& def, const fs::path& submission, const std::function<Result<KeptWorlds>()>& kept) {
+Grade detail::gradeWith(const GradeDef& def, const fs::path& submission, const Result<KeptWorlds>& kept) {
   const auto start = std::chrono::steady_clock::now();
   Grade g{.assignment = def.assignment, .submission = submission.string(), .submissionHash = submissionHash(submission), .startedAt = utcNow()};
   std::string messages;
@@ -313,13 +315,12 @@ Grade detail::gradeWith(const GradeDef& def, const fs::path& submission, const s
   if (!compiled)
     (isGraderFailure(compiled.status()) ? g.graderFailure : g.compileError) = compiled.error() + (messages.empty() ? "" : "\n" + messages);
   GradeDef checked = def;
-  // Graded in the visible checks alone, it needs no hidden worlds.
-  if (Result<KeptWorlds> fair = def.visibleOnly ? Result<KeptWorlds>(KeptWorlds{}) : kept()) {
-    checked.kept = fair.value();
-  } else if (isGraderFailure(fair.status())) {
-    if (g.graderFailure.empty()) g.graderFailure = fair.error();  // no grade stands on hidden worlds no one could check
+  if (kept) {
+    checked.kept = kept.value();
+  } else if (isGraderFailure(kept.status())) {
+    if (g.graderFailure.empty()) g.graderFailure = kept.error();  // no grade stands on hidden worlds no one could check
   } else {
-    g.notes.push_back("the hidden worlds were not checked against the reference solution: " + fair.error());
+    g.notes.push_back("the hidden worlds were not checked against the reference solution: " + kept.error());
   }
   SharedRuns shared;
   for (const Check& check : checked.rubric.checks) {

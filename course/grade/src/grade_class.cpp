@@ -14,7 +14,6 @@
 #include <cinttypes>
 #include <fstream>
 #include <mutex>
-#include <optional>
 #include <thread>
 
 namespace frob::course {
@@ -27,9 +26,7 @@ std::vector<Grade> gradeAll(GradeDef def, const std::vector<fs::path>& submissio
   std::vector<Grade> grades(submissions.size());
   // The hidden worlds are checked once for the class, before its runs take cores; where that fails,
   // each grade says why.
-  std::optional<Result<KeptWorlds>> fair;
-  if (!def.kept && !def.visibleOnly && !submissions.empty()) fair.emplace(fairHiddenWorlds(def));
-  const auto kept = [&]() -> Result<KeptWorlds> { return def.kept ? *def.kept : *fair; };
+  const Result<KeptWorlds> kept = submissions.empty() ? KeptWorlds{} : detail::hiddenWorldsOf(def);
   // Each run is the grader and a host per robot, taking turns. With two cores a run they spin while
   // they wait, and a step's handover costs nothing; runs that share the cores so would take them from
   // each other at every step, so then each run holds a core of its own, where its hosts sleep while

@@ -6,7 +6,6 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <functional>
 #include <map>
 #include <string>
 #include <tuple>
@@ -41,9 +40,10 @@ struct SharedRuns {
 void runCheck(const GradeDef& def, const CompiledController& compiled, const Check& check, const WorldRef& ref, const worlds::WorldDef& world,
               RunGrade& r, Grade& g, SharedRuns* shared = nullptr);
 
-/// grade(), in the hidden worlds `kept` gives (a class's, checked once for all its grades; not asked
-/// when only the visible checks are graded).
-[[nodiscard]] Grade gradeWith(const GradeDef& def, const std::filesystem::path& submission, const std::function<Result<KeptWorlds>()>& kept);
+/// The hidden worlds `def` grades in: its own, none for the visible checks alone, else fairHiddenWorlds().
+[[nodiscard]] Result<KeptWorlds> hiddenWorldsOf(const GradeDef& def);
+/// grade(), in the hidden worlds `kept` (hiddenWorldsOf(): a class checks them once for all its grades).
+[[nodiscard]] Grade gradeWith(const GradeDef& def, const std::filesystem::path& submission, const Result<KeptWorlds>& kept);
 
 /// A file's bytes; empty when it cannot be read.
 [[nodiscard]] std::string fileText(const std::filesystem::path& file);
