@@ -380,17 +380,20 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
   }
   const int status = run.value().status;
   // A compiler that ran into its limits of time, memory or file size failed on the submission's
-  // account, however it ended: killed by the limit's signal, or, where the signal reached the
+  // account, however it ended: killed by the limit's signal; or, where the signal reached the
   // compiler's own process, a "crash" in which clang names the limit (words a source could print
-  // too, but only to make a crash of its own its failure). Otherwise it crashed (another signal, or
-  // it left a reproducer), or could not be run: no fault of the submission's, and no grade. Its
-  // output is kept whole at the end, where the crash is described (runSandboxed).
+  // too, but only to make a crash of its own its failure); or a crash with most of its memory in use
+  // (a stack grown by nesting until the memory ran out: an `else if` chain a million long).
+  // Otherwise it crashed (another signal, or it left a reproducer), or could not be run: no fault of
+  // the submission's, and no grade. Its output is kept whole at the end, where the crash is
+  // described (runSandboxed).
   const int signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
   const bool reproduced = !fs::is_empty(crashReport, ec) && !ec;
   const std::string& said = run.value().output;
   const bool limited = signal == SIGXCPU || signal == SIGXFSZ || signal == SIGKILL ||
-                       ((signal != 0 || reproduced) && std::any_of(std::begin(kLimitWords), std::end(kLimitWords),
-                                                                   [&](const char* w) { return said.find(w) != std::string::npos; }));
+                       ((signal != 0 || reproduced) && (run.value().peakMemoryBytes >= setup.memoryBytes / 2 ||
+                                                        std::any_of(std::begin(kLimitWords), std::end(kLimitWords),
+                                                                    [&](const char* w) { return said.find(w) != std::string::npos; })));
   const bool crashed = !limited && (signal != 0 || reproduced);
   if (crashed || (WIFEXITED(status) && WEXITSTATUS(status) == 127)) {
     cleanUp();

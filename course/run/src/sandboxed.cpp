@@ -7,6 +7,7 @@
 #include <poll.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -138,6 +139,7 @@ Sandboxed& Sandboxed::operator=(Sandboxed&& o) noexcept {
   std::swap(pid_, o.pid_);
   std::swap(pidfd_, o.pidfd_);
   std::swap(status_, o.status_);
+  std::swap(peakMemoryBytes_, o.peakMemoryBytes_);
   std::swap(layers_, o.layers_);
   std::swap(user_, o.user_);
   return *this;
@@ -152,10 +154,12 @@ void Sandboxed::kill() {
 int Sandboxed::wait() {
   if (pid_ > 0 && status_ == -1) {
     int status = 0;
-    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    rusage usage{};
+    while (::wait4(pid_, &status, 0, &usage) < 0 && errno == EINTR) {
     }
     status_ = status;
-    user_ = SandboxUser();  // its id is free once nothing runs as it
+    peakMemoryBytes_ = static_cast<std::uint64_t>(usage.ru_maxrss) << 10;  // kernel's KiB
+    user_ = SandboxUser();                                                 // its id is free once nothing runs as it
   }
   return status_;
 }
@@ -197,6 +201,7 @@ Result<SandboxedRun> runSandboxed(SandboxedDef def, double seconds, std::size_t 
   if (cut > 0) run.output += "\n[... " + std::to_string(cut) + " bytes cut ...]\n";
   run.output += tail;
   run.status = j.wait();
+  run.peakMemoryBytes = j.peakMemoryBytes();
   return run;
 }
 

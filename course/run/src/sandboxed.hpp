@@ -9,6 +9,7 @@
 
 #include <sys/types.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -62,20 +63,24 @@ class Sandboxed {
   void kill();
   /// Its wait status once it has ended (blocks until then); the first call reaps it.
   int wait();
+  /// Once reaped: the largest resident memory of it, or of any child it waited for, in bytes.
+  [[nodiscard]] std::uint64_t peakMemoryBytes() const { return peakMemoryBytes_; }
 
  private:
   pid_t pid_ = 0;
   sandbox::Fd pidfd_;
   int status_ = -1;
+  std::uint64_t peakMemoryBytes_ = 0;
   std::vector<sandbox::Layer> layers_;
   SandboxUser user_;  // held until it is reaped
 };
 
 /// How a sandboxed program that ran to its end (or its deadline) did.
 struct SandboxedRun {
-  int status = -1;        ///< its wait status
-  bool timedOut = false;  ///< killed at the deadline
-  std::string output;     ///< its stdout and stderr together, cut at the limit
+  int status = -1;                    ///< its wait status
+  bool timedOut = false;              ///< killed at the deadline
+  std::uint64_t peakMemoryBytes = 0;  ///< the largest resident memory of it or of a child it waited for
+  std::string output;                 ///< its stdout and stderr together, cut at the limit
   std::vector<sandbox::Layer> layers;
 };
 

@@ -379,6 +379,30 @@ TEST(ControllerFile, ADeepNestingCompilesInsteadOfCrashingTheCompiler) {
   EXPECT_TRUE(fs::exists(c.value().module));
 }
 
+// A nesting deep enough to grow the compiler's stack until its memory runs out (an `else if` chain
+// two million long, from a 1 KB file of macros) crashes clang: a crash of the compiler's memory
+// limit, the submission's failure like any other limit, never "the compiler crashed", which gives no
+// grade. (A crash with little memory in use stays the grader's: GraderFailure's tests.)
+TEST(ControllerFile, ANestingPastTheCompilersMemoryIsTheSubmissionsFailure) {
+  const fs::path dir = freshFolder("deeper");
+  std::string source = "#include <frob/frob.hpp>\n#define A0 else if (0);\n";
+  for (int i = 1; i <= 21; ++i) source += "#define A" + std::to_string(i) + " A" + std::to_string(i - 1) + " A" + std::to_string(i - 1) + "\n";
+  source +=
+      "void deep() { if (0); A21 }\n"
+      "frob::Behavior<frob::Wheels> go(const frob::Robot&) { return frob::Wheels{0.1, 0.0}; }\nFROB_CONTROLLER(go)\n";
+  writeFile(dir / "deeper.cpp", source);
+  std::string messages;
+  CompilerSetup setup = setupIn(dir);
+  setup.memoryBytes = 2ULL << 30;  // sooner full than the usual 4 GiB, and the macros' tokens still fit
+  const Result<CompiledController> c = compileControllerFile(dir / "deeper.cpp", setup, &messages);
+  ASSERT_FALSE(c.ok());
+  EXPECT_FALSE(isGraderFailure(c.status())) << c.error() << messages.substr(messages.size() - std::min<std::size_t>(messages.size(), 600));
+  // The stack's crash, not an allocation's (which clang names: "LLVM ERROR: out of memory").
+  EXPECT_NE(messages.find("Segmentation fault"), std::string::npos) << messages.substr(messages.size() - std::min<std::size_t>(messages.size(), 600));
+  EXPECT_EQ(c.error(),
+            "could not compile '" + (dir / "deeper.cpp").string() + "' within the compiler's limits of time, memory and file size (128 MB a file)");
+}
+
 // The compiler's large stack is not every thread's: a linker that starts a thread per core (lld, the
 // linker where there is no gold) links, as it did not when the stack was limited to 1 GB (glibc
 // gives each thread a stack the size of a finite limit, past the compiler's memory).
