@@ -151,8 +151,27 @@ TEST(BlindAdversary, Bug) {
                        }});
     }
   }
-  expectNoBlindKindEarnsHiddenPoints(
-      "bug", {{"fixed route", tunedRoute(rubric, {goal})}, {"bump-and-slide", bumpAndSlide({goal})}, {"wall hugging", edges}});
+  // Along a wall, over the tip of the spur beside the start (in the start's clear circle), then on
+  // along that wall, or on over the tips of any further spurs, and up the far one.
+  std::vector<Candidate> band;
+  for (double d : {0.55, 0.8}) {
+    for (double over : {2.4, 2.7, 3.0}) {
+      for (bool eastFirst : {true, false}) {
+        for (bool overAll : {false, true}) {
+          std::vector<Point2> way = overAll ? std::vector<Point2>{{2.6, d}, {2.6, over}, {15 - d, over}, {15 - d, 13.5}, goal}
+                                            : std::vector<Point2>{{2.6, d}, {2.6, over}, {4.6, over}, {4.6, d}, {15 - d, d}, {15 - d, 13.5}, goal};
+          if (!eastFirst) std::transform(way.begin(), way.end(), way.begin(), [](const Point2& p) { return Point2(p.y(), p.x()); });
+          band.push_back({std::string(eastFirst ? "east" : "north") + " band at " + std::to_string(d) + " over " +
+                              (overAll ? "every spur" : "the first spur") + " at " + std::to_string(over),
+                          [=](std::size_t) { return std::make_unique<Route>(RouteDef{.points = way}); }});
+        }
+      }
+    }
+  }
+  expectNoBlindKindEarnsHiddenPoints("bug", {{"fixed route", tunedRoute(rubric, {goal})},
+                                             {"bump-and-slide", bumpAndSlide({goal})},
+                                             {"wall hugging", edges},
+                                             {"the band by the walls, over the start's spurs", band}});
 }
 
 // Each robot's goal is opposite its start through the centre (5, 5).

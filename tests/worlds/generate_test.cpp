@@ -166,14 +166,22 @@ TEST(Generate, TheTrapStandsAlone) {
 }
 
 // bug: no blind drive along the outer walls reaches the goal. The band within 1.3 m of them (the
-// obstacles keep 1 m clear) is cut on both ways round, from the start's corner to the goal's.
+// obstacles keep 1 m clear) is cut on both ways round, from the start's corner to the goal's, and
+// again, nearly always, past the start's clear circle (2.5 m round it), where a drive could go
+// round the tip of the spur beside the start: the spur further along is drawn last, where it fits
+// beside the obstacles (in 200 fields it did not fit 5 times of 400).
 TEST(Generate, AnObstacleFieldLeavesNoWayAlongTheWalls) {
-  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+  int open = 0;
+  for (std::uint64_t seed = 1; seed <= 200; ++seed) {
     WorldDef band = generateWorld(WorldKind::Obstacles, seed).value();
     ASSERT_TRUE(reachable(band, band.robots[0].start.position, band.points[0].position)) << "seed " << seed;
     band.walls.push_back(rectangleWall(Point2(1.3, 1.3), Point2(band.size.x() - 1.3, band.size.y() - 1.3)));
-    EXPECT_FALSE(reachable(band, Point2(0.6, 0.6), Point2(band.size.x() - 0.6, band.size.y() - 0.6))) << "seed " << seed;
+    const Point2 goalCorner(band.size.x() - 0.6, band.size.y() - 0.6);
+    EXPECT_FALSE(reachable(band, Point2(0.6, 0.6), goalCorner)) << "seed " << seed;
+    open += reachable(band, Point2(4.6, 0.6), goalCorner);  // along the bottom wall
+    open += reachable(band, Point2(0.6, 4.6), goalCorner);  // along the left wall
   }
+  EXPECT_LE(open, 8);
 }
 
 TEST(Generate, AMazeIsPerfect) {
@@ -189,7 +197,7 @@ TEST(Generate, TheSameKindAndSeedGiveTheSameWorld) {
   // Golden hashes of the files, for this generator on every platform (it uses no library
   // randomness and writes millimetres). A change to a generator changes them: say so in its commit.
   const std::pair<WorldKind, std::uint64_t> golden[] = {
-      {WorldKind::Obstacles, 0x671798bfbe32effd}, {WorldKind::Maze, 0x8d6d1211bd3c238a},          {WorldKind::Rooms, 0x6c928bc0cf02103b},
+      {WorldKind::Obstacles, 0xefdaa1b9469a55b2}, {WorldKind::Maze, 0x8d6d1211bd3c238a},          {WorldKind::Rooms, 0x6c928bc0cf02103b},
       {WorldKind::Loop, 0xddba8c29c890a141},      {WorldKind::FurnishedRoom, 0x055da3aee7223373}, {WorldKind::Outline, 0xd470583866fc7264},
       {WorldKind::Lounge, 0x5bbc189ffaf29cfb},    {WorldKind::WarehouseKeys, 0x4ab89fc595d02932}, {WorldKind::WarehouseBox, 0xb236db9e97dc6cad},
       {WorldKind::Crossing, 0x86c3e8a50f63b372}};

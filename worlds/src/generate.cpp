@@ -118,14 +118,23 @@ WorldDef obstacles(Random& r, std::uint64_t seed) {
     placed.push_back(polylineWall({c + Point2(-s, s), c + Point2(s, s), c + Point2(s, -s)}));
     trapArea = rectangleWall(Point2(c - Vec2(s, s)), Point2(c + Vec2(s, s)));
   }
+  // A spur from the bottom wall (upright) or the left one, `along` from their corner.
+  const auto spur = [](bool upright, double along, double reach, double thick) {
+    return upright ? rectangleWall(Point2(along, 0), Point2(along + thick, reach)) : rectangleWall(Point2(0, along), Point2(reach, along + thick));
+  };
+  // Room for a wall follower between `o` and everything placed, and none near the trap.
+  const auto standsApart = [&](const WallDef& o) {
+    const auto clearOf = [&](const WallDef& p, double gap) { return gapBetween(o, p) > gap && gapBetween(p, o) > gap; };
+    return std::all_of(placed.begin(), placed.end(), [&](const WallDef& p) { return clearOf(p, apart); }) &&
+           (!trapArea || clearOf(*trapArea, kTrapClearance));
+  };
   // Two spurs, from the left and the bottom wall beside the start, so that no blind drive along the
   // walls reaches the goal. Only there: a BUG that keeps the obstacle on its left and meets a spur
   // of a far wall on its way follows that wall away from the goal. They keep clear of the trap
   // (3.7 m from the walls at least) and of the way out towards the goal.
   for (const bool upright : {false, true}) {
     const double along = r.uniform(3.0, 3.6), reach = r.uniform(1.6, 2.1), thick = r.uniform(0.3, 0.6);
-    placed.push_back(upright ? rectangleWall(Point2(along, 0), Point2(along + thick, reach))
-                             : rectangleWall(Point2(0, along), Point2(reach, along + thick)));
+    placed.push_back(spur(upright, along, reach, thick));
   }
   const int count = 2 + r.integer(8, 14);
   for (int attempt = 0; static_cast<int>(placed.size()) < count && attempt < 500; ++attempt) {
@@ -139,10 +148,19 @@ WorldDef obstacles(Random& r, std::uint64_t seed) {
     }
     // 2.5 m round the start: the way out between the spurs stays open.
     const bool clearOfEnds = distanceToWall(w.robots[0].start.position, o) > 2.5 && distanceToWall(w.points[0].position, o) > 1.0;
-    const auto clearOf = [&](const WallDef& p, double gap) { return gapBetween(o, p) > gap && gapBetween(p, o) > gap; };
-    const bool clearOfOthers = std::all_of(placed.begin(), placed.end(), [&](const WallDef& p) { return clearOf(p, apart); }) &&
-                               (!trapArea || clearOf(*trapArea, kTrapClearance));
-    if (clearOfEnds && clearOfOthers) placed.push_back(o);
+    if (clearOfEnds && standsApart(o)) placed.push_back(o);
+  }
+  // Two more spurs from those walls, further along, past the start's clear circle (a drive along a
+  // wall could go round the first one's tip through that circle), and longer (one going round the
+  // tips of both would drive among the obstacles). Drawn last, where they fit.
+  for (const bool upright : {false, true}) {
+    for (int attempt = 0; attempt < 200; ++attempt) {
+      const double along = r.uniform(5.0, 12.5), reach = r.uniform(2.0, 3.2), thick = r.uniform(0.3, 0.6);
+      if (const WallDef far = spur(upright, along, reach, thick); standsApart(far)) {
+        placed.push_back(far);
+        break;
+      }
+    }
   }
   w.walls = placed;
   return w;
