@@ -1,6 +1,7 @@
 #pragma once
 // The adversary of the hidden checks: blind controllers, which know only what a robot knows without
-// looking (the time, its odometry, and the bumper contacts and keys of the step; never a sonar), run
+// looking (the time, its odometry, and the bumper contacts and keys of the step; no sonar, but in a
+// kind that says so the one straight ahead, to end a leg where something is in the way), run
 // in this process and judged by the grader's criteria. They are searched for on practice worlds only
 // (practiceRubric: never a secret), and the best of each kind is then scored on the hidden checks'
 // worlds drawn from fresh secrets, unfiltered by the reference (it passes nearly all of them).

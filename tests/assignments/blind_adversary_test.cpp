@@ -277,7 +277,41 @@ TEST(BlindAdversary, Wander) {
                       })});
     }
   }
-  expectNoBlindKindEarnsHiddenPoints("wander", {{"wall hugging", laps}, {"fixed route", rows}});
+  // Almost blind: out of the hall, then legs in a fixed cycle of compass headings, each ended by the
+  // sonar straight ahead (the one sonar read) and nothing else: round the room by its walls, again
+  // and again, never turning towards room (it covered the outer metre of every room, and with it
+  // most of the floor, before the floor counted was the middle).
+  class LegsByTheSonarAhead final : public Program {
+   public:
+    LegsByTheSonarAhead(std::vector<double> headings, double stop) : headings_(std::move(headings)), stop_(stop) {}
+    Wheels step(double t, const SensorFrame& f) override {
+      const auto steer = [&](double heading, double forward) {
+        const double e = wrap(heading - f.odometry.heading);
+        return Wheels{std::abs(e) > 0.05 ? 0.0 : forward, std::clamp(3.0 * e, -1.0, 1.0)};
+      };
+      if (!leftHall_ && f.odometry.position.y() < 2.53) return steer(pi / 2, 0.5);  // out of the hall, straight on
+      leftHall_ = true;
+      const double ahead = f.sonar.at(0);
+      if (ahead < stop_ + 0.03 && t - legStart_ > 1.0) ++leg_, legStart_ = t;  // a leg ends where something is ahead
+      return steer(headings_[leg_ % headings_.size()], std::clamp((ahead - stop_) * 1.2, 0.0, 0.5));
+    }
+
+   private:
+    std::vector<double> headings_;
+    double stop_;
+    std::size_t leg_ = 0;
+    double legStart_ = 0.0;
+    bool leftHall_ = false;
+  };
+  std::vector<Candidate> legs;
+  for (const std::vector<double>& cycle :
+       {std::vector<double>{pi, pi / 2, 0, -pi / 2}, std::vector<double>{pi, pi / 2, -pi / 2, 0, pi / 2, -pi / 2}}) {
+    for (double stop : {0.3, 0.45}) {
+      legs.push_back({std::to_string(cycle.size()) + " headings, legs ended " + std::to_string(stop) + " m from what is ahead",
+                      [=](std::size_t) { return std::make_unique<LegsByTheSonarAhead>(cycle, stop); }});
+    }
+  }
+  expectNoBlindKindEarnsHiddenPoints("wander", {{"wall hugging", laps}, {"fixed route", rows}, {"legs by the sonar ahead", legs}});
 }
 
 TEST(BlindAdversary, WallFollow) {

@@ -81,7 +81,8 @@ TEST(WanderAssignment, StarterCreepsOutAndTouches) {
   EXPECT_EQ(scores(g), (Scores{{kHall, 2}, {kTouch, 0}, {kExplore, 0}, {kUnseen, 0}}));
   EXPECT_THAT(reasons(g, kTouch), HasSubstr("in worlds/living_room.toml, seed 1: touched a round obstacle at 53.5 s"));
   EXPECT_THAT(reasons(g, kTouch), HasSubstr("in worlds/bedroom.toml, seed 1: touched a block at 77.0 s"));
-  EXPECT_THAT(reasons(g, kExplore), HasSubstr("covered 31% of the floor it could reach (10 of 32 cells of 1.00 m); 50% required"));
+  EXPECT_THAT(reasons(g, kExplore),
+              HasSubstr("covered 12% of the floor it could reach 0.60 m or more from walls (5 of 40 cells of 0.50 m); 35% required"));
   EXPECT_THAT(judged(g, kUnseen), HasSubstr("touched a round obstacle"));
 }
 
@@ -93,7 +94,8 @@ TEST(WanderAssignment, QuarterTurnsToTheRightNeverLeaveTheHall) {
   EXPECT_EQ(scores(g), (Scores{{kHall, 0}, {kTouch, 0}, {kExplore, 0}, {kUnseen, 0}}));
   EXPECT_THAT(reasons(g, kHall), HasSubstr("in worlds/living_room.toml, seed 1: never came within 0.50 m of room (closest 1.61 m"));
   EXPECT_THAT(reasons(g, kTouch), HasSubstr("covered 3% of the floor it could reach (1 of 32 cells of 1.00 m); 25% required"));
-  EXPECT_THAT(reasons(g, kExplore), HasSubstr("covered 6% of the floor it could reach (2 of 32 cells of 1.00 m); 50% required"));
+  EXPECT_THAT(reasons(g, kExplore),
+              HasSubstr("covered 0% of the floor it could reach 0.60 m or more from walls (0 of 40 cells of 0.50 m); 35% required"));
   EXPECT_EQ(failedIn(g, kUnseen), "generated furnished_room, hidden world 1\ngenerated furnished_room, hidden world 2\n");
   EXPECT_THAT(judged(g, kUnseen), HasSubstr("in hidden world 1: covered"));
 }
@@ -117,8 +119,10 @@ TEST(WanderAssignment, Example1AsItIsNeverLeavesTheHall) {
   EXPECT_EQ(scores(g), (Scores{{kHall, 0}, {kTouch, 0}, {kExplore, 0}, {kUnseen, 0}}));
   EXPECT_THAT(reasons(g, kHall), HasSubstr("in worlds/bedroom.toml, seed 1: never came within 0.50 m of room (closest 1.62 m"));
   EXPECT_THAT(reasons(g, kTouch), HasSubstr("covered 3% of the floor it could reach (1 of 32 cells of 1.00 m); 25% required"));
-  EXPECT_THAT(reasons(g, kExplore), HasSubstr("covered 6% of the floor it could reach (2 of 32 cells of 1.00 m); 50% required"));
-  EXPECT_THAT(judged(g, kUnseen), HasSubstr("in hidden world 2: covered 3% of the floor it could reach (1 of 31 cells of 1.00 m)"));
+  EXPECT_THAT(reasons(g, kExplore),
+              HasSubstr("covered 0% of the floor it could reach 0.60 m or more from walls (0 of 40 cells of 0.50 m); 35% required"));
+  EXPECT_THAT(judged(g, kUnseen),
+              HasSubstr("in hidden world 2: covered 0% of the floor it could reach 0.60 m or more from walls (0 of 32 cells of 0.50 m)"));
 }
 
 }  // namespace

@@ -447,19 +447,24 @@ class Judge {
 
   std::string coverage(const Track& t) {
     const worlds::FreeGrid grid(run_.walls, run_.size, t.radius, c_.cell);
+    // With `away`, only the floor where the body keeps that far from every wall counts: the room's
+    // middle, not the band a lap along its walls passes over.
+    const worlds::FreeGrid open(run_.walls, run_.size, t.radius + c_.distance, c_.cell);
     const std::vector<bool> reachable = grid.reachable(grid.cellOf(t.path.front()));
     std::vector<bool> visited(reachable.size(), false);
     for (const Point2& p : t.path) visited[grid.cellOf(p)] = true;
     std::size_t free = 0, seen = 0;
     for (std::size_t c = 0; c < reachable.size(); ++c) {
-      free += reachable[c];
-      seen += reachable[c] && visited[c];
+      const bool counted = reachable[c] && open.free(static_cast<int>(c));
+      free += counted;
+      seen += counted && visited[c];
     }
     const double share = free == 0 ? 0.0 : static_cast<double>(seen) / static_cast<double>(free);
-    measured(100 * (share - c_.fraction), "points",
-             format("covered %.0f%% of the floor it could reach; %.0f%% required", 100 * share, 100 * c_.fraction));
+    const std::string floor =
+        c_.distance > 0 ? format("the floor it could reach %.2f m or more from walls", c_.distance) : "the floor it could reach";
+    measured(100 * (share - c_.fraction), "points", format("covered %.0f%% of %s; %.0f%% required", 100 * share, floor.c_str(), 100 * c_.fraction));
     if (share >= c_.fraction) return "";
-    return format("covered %.0f%% of the floor it could reach (%zu of %zu cells of %.2f m); %.0f%% required", 100 * share, seen, free, c_.cell,
+    return format("covered %.0f%% of %s (%zu of %zu cells of %.2f m); %.0f%% required", 100 * share, floor.c_str(), seen, free, c_.cell,
                   100 * c_.fraction);
   }
 

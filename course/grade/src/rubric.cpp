@@ -31,7 +31,7 @@ const CriterionSpec kCriteria[] = {
     {"collisions", Kind::Collisions, {"max", "seconds"}},
     {"clearance", Kind::Clearance, {"min"}},
     {"wall_distance", Kind::WallDistance, {"target", "tolerance", "fraction", "after", "side"}},
-    {"coverage", Kind::Coverage, {"fraction", "cell"}},
+    {"coverage", Kind::Coverage, {"fraction", "cell", "away"}},
     {"robots_apart", Kind::RobotsApart, {"min"}},
     {"path_ratio", Kind::PathRatio, {"max", "point", "within"}},
     {"bug1_bound", Kind::Bug1Bound, {"point", "within"}},
@@ -317,7 +317,8 @@ class RubricReader : worlds::TomlReader {
         return need(t, "target", field, c.distance) && need(t, "tolerance", field, c.tolerance) && fraction(c.fraction) &&
                optNumber(t, "after", field + "after", c.after);
       case Kind::Coverage:
-        return fraction(c.fraction) && optNumber(t, "cell", field + "cell", c.cell);
+        return fraction(c.fraction) && optNumber(t, "cell", field + "cell", c.cell) &&
+               (t.get("away") == nullptr || need(t, "away", field, c.distance, true));
       case Kind::RobotsApart:
         return optNumber(t, "min", field + "min", c.distance);
       case Kind::PathRatio:

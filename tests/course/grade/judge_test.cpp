@@ -320,6 +320,17 @@ TEST(Judge, CoverageCountsTheFreeCellsItsCentreVisited) {
   EXPECT_TRUE(run({.kind = Kind::Coverage, .fraction = 0.16, .cell = 0.5}, straight(0.25, 1.25, 0.5, 11)).passed);
 }
 
+// With `away`, only the floor where the body keeps that far from every wall counts: here cells whose
+// centre is 0.73 m clear of the walls, 10 x 4 of them. A pass down the middle visits a row of them;
+// one along a wall, none.
+TEST(Judge, CoverageAwayFromTheWallsCountsOnlyTheMiddle) {
+  const Criterion middle{.kind = Kind::Coverage, .distance = 0.5, .fraction = 0.2, .cell = 0.5};
+  EXPECT_TRUE(run(middle, straight(0.25, 1.25, 0.5, 11)).passed);
+  EXPECT_EQ(run(middle, straight(0.25, 0.25, 0.5, 11)).reason,
+            "covered 0% of the floor it could reach 0.50 m or more from walls (0 of 40 cells of 0.50 m); 20% required");
+  EXPECT_TRUE(run({.kind = Kind::Coverage, .fraction = 0.16, .cell = 0.5}, straight(0.25, 0.25, 0.5, 11)).passed);  // all the floor: 12 of 72
+}
+
 TEST(Judge, RobotsApart) {
   RunRecord r = room();
   r.robots = {straight(1, 1.5, 0.5, 4, "ada"), straight(5, 1.5, -0.5, 4, "bob")};

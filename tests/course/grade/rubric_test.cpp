@@ -163,6 +163,7 @@ INSTANTIATE_TEST_SUITE_P(
         Mistake{"collisions = { max = 0 }", "collisions = { max = 2, seconds = 0 }", "10: check[0].collisions.seconds: must be positive"},
         Mistake{"collisions = { max = 0 }", "wall_distance = { target = 0.4, tolerance = 0.1, fraction = 0.5, side = \"up\" }",
                 "10: check[0].wall_distance.side: expected \"right\" or \"left\""},
+        Mistake{"collisions = { max = 0 }", "coverage = { fraction = 0.5, away = -0.5 }", "10: check[0].coverage.away: must not be negative"},
         Mistake{"\"worlds/room.toml\"", "\"worlds/missing.toml\"",
                 "7: check[0].worlds[1]: 'worlds/missing.toml' is neither a reference world (see frob list) nor a file beside the rubric"},
         Mistake{"visibility = \"hidden\"", "visibility = \"secret\"",

@@ -31,7 +31,7 @@ struct Criterion {
                  ///< 0 at most that long touching in all
     Clearance,   ///< the body never nearer a wall than `distance`
     WallDistance,  ///< the body `distance` ± `tolerance` from the nearest wall (on `side`, when given) for `fraction` of the run after `after` s
-    Coverage,      ///< the robot's centre visited `fraction` of the free cells of size `cell`
+    Coverage,      ///< the robot's centre visited `fraction` of the free cells of size `cell` (of those whose body keeps `distance` from every wall)
     RobotsApart,   ///< robots' bodies never nearer each other than `distance`
     PathRatio,     ///< path until within `distance` of `point` at most `ratio` times the shortest collision-free path
     Bug1Bound,     ///< path until within `distance` of `point` at most the direct distance + 1.5 × the perimeters of obstacles met
