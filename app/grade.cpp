@@ -177,15 +177,15 @@ int gradeIntoFolder(const GradeArgs& a, const course::GradeDef& def, std::vector
                                  .graded =
                                      [&](std::size_t k, const course::Grade& g) {
                                        if (!folders[k]) return;
-                                       if (!g.graderFailure.empty()) {  // an autograder error leaves the student's last folder as it was
-                                         std::error_code ec;
-                                         fs::remove_all(folders[k]->path(), ec);
-                                         return;
-                                       }
                                        const fs::path in = folders[k]->path();
-                                       GradeArgs each{.results = (in / "results.json").string(), .junit = (in / "junit.xml").string()};
-                                       if (g.score() < g.maxScore()) each.report = (in / "report.html").string();
-                                       Status s = writeOutputs(each, def, g, false);
+                                       // An autograder error is written too, with no score and no results: a row and
+                                       // folder are always of the student's file as it now is, never an older grade.
+                                       Status s;
+                                       if (g.graderFailure.empty()) {
+                                         GradeArgs each{.results = (in / "results.json").string(), .junit = (in / "junit.xml").string()};
+                                         if (g.score() < g.maxScore()) each.report = (in / "report.html").string();
+                                         s = writeOutputs(each, def, g, false);
+                                       }
                                        if (s)
                                          s = course::writeGradeJson(
                                              g, students[k], course::submissionFingerprints(submissions[k], def.rubric.starter), in / "grade.json");
@@ -219,7 +219,7 @@ int gradeIntoFolder(const GradeArgs& a, const course::GradeDef& def, std::vector
   std::printf("wrote %s and %s\n", (dir / "gradebook.csv").c_str(), (dir / "summary.html").c_str());
   if (failed > 0) {
     return fail(std::to_string(failed) +
-                " submissions were NOT GRADED: frob or this machine failed (above); their rows and folders were left as they were; grade them again");
+                " submissions were NOT GRADED: frob or this machine failed (above); their rows say so, with no score; grade them again");
   }
   return 0;
 }

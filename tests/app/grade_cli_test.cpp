@@ -342,6 +342,31 @@ TEST(GradeCli, AClassIntoAFolderGivesEachStudentTheirOwnEvidence) {
   for (const std::string& name : filesIn(dir / "out")) EXPECT_FALSE(name.ends_with(".partial") || name.ends_with(".old")) << name;
 }
 
+// A student graded again when frob or the machine fails (here a compile cache that cannot be made)
+// keeps no score of an older grade: their row and folder say "autograder error", with no score, and
+// frob says to grade them again (status 1). Graded again on a sound machine, they are graded.
+TEST(GradeCli, AGraderFailureLeavesAStudentNoOlderScore) {
+  const fs::path dir = assignment("grade_cli_out_failure");
+  fs::create_directories(dir / "class");
+  std::ofstream(dir / "class" / "ann.cpp") << driver("0.5");
+  std::ofstream(dir / "secret.txt") << "course secret\n";
+  const std::vector<std::string> ann{"grade", "forward", "class/ann.cpp", "--out", "out", "--secret", "secret.txt"};
+  ASSERT_EQ(runFrob(dir, ann).status, 0);
+  EXPECT_EQ(rowOf(readFile(dir / "out" / "gradebook.csv"), "ann"), "ann,3,3,graded,2,1,,class/ann.cpp");
+
+  std::ofstream(dir / "class" / "ann.cpp") << driver("0.1");  // her new file, which no one grades
+  const FrobResult failed = runFrob(dir, ann, "/dev/null/cache");
+  EXPECT_EQ(failed.status, 1) << failed.err;
+  EXPECT_NE(failed.out.find("NOT GRADED: the grader failed: cannot create the controller cache"), std::string::npos) << failed.out;
+  const std::string row = rowOf(readFile(dir / "out" / "gradebook.csv"), "ann");
+  EXPECT_EQ(row.rfind("ann,,,autograder error,,,the grader failed: cannot create the controller cache", 0), 0u) << row;
+  EXPECT_TRUE(nlohmann::json::parse(readFile(dir / "out" / "ann" / "grade.json"))["score"].is_null());
+  EXPECT_FALSE(fs::exists(dir / "out" / "ann" / "results.json")) << "the results of her older grade stayed";
+
+  ASSERT_EQ(runFrob(dir, ann).status, 0);
+  EXPECT_EQ(rowOf(readFile(dir / "out" / "gradebook.csv"), "ann").rfind("ann,1,3,graded,0,1,", 0), 0u);
+}
+
 // --changed after a fix of the rubric: each student's logged runs are judged again under it, and only
 // those whose row it changes are graded again (their folders rewritten), with those whose runs it
 // now makes otherwise (no logs: a failed compile; another length); the others are left as they were.

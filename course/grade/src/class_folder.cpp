@@ -120,8 +120,8 @@ namespace {
 
 // A student's gradebook row: student, score, max_score, result, a score per check, reasons, submission.
 std::vector<std::string> gradebookRow(const std::string& student, const Grade& g, const std::vector<std::string>& checks) {
-  const bool scored = g.graderFailure.empty();  // no score at all, never 0
-  std::vector<std::string> row{student, scored ? number(g.score()) : "", number(g.maxScore()), resultKind(g)};
+  const bool scored = g.graderFailure.empty();  // no score at all, never 0, nor a maximum (gradebook.cpp)
+  std::vector<std::string> row{student, scored ? number(g.score()) : "", scored ? number(g.maxScore()) : "", resultKind(g)};
   for (const std::string& name : checks) {
     const auto c = std::find_if(g.checks.begin(), g.checks.end(), [&](const CheckGrade& x) { return x.name == name; });
     row.push_back(c == g.checks.end() || !scored ? std::string() : number(c->score));

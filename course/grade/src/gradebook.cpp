@@ -71,9 +71,10 @@ Status writeGradebook(const std::vector<Grade>& grades, const fs::path& path) {
   }
   std::string csv = csvRecord(header);
   for (const Grade* g : sorted) {
-    // A submission frob failed to grade has no score, nor any check's (never 0).
+    // A submission frob failed to grade has no score, nor any check's (never 0), nor a maximum (its
+    // checks, made or not when frob failed, are not its grade's).
     const bool graded = g->graderFailure.empty();
-    std::vector<std::string> row{g->submission, graded ? number(g->score()) : "", number(g->maxScore()), resultOf(*g)};
+    std::vector<std::string> row{g->submission, graded ? number(g->score()) : "", graded ? number(g->maxScore()) : "", resultOf(*g)};
     for (std::size_t k = 4; k < header.size(); ++k) {
       const auto c = std::find_if(g->checks.begin(), g->checks.end(), [&](const CheckGrade& x) { return x.name == header[k]; });
       row.push_back(c == g->checks.end() || !graded ? std::string() : number(c->score));  // empty: not graded
