@@ -235,23 +235,40 @@ TEST(BlindAdversary, Parallel) {
                           }});
     }
   }
-  // The patrol, stopped at the first key after a set time, whichever key it is: the keyboard read but
-  // never for s (other keys come first, and one shortly before s).
+  // The patrol, stopped at the first key after a set time, whichever key it is, that is at least the
+  // `nth` key and comes within `gap` s of the one before: the keyboard read but never for s.
   class AnyKeyAfter final : public Program {
    public:
-    AnyKeyAfter(std::vector<Point2> patrol, double after) : patrol_(RouteDef{.points = std::move(patrol), .loop = true}), after_(after) {}
+    AnyKeyAfter(std::vector<Point2> patrol, double after, int nth, double gap)
+        : patrol_(RouteDef{.points = std::move(patrol), .loop = true}), after_(after), nth_(nth), gap_(gap) {}
     Wheels step(double t, const SensorFrame& f) override {
-      if (t >= after_ && !f.keys.empty()) report = "key";
+      if (!f.keys.empty()) {
+        if (++seen_ >= nth_ && t >= after_ && t - last_ <= gap_) report = "key";
+        last_ = t;
+      }
       return patrol_.step(t, f);
     }
 
    private:
     Route patrol_;
     double after_;
+    int nth_;
+    double gap_;
+    int seen_ = 0;
+    double last_ = -INFINITY;
   };
   std::vector<Candidate> anyKey;
   for (double after = 10; after <= 23; after += 1) {
-    anyKey.push_back({"any key after " + std::to_string(after) + " s", [=](std::size_t) { return std::make_unique<AnyKeyAfter>(patrol, after); }});
+    anyKey.push_back(
+        {"any key after " + std::to_string(after) + " s", [=](std::size_t) { return std::make_unique<AnyKeyAfter>(patrol, after, 1, INFINITY); }});
+  }
+  // Or at the first key after a set time that is at least the n-th and comes soon after the one
+  // before: s as the keys' timing once gave it away (the one other key 0.5 to 3 s before it).
+  for (int nth : {2, 3, 4}) {
+    for (double after : {14.0, 16.0}) {
+      anyKey.push_back({"key " + std::to_string(nth) + " or later, after " + std::to_string(after) + " s, within 3 s of the last",
+                        [=](std::size_t) { return std::make_unique<AnyKeyAfter>(patrol, after, nth, 3.0); }});
+    }
   }
   expectNoBlindKindEarnsHiddenPoints("parallel", {{"events reported at fixed times", reported}, {"any key after a set time", anyKey}});
 }

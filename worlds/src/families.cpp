@@ -213,9 +213,13 @@ WorldDef warehouseKeys(Random& r, std::uint64_t seed) {
   for (int k = 0, n = r.integer(1, 3); k < n; ++k) {
     w.keys.push_back({.time = r.uniform(1, stop - 1), .key = others[r.next() % others.size()]});
   }
-  // And one shortly before s: no controller that stops at any key after a set time passes (s's
-  // time is drawn, and so is how far this one leads it).
-  w.keys.push_back({.time = stop - r.uniform(0.5, 3.0), .key = others[r.next() % others.size()]});
+  // And a burst of 1 to 4 just before s, each 0.5 to 3 s after the one before, s 0.5 to 3 s after
+  // the last: neither a set time nor the keys' count or spacing tells s from the others.
+  double at = stop;
+  for (int k = 0, n = r.integer(1, 4); k < n; ++k) {
+    at -= r.uniform(0.5, 3.0);
+    w.keys.push_back({.time = at, .key = others[r.next() % others.size()]});
+  }
   w.keys.push_back({.time = stop, .key = 's'});
   std::sort(w.keys.begin(), w.keys.end(), [](const KeyEventDef& a, const KeyEventDef& b) { return a.time < b.time; });
   return w;
