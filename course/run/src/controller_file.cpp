@@ -380,13 +380,11 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
   }
   const int status = run.value().status;
   // A compiler that ran into its limits of time, memory or file size failed on the submission's
-  // account, however it ended: killed by the limit's signal; or, where the signal reached the
-  // compiler's own process, a "crash" in which clang names the limit (words a source could print
-  // too, but only to make a crash of its own its failure); or a crash with most of its memory in use
-  // (a stack grown by nesting until the memory ran out: an `else if` chain a million long).
-  // Otherwise it crashed (another signal, or it left a reproducer), or could not be run: no fault of
-  // the submission's, and no grade. Its output is kept whole at the end, where the crash is
-  // described (runSandboxed).
+  // account, however it ended: killed by the limit's signal; a "crash" in which clang names the limit
+  // (words a source could print too, but only to fail itself); or one with half its memory in use (a
+  // stack grown by nesting until the memory ran out). Otherwise it crashed (another signal, or it left
+  // a reproducer), or could not be run: no fault of the submission's, and no grade. Its output's end,
+  // where a crash is described, is kept (runSandboxed).
   const int signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
   const bool reproduced = !fs::is_empty(crashReport, ec) && !ec;
   const std::string& said = run.value().output;
