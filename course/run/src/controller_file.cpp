@@ -389,7 +389,7 @@ Result<CompiledController> compile(const fs::path& source, const std::string& te
   const bool reproduced = !fs::is_empty(crashReport, ec) && !ec;
   const std::string& said = run.value().output;
   const bool limited = signal == SIGXCPU || signal == SIGXFSZ || signal == SIGKILL ||
-                       ((signal != 0 || reproduced) && (run.value().peakMemoryBytes >= setup.memoryBytes / 2 ||
+                       ((signal != 0 || reproduced) && ((setup.memoryBytes > 0 && run.value().peakMemoryBytes >= setup.memoryBytes / 2) ||
                                                         std::any_of(std::begin(kLimitWords), std::end(kLimitWords),
                                                                     [&](const char* w) { return said.find(w) != std::string::npos; })));
   const bool crashed = !limited && (signal != 0 || reproduced);

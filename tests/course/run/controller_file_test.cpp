@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -403,6 +404,21 @@ TEST(ControllerFile, ANestingPastTheCompilersMemoryIsTheSubmissionsFailure) {
   EXPECT_NE(messages.find("Segmentation fault"), std::string::npos) << messages.substr(messages.size() - std::min<std::size_t>(messages.size(), 600));
   EXPECT_EQ(c.error(),
             "could not compile '" + (dir / "deeper.cpp").string() + "' within the compiler's limits of time, memory and file size (128 MB a file)");
+}
+
+// Without a memory limit (0) no crash is one of running out of it: clang crashing on purpose (its
+// debug pragma, allowed here) stays the grader's failure, however little memory it used.
+TEST(ControllerFile, ACrashWithNoMemoryLimitIsTheGradersFailure) {
+  const fs::path dir = freshFolder("crash_unlimited");
+  writeFile(dir / "crash.cpp", "#pragma clang __debug crash\n");
+  CompilerSetup setup = setupIn(dir);
+  const auto disabled = std::find(setup.flags.begin(), setup.flags.end(), "-disable-pragma-debug-crash");
+  ASSERT_NE(disabled, setup.flags.end());
+  setup.flags.erase(disabled - 1, disabled + 1);  // with its -Xclang
+  setup.memoryBytes = 0;
+  const Result<CompiledController> c = compileControllerFile(dir / "crash.cpp", setup);
+  ASSERT_FALSE(c.ok());
+  EXPECT_TRUE(isGraderFailure(c.status())) << c.error();
 }
 
 // The compiler's large stack is not every thread's: a linker that starts a thread per core (lld, the
